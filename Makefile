@@ -1,0 +1,33 @@
+# Two commands set up a fresh machine: `make demo` and `make test`.
+# Both create a local virtual environment (.venv) and install everything into it.
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed
+
+.PHONY: demo test lint bench clean
+
+$(STAMP): pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e ".[test]"
+	touch $(STAMP)
+
+demo: $(STAMP)
+	$(BIN)/shaftline run examples/ntua_stern_tube.toml --out results/ntua_stern_tube
+	@echo "Report: results/ntua_stern_tube/report.html"
+
+test: $(STAMP)
+	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/python -m pytest -q
+
+lint: $(STAMP)
+	$(BIN)/ruff check src tests benchmarks
+
+# Benchmarks run in their own environment, which also holds ROSS for the comparison.
+bench:
+	bash benchmarks/setup_env.sh
+	.venv-bench/bin/python benchmarks/bench_bearing.py
+
+clean:
+	rm -rf $(VENV) .venv-bench results .pytest_cache

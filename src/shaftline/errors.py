@@ -1,0 +1,80 @@
+"""Errors raised for bad user input.
+
+Every check on user input raises :class:`InputError` so that the command line
+can print one line and exit with status 2, and a notebook user gets an
+exception that names the offending field.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+
+class InputError(ValueError):
+    """A value given by the user is outside what the model accepts.
+
+    Parameters
+    ----------
+    field : str
+        Dotted name of the input field, e.g. ``"bearing.radial_clearance"``.
+    value : Any
+        The value that was given.
+    unit : str
+        Unit the value is expressed in (``""`` for dimensionless or text).
+    allowed : str
+        The allowed range or set of values, in words.
+    """
+
+    def __init__(self, field: str, value: Any, unit: str = "", allowed: str = "") -> None:
+        self.field = field
+        self.value = value
+        self.unit = unit
+        self.allowed = allowed
+        shown = f"{value!r}" if isinstance(value, str) else f"{value}"
+        if unit:
+            shown = f"{shown} {unit}"
+        message = f"{field} = {shown}"
+        if allowed:
+            message += f": allowed {allowed}"
+        super().__init__(message)
+
+
+def require_finite(field: str, value: float, unit: str = "") -> float:
+    """Return ``value`` as float, or raise :class:`InputError` if NaN or infinite."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise InputError(field, value, unit, "a number") from None
+    if not math.isfinite(number):
+        raise InputError(field, value, unit, "a finite number")
+    return number
+
+
+def require_positive(field: str, value: float, unit: str = "") -> float:
+    """Return ``value`` if it is finite and > 0, else raise :class:`InputError`."""
+    number = require_finite(field, value, unit)
+    if number <= 0.0:
+        raise InputError(field, number, unit, "> 0")
+    return number
+
+
+def require_range(
+    field: str,
+    value: float,
+    low: float,
+    high: float,
+    unit: str = "",
+    *,
+    include_low: bool = True,
+    include_high: bool = True,
+) -> float:
+    """Return ``value`` if it lies in the given interval, else raise :class:`InputError`."""
+    number = require_finite(field, value, unit)
+    above = number >= low if include_low else number > low
+    below = number <= high if include_high else number < high
+    if not (above and below):
+        left = "[" if include_low else "("
+        right = "]" if include_high else ")"
+        raise InputError(field, number, unit, f"in {left}{low}, {high}{right}")
+    return number

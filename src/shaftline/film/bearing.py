@@ -1,0 +1,718 @@
+"""Journal bearing: the film solution at a journal position and the equilibrium under a load.
+
+Forces are those of the film on the journal, in the shaft axes (y up, z
+starboard), N. Pressures are gauge pressures above the ambient pressure, Pa.
+An applied load ``(load_y, load_z)`` is carried when the film force balances it:
+``force + load = 0``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from shaftline.errors import InputError, require_finite, require_positive
+from shaftline.film.analytic import eccentricity_guess
+from shaftline.film.geometry import BearingGeometry, Grid, JournalPosition, film_thickness, squeeze_velocity
+from shaftline.film.reynolds import (
+    CAVITATION_MODELS,
+    ReynoldsSolution,
+    ReynoldsSolver,
+    Stencil,
+    apply_operator,
+    build_stencil,
+    stencil_derivative,
+)
+
+FILM_STARTS = ("periodic", "max_film")
+
+
+@dataclass(frozen=True)
+class SupplyGroove:
+    """An axial supply groove at a fixed bearing angle.
+
+    Attributes
+    ----------
+    angle : float
+        Bearing angle of the groove centre, rad (from the top, in the direction of rotation).
+    pressure : float
+        Supply pressure above ambient, Pa.
+    length_fraction : float
+        Axial length of the groove as a share of the bearing length, centred, (0, 1].
+    """
+
+    angle: float
+    pressure: float = 0.0
+    length_fraction: float = 1.0
+
+
+@dataclass(frozen=True)
+class OperatingPoint:
+    """Running condition of a bearing.
+
+    Attributes
+    ----------
+    speed : float
+        Shaft angular speed, rad/s (> 0; the sense of rotation is a geometry input).
+    viscosity : float
+        Effective dynamic viscosity of the lubricant, Pa*s.
+    density : float
+        Lubricant density, kg/m^3 (reported flows by mass; no effect on pressures).
+    aft_pressure, fore_pressure : float
+        Pressures at the aft and forward bearing edges above ambient, Pa.
+    cavitation_pressure : float
+        Pressure at which the film ruptures, above ambient, Pa (<= edge pressures).
+    grooves : tuple of SupplyGroove
+        Axial supply grooves.
+    """
+
+    speed: float
+    viscosity: float
+    density: float = 880.0
+    aft_pressure: float = 0.0
+    fore_pressure: float = 0.0
+    cavitation_pressure: float = 0.0
+    grooves: tuple[SupplyGroove, ...] = ()
+
+    def __post_init__(self) -> None:
+        require_positive("operation.speed", self.speed, "rad/s")
+        require_positive("lubricant.viscosity", self.viscosity, "Pa*s")
+        require_positive("lubricant.density", self.density, "kg/m^3")
+        for name in ("aft_pressure", "fore_pressure", "cavitation_pressure"):
+            require_finite(f"operation.{name}", getattr(self, name), "Pa")
+        lowest = min(self.aft_pressure, self.fore_pressure, *(g.pressure for g in self.grooves))
+        if self.cavitation_pressure > lowest:
+            raise InputError(
+                "operation.cavitation_pressure",
+                self.cavitation_pressure,
+                "Pa",
+                f"<= the lowest supply pressure {lowest}",
+            )
+        for k, groove in enumerate(self.grooves):
+            require_finite(f"operation.grooves[{k}].angle", groove.angle, "rad")
+            require_finite(f"operation.grooves[{k}].pressure", groove.pressure, "Pa")
+            if not 0.0 < groove.length_fraction <= 1.0:
+                raise InputError(f"operation.grooves[{k}].length_fraction", groove.length_fraction, "", "in (0, 1]")
+
+
+@dataclass(frozen=True)
+class SolverOptions:
+    """Numerical options of the film solution.
+
+    Attributes
+    ----------
+    axial_nodes, circumferential_nodes : int
+        Grid nodes along the bearing (edges included) and around the bore.
+    cavitation : str
+        ``"reynolds"`` (Swift-Stieber, default), ``"jfo"`` (mass-conserving) or
+        ``"half_sommerfeld"`` (comparison only).
+    film_start : str
+        ``"periodic"`` (default: the film is continuous all round) or ``"max_film"``
+        (the classical design-chart assumption of Raimondi & Boyd: ambient pressure
+        along the line of maximum film thickness, where the oil enters).
+    cavitated_shear : str
+        Shear in the cavitated zone: ``"film_fraction"`` (default: only the liquid
+        streamers shear, share ``h_rupture / h`` or the JFO film fraction) or
+        ``"full_film"`` (the whole clearance shears, the convention behind the
+        Raimondi & Boyd friction variable).
+    min_film_floor : float
+        Smallest film, as a share of the radial clearance, that the equilibrium search
+        may approach; below it the load is reported as not carried (contact).
+    tolerance : float
+        Relative force residual at which the equilibrium is accepted.
+    max_iterations : int
+        Newton iterations allowed for the equilibrium.
+    """
+
+    axial_nodes: int = 41
+    circumferential_nodes: int = 120
+    cavitation: str = "reynolds"
+    film_start: str = "periodic"
+    cavitated_shear: str = "film_fraction"
+    min_film_floor: float = 1e-3
+    tolerance: float = 1e-8
+    max_iterations: int = 60
+
+    def __post_init__(self) -> None:
+        if self.cavitation not in CAVITATION_MODELS:
+            raise InputError("solver.cavitation", self.cavitation, "", "one of " + ", ".join(CAVITATION_MODELS))
+        if self.film_start not in FILM_STARTS:
+            raise InputError("solver.film_start", self.film_start, "", "one of " + ", ".join(FILM_STARTS))
+        if self.cavitated_shear not in ("film_fraction", "full_film"):
+            raise InputError("solver.cavitated_shear", self.cavitated_shear, "", "film_fraction or full_film")
+        if not 0.0 < self.min_film_floor < 0.5:
+            raise InputError("solver.min_film_floor", self.min_film_floor, "", "in (0, 0.5) of the clearance")
+        if not 0.0 < self.tolerance < 1e-2:
+            raise InputError("solver.tolerance", self.tolerance, "", "in (0, 0.01)")
+
+
+@dataclass(frozen=True)
+class BearingState:
+    """Film solution at one journal position. Fields are SI unless noted.
+
+    Attributes
+    ----------
+    position : JournalPosition
+        Journal centre offsets from the nominal bore axis (m) and tilts (rad) at the
+        bearing mid-plane.
+    eccentricity_ratio : float
+        Eccentricity of the journal from the bore centre at the mid-plane (the
+        machined bore of a slope-bored bearing) over the radial clearance.
+    position_angle : float
+        Bearing angle of that line of centres (towards the thinnest film), rad.
+    theta : ndarray (nt,)
+        Node angles, rad, from the top in the direction of rotation.
+    z : ndarray (nz,)
+        Node stations from the aft bearing edge, m.
+    film : ndarray (nz, nt)
+        Film thickness h, m.
+    pressure : ndarray (nz, nt)
+        Gauge pressure, Pa.
+    film_fraction : ndarray (nz, nt)
+        Liquid share of the clearance (1 in the full film).
+    force_y, force_z : float
+        Film force on the journal, N.
+    load_capacity : float
+        Magnitude of the film force, N.
+    attitude_angle : float
+        Angle from the load line (opposite to the film force) to the line of
+        centres, positive in the direction of rotation, rad.
+    min_film_thickness : float
+        Smallest film h_min, m, and where: ``min_film_theta`` (rad), ``min_film_z`` (m).
+    max_pressure : float
+        Largest pressure p_max, Pa, and where: ``max_pressure_theta`` (rad), ``max_pressure_z`` (m).
+    mean_pressure : float
+        Load capacity over projected area L*D, Pa.
+    moment_y, moment_z : float
+        First moments of the vertical and horizontal film force about the mid-plane,
+        ``sum((z - L/2) dF)``, N*m.
+    load_centre_offset : float
+        Axial position of the resultant film force from the mid-plane, m (positive
+        forward); seed 004 calls it the distance of the support point from L/2.
+    friction_force : float
+        Shear force on the journal surface opposing rotation, N.
+    friction_torque : float
+        Friction torque on the journal, N*m.
+    friction_coefficient : float
+        Friction force over load capacity.
+    power_loss : float
+        Friction torque times shaft speed, W.
+    inlet_flow : float
+        Flow entering the film: the supply through the grooves, or (no groove)
+        the circumferential flow across the line of maximum film, m^3/s.
+    side_leakage : float
+        Net flow leaving through both bearing edges, m^3/s.
+    circumferential_flow : ndarray (nt,)
+        Flow across the axial line midway between node i and i+1, m^3/s.
+    edge_leakage : ndarray (2, nt)
+        Outflow through the aft (row 0) and forward (row 1) edge at each angle, m^3/s.
+    sommerfeld_number : float
+        ``(R/c)^2 eta N / P`` with N in rev/s and P the mean pressure.
+    contact : bool
+        True when the film reaches ``min_film_floor`` or less (the load is not carried
+        by a film this grid can resolve).
+    cavitation : str
+        Cavitation model used.
+    iterations : int
+        Active-set iterations (factorisations) of this solution.
+    """
+
+    position: JournalPosition
+    eccentricity_ratio: float
+    position_angle: float
+    theta: np.ndarray = field(repr=False)
+    z: np.ndarray = field(repr=False)
+    film: np.ndarray = field(repr=False)
+    pressure: np.ndarray = field(repr=False)
+    film_fraction: np.ndarray = field(repr=False)
+    force_y: float
+    force_z: float
+    load_capacity: float
+    attitude_angle: float
+    min_film_thickness: float
+    min_film_theta: float
+    min_film_z: float
+    max_pressure: float
+    max_pressure_theta: float
+    max_pressure_z: float
+    mean_pressure: float
+    moment_y: float
+    moment_z: float
+    load_centre_offset: float
+    friction_force: float
+    friction_torque: float
+    friction_coefficient: float
+    power_loss: float
+    inlet_flow: float
+    side_leakage: float
+    circumferential_flow: np.ndarray = field(repr=False)
+    edge_leakage: np.ndarray = field(repr=False)
+    sommerfeld_number: float
+    contact: bool
+    cavitation: str
+    iterations: int
+
+
+@dataclass(frozen=True)
+class Equilibrium:
+    """Journal position that carries a given load.
+
+    Attributes
+    ----------
+    state : BearingState
+        Film solution at the final position.
+    load_y, load_z : float
+        Applied load on the journal, N.
+    converged : bool
+        True when the force residual fell below the tolerance.
+    contact : bool
+        True when the load cannot be carried above the film floor (``state`` is then
+        the position reached at the floor).
+    iterations : int
+        Newton iterations used.
+    residual : float
+        Magnitude of ``force + load`` at the end, N.
+    """
+
+    state: BearingState
+    load_y: float
+    load_z: float
+    converged: bool
+    contact: bool
+    iterations: int
+    residual: float
+
+
+@dataclass
+class _Evaluation:
+    position: JournalPosition
+    grid: Grid
+    film: np.ndarray
+    stencil: Stencil
+    solution: ReynoldsSolution
+    relative_pressure: np.ndarray  # dimensionless, above cavitation pressure, fixed nodes included
+    force: np.ndarray  # (2,) N
+
+
+class JournalBearing:
+    """A finite journal bearing: geometry, operating point and solver options.
+
+    Examples
+    --------
+    >>> from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint
+    >>> bearing = JournalBearing(
+    ...     BearingGeometry(length=0.1, diameter=0.1, radial_clearance=1e-4),
+    ...     OperatingPoint(speed=100.0, viscosity=0.02),
+    ... )
+    >>> eq = bearing.equilibrium(load_y=-5e3, load_z=0.0)
+    >>> round(eq.state.eccentricity_ratio, 2)
+    0.52
+    """
+
+    def __init__(
+        self, geometry: BearingGeometry, operating: OperatingPoint, options: SolverOptions | None = None
+    ) -> None:
+        self.geometry = geometry
+        self.operating = operating
+        self.options = options or SolverOptions()
+        grid = Grid(geometry.length, self.options.axial_nodes, self.options.circumferential_nodes)
+        if geometry.film_modification is not None and np.shape(geometry.film_modification) != grid.shape:
+            raise InputError(
+                "bearing.film_modification", str(np.shape(geometry.film_modification)), "", f"shape {grid.shape}"
+            )
+        self._base_grid = grid
+        radius = geometry.radius
+        c = geometry.radial_clearance
+        #: Pressure scale p_ref = 6 eta omega (R/c)^2, Pa.
+        self.pressure_scale = 6.0 * operating.viscosity * operating.speed * (radius / c) ** 2
+        #: Flow scale omega R^2 c / 2, m^3/s.
+        self.flow_scale = 0.5 * operating.speed * radius**2 * c
+        self._d_theta = grid.d_theta
+        self._d_z = grid.dz / radius
+        self._solver_cache: dict[bool, ReynoldsSolver] = {}
+        self._last_cavitated: np.ndarray | None = None
+
+    # -- grid and fixed nodes ----------------------------------------------------------
+    def _local_polar(self, position: JournalPosition) -> tuple[float, float]:
+        """Eccentricity (m) and line-of-centres angle (rad) relative to the bore centre at mid-plane."""
+        bore_y, bore_z = self.geometry.bore_centre_line(np.array([0.5 * self.geometry.length]))
+        local = JournalPosition(ey=position.ey - float(bore_y[0]), ez=position.ez - float(bore_z[0]))
+        return local.polar(self.geometry.rotation)
+
+    def _grid_for(self, position: JournalPosition) -> Grid:
+        if self.operating.grooves:
+            start = self.operating.grooves[0].angle
+        elif self.options.film_start == "max_film":
+            e, angle = self._local_polar(position)
+            start = angle + math.pi if e > 0 else 0.0
+        else:
+            return self._base_grid
+        return replace(self._base_grid, theta_start=float(start))
+
+    def _solver(self) -> ReynoldsSolver:
+        key = True
+        if key not in self._solver_cache:
+            grid = self._base_grid
+            nz, nt = grid.shape
+            fixed = np.zeros(grid.shape, dtype=bool)
+            value = np.zeros(grid.shape)
+            op = self.operating
+            fixed[0], value[0] = True, op.aft_pressure
+            fixed[-1], value[-1] = True, op.fore_pressure
+            if op.grooves:
+                first = op.grooves[0].angle
+                for groove in op.grooves:
+                    column = int(round(((groove.angle - first) % (2 * math.pi)) / grid.d_theta)) % nt
+                    half = 0.5 * groove.length_fraction * grid.length
+                    rows = np.abs(grid.z - 0.5 * grid.length) <= half + 1e-12 * grid.length
+                    fixed[rows, column] = True
+                    value[rows & ~np.isin(np.arange(nz), (0, nz - 1)), column] = groove.pressure
+            elif self.options.film_start == "max_film":
+                fixed[:, 0] = True
+                value[1:-1, 0] = 0.0
+            relative = (value - op.cavitation_pressure) / self.pressure_scale
+            self._solver_cache[key] = ReynoldsSolver(grid.shape, self._d_theta, self._d_z, fixed, relative)
+        return self._solver_cache[key]
+
+    # -- core evaluation -------------------------------------------------------------
+    def film(self, position: JournalPosition) -> np.ndarray:
+        """Film thickness on the grid for ``position``, m (no clipping)."""
+        return film_thickness(self.geometry, self._grid_for(position), position)
+
+    def _evaluate(self, position: JournalPosition, warm: bool = True) -> _Evaluation:
+        grid = self._grid_for(position)
+        film = film_thickness(self.geometry, grid, position)
+        if film.min() <= 0.0:
+            raise _NegativeFilm(float(film.min()))
+        c = self.geometry.radial_clearance
+        film_nd = film / c
+        rate = None
+        if position.vy or position.vz:
+            rate = (2.0 / self.operating.speed) * squeeze_velocity(self.geometry, grid, position) / c
+        stencil = build_stencil(film_nd, self._d_theta, self._d_z, rate)
+        solver = self._solver()
+        start = self._last_cavitated if warm else None
+        solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
+        self._last_cavitated = solution.cavitated
+        relative = np.where(solver.fixed & ~solution.cavitated, solver.fixed_pressure, solution.pressure)
+        relative = np.where(solver.fixed, solver.fixed_pressure, relative)
+        force = self._integrate_force(grid, relative)
+        return _Evaluation(position, grid, film, stencil, solution, relative, force)
+
+    def _gauge(self, relative: np.ndarray) -> np.ndarray:
+        return relative * self.pressure_scale + self.operating.cavitation_pressure
+
+    def _weights(self) -> np.ndarray:
+        """Integration weights per node over the bore area, m^2 (trapezoid in z, periodic in theta)."""
+        grid = self._base_grid
+        wz = np.full(grid.axial_nodes, grid.dz)
+        wz[[0, -1]] *= 0.5
+        return wz[:, None] * (self.geometry.radius * grid.d_theta)
+
+    def _integrate_force(self, grid: Grid, relative: np.ndarray) -> np.ndarray:
+        pressure = self._gauge(relative)
+        weighted = pressure * self._weights()
+        theta = grid.theta
+        fy = -np.sum(weighted * np.cos(theta)[None, :])
+        fz = -self.geometry.rotation * np.sum(weighted * np.sin(theta)[None, :])
+        return np.array([fy, fz])
+
+    def _force_derivatives(self, evaluation: _Evaluation, directions: list[tuple[np.ndarray, np.ndarray | None]]):
+        """Film force changes for film changes ``dH`` and film-rate changes, frozen active set.
+
+        Each direction is ``(dH, dRate)`` with ``dH`` the change of H = h/c and
+        ``dRate`` the change of ``(2/omega) dH/dt`` per unit of the parameter.
+        """
+        solver = self._solver()
+        changes = []
+        for d_film, d_rate in directions:
+            dc_theta, dc_z, d_couette = stencil_derivative(
+                evaluation.film / self.geometry.radial_clearance, d_film, self._d_theta, self._d_z
+            )
+            d_residual = apply_operator(dc_theta, dc_z, evaluation.relative_pressure) - d_couette
+            if d_rate is not None:
+                d_residual = d_residual + self._d_theta * self._d_z * d_rate
+            changes.append(d_residual)
+        d_pressure = solver.linear_response(evaluation.stencil, evaluation.solution, np.array(changes))
+        return [
+            self._integrate_force(evaluation.grid, dp) - self._integrate_force(evaluation.grid, 0.0 * dp)
+            for dp in d_pressure
+        ]
+
+    def _position_jacobian(self, evaluation: _Evaluation) -> np.ndarray:
+        """d(force)/d(ey, ez), N/m, with the active set frozen (exact for the Reynolds condition)."""
+        theta = evaluation.grid.theta
+        c = self.geometry.radial_clearance
+        shape = evaluation.film.shape
+        d_ey = np.broadcast_to(-np.cos(theta) / c, shape)
+        d_ez = np.broadcast_to(-self.geometry.rotation * np.sin(theta) / c, shape)
+        dfy, dfz = self._force_derivatives(evaluation, [(d_ey, None), (d_ez, None)])
+        return np.column_stack([dfy, dfz])
+
+    # -- public API ----------------------------------------------------------------------
+    def solve_at(self, position: JournalPosition) -> BearingState:
+        """Film solution with the journal held at ``position``.
+
+        Raises
+        ------
+        InputError
+            When the journal at that position would cut into the bore (h <= 0).
+        """
+        try:
+            evaluation = self._evaluate(position)
+        except _NegativeFilm as exc:
+            raise InputError(
+                "position",
+                f"e=({position.ey:.4g}, {position.ez:.4g}) m",
+                "",
+                f"a journal position inside the clearance (film would be {exc.value:.3g} m)",
+            ) from None
+        return self._state(evaluation)
+
+    def min_film(self, position: JournalPosition) -> float:
+        """Smallest film thickness at ``position``, m (negative when the journal cuts the bore)."""
+        return float(self.film(position).min())
+
+    def equilibrium(
+        self,
+        load_y: float,
+        load_z: float = 0.0,
+        tilt_y: float = 0.0,
+        tilt_z: float = 0.0,
+        initial: JournalPosition | None = None,
+    ) -> Equilibrium:
+        """Find the mid-plane journal offsets at which the film carries the applied load.
+
+        Newton's method on ``force(ey, ez) + load = 0`` with the Jacobian from the
+        reused factorisation (frozen active set), a fraction-to-boundary rule that keeps
+        the film above the floor, and a backtracking line search on the residual.
+        The tilts are held fixed (misalignment is an input).
+
+        Parameters
+        ----------
+        load_y, load_z : float
+            Load applied to the journal, N (e.g. ``load_y = -W`` for a weight).
+        tilt_y, tilt_z : float
+            Journal tilt relative to the bore in the vertical and horizontal planes, rad.
+        initial : JournalPosition, optional
+            Starting position (warm start from a previous equilibrium).
+        """
+        load_y = require_finite("operation.load_y", load_y, "N")
+        load_z = require_finite("operation.load_z", load_z, "N")
+        require_finite("operation.tilt_y", tilt_y, "rad")
+        require_finite("operation.tilt_z", tilt_z, "rad")
+        load = np.array([load_y, load_z])
+        magnitude = float(np.hypot(*load))
+        if magnitude == 0.0:
+            raise InputError("operation.load", 0.0, "N", "> 0 (a loaded bearing)")
+        c = self.geometry.radial_clearance
+        floor = self.options.min_film_floor * c
+        position = initial or self._initial_position(load, tilt_y, tilt_z)
+        position = replace(position, tilt_y=tilt_y, tilt_z=tilt_z, vy=0.0, vz=0.0)
+        if self.min_film(position) <= floor:
+            position = self._pull_inside(position, floor)
+        tolerance = self.options.tolerance * magnitude
+        self._last_cavitated = None
+        evaluation = self._evaluate(position)
+        residual = evaluation.force + load
+        contact = False
+        iterations = 0
+        while iterations < self.options.max_iterations:
+            norm = float(np.hypot(*residual))
+            if norm <= tolerance:
+                break
+            iterations += 1
+            jacobian = self._position_jacobian(evaluation)
+            try:
+                step = np.linalg.solve(jacobian, -residual)
+            except np.linalg.LinAlgError:
+                step = -residual / max(float(np.abs(jacobian).max()), 1e-300)
+            step = self._limit_step(position, step, c)
+            hmin_now = self.min_film(position)
+            alpha = 1.0
+            # Fraction to the boundary: never close more than 80 % of the film left above the floor.
+            while alpha > 1e-8:
+                trial_hmin = self.min_film(self._moved(position, alpha * step))
+                if trial_hmin - floor >= 0.2 * (hmin_now - floor):
+                    break
+                alpha *= 0.5
+            accepted = None
+            while alpha > 1e-8:
+                trial = self._moved(position, alpha * step)
+                try:
+                    trial_eval = self._evaluate(trial)
+                except _NegativeFilm:
+                    alpha *= 0.5
+                    continue
+                trial_residual = trial_eval.force + load
+                if np.hypot(*trial_residual) < (1.0 - 1e-4 * alpha) * norm:
+                    accepted = trial_eval
+                    break
+                alpha *= 0.5
+            if accepted is None:
+                contact = hmin_now <= 1.5 * floor
+                break
+            evaluation = accepted
+            position = evaluation.position
+            residual = evaluation.force + load
+        residual_norm = float(np.hypot(*residual))
+        converged = residual_norm <= tolerance
+        state = self._state(evaluation, load=load)
+        if not converged and state.min_film_thickness <= 1.5 * floor:
+            contact = True
+        if contact:
+            state = replace(state, contact=True)
+        return Equilibrium(state, load_y, load_z, converged, contact, iterations, residual_norm)
+
+    # -- helpers -------------------------------------------------------------------------
+    def _moved(self, position: JournalPosition, step: np.ndarray) -> JournalPosition:
+        return replace(position, ey=position.ey + float(step[0]), ez=position.ez + float(step[1]))
+
+    def _limit_step(self, position: JournalPosition, step: np.ndarray, c: float) -> np.ndarray:
+        length = float(np.hypot(*step))
+        limit = 0.5 * c
+        return step if length <= limit else step * (limit / length)
+
+    def _pull_inside(self, position: JournalPosition, floor: float) -> JournalPosition:
+        for _ in range(200):
+            if self.min_film(position) > 2.0 * floor + 0.05 * self.geometry.radial_clearance:
+                return position
+            position = replace(position, ey=0.8 * position.ey, ez=0.8 * position.ez)
+        raise InputError(
+            "operation.tilt",
+            f"({position.tilt_y:.4g}, {position.tilt_z:.4g})",
+            "rad",
+            "a misalignment that fits in the clearance with the journal centred",
+        )
+
+    def _initial_position(self, load: np.ndarray, tilt_y: float, tilt_z: float) -> JournalPosition:
+        g = self.geometry
+        op = self.operating
+        magnitude = float(np.hypot(*load))
+        sommerfeld = (
+            (g.radius / g.radial_clearance) ** 2
+            * op.viscosity
+            * (op.speed / (2 * np.pi))
+            / (magnitude / (g.length * g.diameter))
+        )
+        epsilon, attitude = eccentricity_guess(sommerfeld, g.length / g.diameter)
+        epsilon = min(epsilon, 0.95)
+        load_angle = float(np.arctan2(g.rotation * load[1], load[0]))
+        local = JournalPosition.from_polar(epsilon * g.radial_clearance, load_angle + attitude, g.rotation)
+        bore_y, bore_z = g.bore_centre_line(np.array([0.5 * g.length]))
+        return JournalPosition(
+            ey=local.ey + float(bore_y[0]), ez=local.ez + float(bore_z[0]), tilt_y=tilt_y, tilt_z=tilt_z
+        )
+
+    def _state(self, evaluation: _Evaluation, load: np.ndarray | None = None) -> BearingState:
+        g = self.geometry
+        op = self.operating
+        grid = evaluation.grid
+        theta, z = grid.theta, grid.z
+        film = evaluation.film
+        pressure = self._gauge(evaluation.relative_pressure)
+        fraction = evaluation.solution.film_fraction
+        weights = self._weights()
+        fy, fz = (float(v) for v in evaluation.force)
+        capacity = float(np.hypot(fy, fz))
+        e, angle = self._local_polar(evaluation.position)
+        # Load line = opposite to the film force (what the film carries).
+        if load is None:
+            load_angle = float(np.arctan2(-g.rotation * fz, -fy))
+        else:
+            load_angle = float(np.arctan2(g.rotation * load[1], load[0]))
+        attitude = float((angle - load_angle + np.pi) % (2 * np.pi) - np.pi) if e > 0 else 0.0
+        j_min, i_min = np.unravel_index(np.argmin(film), film.shape)
+        j_max, i_max = np.unravel_index(np.argmax(pressure), pressure.shape)
+        arm = z - 0.5 * g.length
+        dfy = -pressure * weights * np.cos(theta)[None, :]
+        dfz = -g.rotation * pressure * weights * np.sin(theta)[None, :]
+        moment_y = float(np.sum(dfy * arm[:, None]))
+        moment_z = float(np.sum(dfz * arm[:, None]))
+        offset = (moment_y * fy + moment_z * fz) / capacity**2 if capacity > 0 else 0.0
+        # Friction on the journal: Couette shear on the liquid share plus the Poiseuille part.
+        speed = op.speed * g.radius
+        dp_dx = (np.roll(pressure, -1, axis=1) - np.roll(pressure, 1, axis=1)) / (2.0 * grid.d_theta * g.radius)
+        shearing = fraction if self.options.cavitated_shear == "film_fraction" else np.ones_like(fraction)
+        shear = op.viscosity * speed * shearing / film + 0.5 * film * dp_dx
+        friction = float(np.sum(shear * weights))
+        torque = friction * g.radius
+        # Flows from the discrete face fluxes (consistent with the solver's mass balance).
+        stencil = evaluation.stencil
+        rel = evaluation.relative_pressure
+        void = 1.0 - fraction if self.options.cavitation == "jfo" else np.zeros_like(fraction)
+        theta_flux = stencil.couette_face * (1.0 - void) - stencil.c_theta * (np.roll(rel, -1, axis=1) - rel)
+        circumferential = self.flow_scale * theta_flux[1:-1].sum(axis=0)
+        aft = self.flow_scale * stencil.c_z[0] * (rel[1] - rel[0])
+        fore = self.flow_scale * stencil.c_z[-1] * (rel[-2] - rel[-1])
+        edge = np.vstack([aft, fore])
+        side_leakage = float(edge.sum())
+        inlet = self._inlet_flow(evaluation, theta_flux)
+        mean_pressure = capacity / (g.length * g.diameter)
+        sommerfeld = (
+            (g.radius / g.radial_clearance) ** 2 * op.viscosity * (op.speed / (2 * np.pi)) / mean_pressure
+            if mean_pressure > 0
+            else math.inf
+        )
+        hmin = float(film[j_min, i_min])
+        return BearingState(
+            position=evaluation.position,
+            eccentricity_ratio=e / g.radial_clearance,
+            position_angle=angle,
+            theta=theta,
+            z=z,
+            film=film,
+            pressure=pressure,
+            film_fraction=fraction,
+            force_y=fy,
+            force_z=fz,
+            load_capacity=capacity,
+            attitude_angle=attitude,
+            min_film_thickness=hmin,
+            min_film_theta=float(theta[i_min] % (2 * np.pi)),
+            min_film_z=float(z[j_min]),
+            max_pressure=float(pressure[j_max, i_max]),
+            max_pressure_theta=float(theta[i_max] % (2 * np.pi)),
+            max_pressure_z=float(z[j_max]),
+            mean_pressure=mean_pressure,
+            moment_y=moment_y,
+            moment_z=moment_z,
+            load_centre_offset=float(offset),
+            friction_force=friction,
+            friction_torque=torque,
+            friction_coefficient=friction / capacity if capacity > 0 else math.inf,
+            power_loss=torque * op.speed,
+            inlet_flow=inlet,
+            side_leakage=side_leakage,
+            circumferential_flow=circumferential,
+            edge_leakage=edge,
+            sommerfeld_number=sommerfeld,
+            contact=bool(hmin <= self.options.min_film_floor * g.radial_clearance),
+            cavitation=self.options.cavitation,
+            iterations=evaluation.solution.iterations,
+        )
+
+    def _inlet_flow(self, evaluation: _Evaluation, theta_flux: np.ndarray) -> float:
+        solver = self._solver()
+        stencil = evaluation.stencil
+        if self.operating.grooves:
+            # Net outflow of the groove nodes into the film.
+            rel = evaluation.relative_pressure
+            groove = solver.fixed.copy()
+            groove[[0, -1]] = False
+            if not groove.any():
+                return 0.0
+            into_film = apply_operator(stencil.c_theta, stencil.c_z, rel) - stencil.rhs
+            return float(self.flow_scale * into_film[groove].sum())
+        # Without a groove: the flow across the line of maximum film thickness (mid-plane).
+        mid = evaluation.film.shape[0] // 2
+        column = int(np.argmax(evaluation.film[mid]))
+        return float(self.flow_scale * theta_flux[1:-1, column - 1].sum())
+
+
+class _NegativeFilm(Exception):
+    def __init__(self, value: float) -> None:
+        super().__init__(value)
+        self.value = value

@@ -1,0 +1,479 @@
+"""Finite-volume Reynolds equation on the unwrapped bore, with cavitation.
+
+Dimensionless form (docs/theory.md, Sect. "Reynolds equation"): with
+``H = h / c``, ``Z = z / R`` and ``P = p / p_ref``, ``p_ref = 6 eta omega (R/c)^2``,
+
+    d/dtheta (H^3 dP/dtheta) + d/dZ (H^3 dP/dZ) = dH/dtheta + (2/omega) dH/dt.
+
+Each node is the centre of a control volume ``dtheta x dZ``; face conductances
+are ``((H_a + H_b)/2)^3``. The discrete operator ``A`` (the negative of the
+left-hand side) is a symmetric M-matrix; fixed-pressure nodes (the two bearing
+edges, supply grooves) and cavitated nodes are removed by masking rows and
+columns, which keeps one sparsity pattern for every solve so that the sparse
+LDL^T factorisation (qdldl) reuses its symbolic analysis.
+
+Cavitation models
+-----------------
+``"reynolds"``
+    Swift-Stieber condition as a linear complementarity problem
+    ``P >= 0, w = A P - b >= 0, P w = 0``, solved by the primal-dual active-set
+    method (Hintermueller, Ito & Kunisch 2002), which terminates in finitely many
+    steps for an M-matrix.
+``"jfo"``
+    Mass-conserving Jakobsson-Floberg-Olsson model in the complementarity form of
+    Giacopini et al. (2010): each node carries either a pressure (full film) or a
+    void fraction ``s = 1 - film fraction`` (cavitated); the Couette flux through a
+    face is ``(1 - s_upstream) H_face``. Solved by the same active-set switching,
+    with a sparse LU of the unsymmetric system.
+``"half_sommerfeld"``
+    The linear (full-Sommerfeld) solution with negative gauge pressures set to the
+    cavitation pressure; offered only for comparison.
+
+All pressures here are dimensionless and measured from the cavitation pressure.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+import qdldl
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+CAVITATION_MODELS = ("reynolds", "jfo", "half_sommerfeld")
+
+#: Active-set iterations allowed before the solver gives up (each is one factorisation).
+MAX_ACTIVE_SET_ITERATIONS = 200
+
+
+class ReynoldsConvergenceError(RuntimeError):
+    """The active-set iteration did not settle (never seen on M-matrices; kept as a guard)."""
+
+
+@dataclass(frozen=True)
+class _Pattern:
+    """Sparsity pattern of the 5-point periodic stencil on an (nz, nt) grid."""
+
+    nz: int
+    nt: int
+    upper: sp.csc_matrix  # upper triangle incl. diagonal, data = slot ids
+    # For each slot of ``upper.data``: kind (0 diagonal, 1 theta-link, 2 z-link) and node ids.
+    slot_kind: np.ndarray
+    slot_row: np.ndarray
+    slot_col: np.ndarray
+    slot_link: np.ndarray  # index into the flattened link arrays
+
+
+@lru_cache(maxsize=16)
+def _pattern(nz: int, nt: int) -> _Pattern:
+    n = nz * nt
+    node = np.arange(n).reshape(nz, nt)
+    east = np.roll(node, -1, axis=1)
+    theta_a, theta_b = node.ravel(), east.ravel()
+    z_a, z_b = node[:-1].ravel(), node[1:].ravel()
+    rows = np.concatenate([np.arange(n), np.minimum(theta_a, theta_b), z_a])
+    cols = np.concatenate([np.arange(n), np.maximum(theta_a, theta_b), z_b])
+    kind = np.concatenate([np.zeros(n, int), np.ones(theta_a.size, int), np.full(z_a.size, 2)])
+    link = np.concatenate([np.arange(n), np.arange(theta_a.size), np.arange(z_a.size)])
+    slot = np.arange(rows.size)
+    upper = sp.csc_matrix((slot.astype(float) + 1.0, (rows, cols)), shape=(n, n))
+    upper.sort_indices()
+    order = upper.data.astype(int) - 1
+    return _Pattern(
+        nz=nz,
+        nt=nt,
+        upper=upper,
+        slot_kind=kind[order],
+        slot_row=rows[order],
+        slot_col=cols[order],
+        slot_link=link[order],
+    )
+
+
+@dataclass
+class Stencil:
+    """Conductances and right-hand side of the discrete Reynolds equation for one film.
+
+    Attributes
+    ----------
+    c_theta : ndarray (nz, nt)
+        Coefficient of the link between node (j, i) and (j, i+1).
+    c_z : ndarray (nz-1, nt)
+        Coefficient of the link between node (j, i) and (j+1, i).
+    couette_face : ndarray (nz, nt)
+        ``dZ * H`` at the face between (j, i) and (j, i+1) (Couette flux of a full film).
+    rhs : ndarray (nz, nt)
+        ``b = couette_in - couette_out - squeeze`` per control volume.
+    """
+
+    c_theta: np.ndarray
+    c_z: np.ndarray
+    couette_face: np.ndarray
+    rhs: np.ndarray
+
+
+def build_stencil(film: np.ndarray, d_theta: float, d_z: float, film_rate: np.ndarray | None = None) -> Stencil:
+    """Stencil for dimensionless film ``H`` (nz x nt) and its rate ``(2/omega) dH/dt``."""
+    h_east = 0.5 * (film + np.roll(film, -1, axis=1))
+    h_north = 0.5 * (film[:-1] + film[1:])
+    c_theta = (d_z / d_theta) * h_east**3
+    c_z = (d_theta / d_z) * h_north**3
+    couette_face = d_z * h_east
+    rhs = np.roll(couette_face, 1, axis=1) - couette_face
+    if film_rate is not None:
+        rhs = rhs - d_theta * d_z * film_rate
+    return Stencil(c_theta=c_theta, c_z=c_z, couette_face=couette_face, rhs=rhs)
+
+
+def apply_operator(c_theta: np.ndarray, c_z: np.ndarray, pressure: np.ndarray) -> np.ndarray:
+    """``A @ P`` on every node: net diffusive outflow of each control volume."""
+    flow_east = c_theta * (pressure - np.roll(pressure, -1, axis=1))
+    out = flow_east - np.roll(flow_east, 1, axis=1)
+    flow_north = c_z * (pressure[:-1] - pressure[1:])
+    out[:-1] += flow_north
+    out[1:] -= flow_north
+    return out
+
+
+def stencil_derivative(
+    film: np.ndarray, film_derivative: np.ndarray, d_theta: float, d_z: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Derivatives of (c_theta, c_z, Couette rhs) for a film change ``dH``."""
+    h_east = 0.5 * (film + np.roll(film, -1, axis=1))
+    dh_east = 0.5 * (film_derivative + np.roll(film_derivative, -1, axis=1))
+    h_north = 0.5 * (film[:-1] + film[1:])
+    dh_north = 0.5 * (film_derivative[:-1] + film_derivative[1:])
+    dc_theta = (d_z / d_theta) * 3.0 * h_east**2 * dh_east
+    dc_z = (d_theta / d_z) * 3.0 * h_north**2 * dh_north
+    d_couette = d_z * dh_east
+    return dc_theta, dc_z, np.roll(d_couette, 1, axis=1) - d_couette
+
+
+@dataclass
+class ReynoldsSolution:
+    """Dimensionless solution of the Reynolds equation on the grid.
+
+    Attributes
+    ----------
+    pressure : ndarray (nz, nt)
+        ``P`` above the cavitation pressure (>= 0 except for half-Sommerfeld before clipping).
+    film_fraction : ndarray (nz, nt)
+        Share of the clearance filled with liquid (1 in the full film).
+    cavitated : ndarray of bool (nz, nt)
+        Nodes held at the cavitation pressure.
+    iterations : int
+        Active-set iterations (factorisations) used.
+    """
+
+    pressure: np.ndarray
+    film_fraction: np.ndarray
+    cavitated: np.ndarray
+    iterations: int
+
+
+class ReynoldsSolver:
+    """Solver for one grid shape with fixed-pressure nodes.
+
+    Parameters
+    ----------
+    shape : (int, int)
+        (axial_nodes, circumferential_nodes).
+    d_theta, d_z : float
+        Dimensionless mesh steps (rad, and axial step / R).
+    fixed : ndarray of bool (nz, nt)
+        Nodes with prescribed pressure (edges, supply grooves).
+    fixed_pressure : ndarray (nz, nt)
+        Their dimensionless pressures above the cavitation pressure.
+    """
+
+    def __init__(
+        self, shape: tuple[int, int], d_theta: float, d_z: float, fixed: np.ndarray, fixed_pressure: np.ndarray
+    ) -> None:
+        self.shape = shape
+        self.d_theta = d_theta
+        self.d_z = d_z
+        self.fixed = np.asarray(fixed, dtype=bool)
+        self.fixed_pressure = np.where(self.fixed, fixed_pressure, 0.0)
+        self.pattern = _pattern(*shape)
+        self._factor: qdldl.Solver | None = None
+        self._factor_mask: np.ndarray | None = None
+        self._factor_stencil: Stencil | None = None
+        self._coarse_cache: tuple | None = None
+        self.coarse_iterations = 0
+
+    # -- symmetric masked system -------------------------------------------------
+    def _masked_values(self, stencil: Stencil, held: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Upper-triangle values and diagonal with the ``held`` nodes' rows and columns removed."""
+        free = ~held.ravel()
+        c_theta = stencil.c_theta.ravel()
+        c_z = stencil.c_z.ravel()
+        diag = c_theta + np.roll(stencil.c_theta, 1, axis=1).ravel()
+        diag[: -self.shape[1]] += c_z
+        diag[self.shape[1] :] += c_z
+        # Held rows keep their own diagonal so the matrix stays well scaled.
+        pattern = self.pattern
+        values = np.empty(pattern.slot_kind.size)
+        is_diag = pattern.slot_kind == 0
+        is_theta = pattern.slot_kind == 1
+        is_z = pattern.slot_kind == 2
+        values[is_diag] = diag[pattern.slot_row[is_diag]]
+        both_free = free[pattern.slot_row] & free[pattern.slot_col]
+        values[is_theta] = -c_theta[pattern.slot_link[is_theta]]
+        values[is_z] = -c_z[pattern.slot_link[is_z]]
+        values[~is_diag & ~both_free] = 0.0
+        return values, diag
+
+    def _factorise(self, stencil: Stencil, held: np.ndarray) -> np.ndarray:
+        values, diag = self._masked_values(stencil, held)
+        matrix = self.pattern.upper.copy()
+        matrix.data = values
+        if self._factor is None:
+            self._factor = qdldl.Solver(matrix, upper=True)
+        else:
+            self._factor.update(matrix, upper=True)
+        self._factor_mask = held.copy()
+        self._factor_stencil = stencil
+        return diag
+
+    def _solve_masked(self, stencil: Stencil, held: np.ndarray, held_values: np.ndarray) -> np.ndarray:
+        """Solve ``A P = b`` on the free nodes with ``P = held_values`` on held nodes."""
+        diag = self._factorise(stencil, held)
+        # Moving the held values to the right-hand side: b - A_{free,held} P_held.
+        boundary = np.where(held, held_values, 0.0)
+        rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
+        rhs = np.where(held, diag.reshape(self.shape) * held_values, rhs)
+        return self._factor.solve(rhs.ravel()).reshape(self.shape)
+
+    def solve_linear(self, stencil: Stencil) -> np.ndarray:
+        """Full-Sommerfeld solution (no cavitation), dimensionless pressure."""
+        return self._solve_masked(stencil, self.fixed, self.fixed_pressure)
+
+    def solve(
+        self,
+        stencil: Stencil,
+        film: np.ndarray,
+        cavitation: str = "reynolds",
+        initial_cavitated: np.ndarray | None = None,
+    ) -> ReynoldsSolution:
+        """Solve with the chosen cavitation model; ``initial_cavitated`` warm-starts the active set."""
+        if cavitation == "half_sommerfeld":
+            pressure = np.maximum(self.solve_linear(stencil), 0.0)
+            cavitated = (pressure <= 0.0) & ~self.fixed
+            return ReynoldsSolution(pressure, _marched_film_fraction(film, cavitated), cavitated, 1)
+        reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film)
+        if cavitation == "reynolds":
+            reynolds.film_fraction = _marched_film_fraction(film, reynolds.cavitated)
+            return reynolds
+        if cavitation == "jfo":
+            return self._solve_jfo(stencil, film, reynolds)
+        raise ValueError(f"unknown cavitation model {cavitation!r}")
+
+    def _coarse(self) -> tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple] | None:
+        """Solver on a grid halved in both directions, with the maps between the grids.
+
+        Returns ``(solver, z_index, z_weight, brackets)``: the fine film is restricted
+        by linear interpolation in z (coarse columns are every other fine column), and
+        ``brackets`` holds, for every fine node, the rows and columns of the coarse
+        nodes around it.
+        """
+        nz, nt = self.shape
+        if nz < 9 or nt < 16 or nt % 2:
+            return None
+        if self._coarse_cache is None:
+            nz_c, nt_c = (nz + 1) // 2, nt // 2
+            z_coarse = np.linspace(0.0, 1.0, nz_c)
+            position = z_coarse * (nz - 1)
+            z_index = np.minimum(np.floor(position).astype(int), nz - 2)
+            z_weight = position - z_index
+            fine_in_coarse = np.linspace(0.0, 1.0, nz) * (nz_c - 1)
+            row_lo = np.minimum(np.floor(fine_in_coarse).astype(int), nz_c - 2)
+            row_hi = row_lo + 1
+            row_w = fine_in_coarse - row_lo
+            col_lo = (np.arange(nt) // 2) % nt_c
+            col_hi = ((np.arange(nt) + 1) // 2) % nt_c
+            rows = np.rint(z_coarse * (nz - 1)).astype(int)
+            fixed_c = self.fixed[rows][:, ::2].copy()
+            value_c = self.fixed_pressure[rows][:, ::2].copy()
+            fixed_c[[0, -1]] = True
+            solver = ReynoldsSolver(
+                (nz_c, nt_c), 2.0 * self.d_theta, self.d_z * (nz - 1) / (nz_c - 1), fixed_c, value_c
+            )
+            self._coarse_cache = (solver, z_index, z_weight, (row_lo, row_hi, col_lo, col_hi, row_w))
+        return self._coarse_cache
+
+    def _nested_start(self, film: np.ndarray) -> np.ndarray | None:
+        """Cavitated set predicted by solving the same problem on the coarser grid.
+
+        The coarse indicator ``P - w / diag(A)`` (pressure where the film is full,
+        minus the scaled complementarity multiplier where it is cavitated) changes
+        sign on the cavitation boundary; interpolated bilinearly onto the fine grid it
+        places that boundary to within a fraction of a fine cell.
+        """
+        coarse = self._coarse()
+        if coarse is None:
+            return None
+        solver, z_index, z_weight, (row_lo, row_hi, col_lo, col_hi, row_w) = coarse
+        film_c = (film[z_index] * (1.0 - z_weight)[:, None] + film[z_index + 1] * z_weight[:, None])[:, ::2]
+        stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z)
+        solution = solver._solve_reynolds_lcp(stencil_c, None, film_c)
+        self.coarse_iterations = solution.iterations
+        diag = stencil_c.c_theta + np.roll(stencil_c.c_theta, 1, axis=1)
+        diag[:-1] += stencil_c.c_z
+        diag[1:] += stencil_c.c_z
+        multiplier = apply_operator(stencil_c.c_theta, stencil_c.c_z, solution.pressure) - stencil_c.rhs
+        indicator = np.where(solution.cavitated, -np.maximum(multiplier, 0.0) / diag, solution.pressure)
+        indicator = np.where(solver.fixed, 0.0, indicator)
+        col_w = 0.5 * (np.arange(self.shape[1]) % 2)
+        lo = indicator[row_lo] * (1.0 - row_w)[:, None] + indicator[row_hi] * row_w[:, None]
+        fine = lo[:, col_lo] * (1.0 - col_w)[None, :] + lo[:, col_hi] * col_w[None, :]
+        return (fine < 0.0) & ~self.fixed
+
+    def _solve_reynolds_lcp(
+        self, stencil: Stencil, initial_cavitated: np.ndarray | None, film: np.ndarray | None = None
+    ) -> ReynoldsSolution:
+        iterations = 0
+        if initial_cavitated is None and film is not None and stencil.rhs.shape == film.shape:
+            initial_cavitated = self._nested_start(film)
+        if initial_cavitated is None:
+            pressure = self.solve_linear(stencil)
+            iterations += 1
+            cavitated = (pressure < 0.0) & ~self.fixed
+        else:
+            cavitated = initial_cavitated & ~self.fixed
+        scale = 1.0
+        for _ in range(MAX_ACTIVE_SET_ITERATIONS):
+            held = self.fixed | cavitated
+            pressure = self._solve_masked(stencil, held, np.where(self.fixed, self.fixed_pressure, 0.0))
+            iterations += 1
+            scale = max(float(np.abs(pressure).max()), 1e-300)
+            multiplier = apply_operator(stencil.c_theta, stencil.c_z, pressure) - stencil.rhs
+            rhs_scale = max(float(np.abs(stencil.rhs).max()), 1e-300)
+            leave = cavitated & (multiplier < -1e-12 * rhs_scale)
+            enter = ~held & (pressure < -1e-12 * scale)
+            if not leave.any() and not enter.any():
+                pressure = np.where(cavitated, 0.0, pressure)
+                return ReynoldsSolution(pressure, np.ones_like(pressure), cavitated, iterations)
+            cavitated = (cavitated & ~leave) | enter
+        raise ReynoldsConvergenceError("Reynolds-condition active set did not settle")
+
+    def _solve_jfo(self, stencil: Stencil, film: np.ndarray, start: ReynoldsSolution) -> ReynoldsSolution:
+        """Mass-conserving cavitation, started from the Reynolds-condition active set."""
+        nz, nt = self.shape
+        n = nz * nt
+        node = np.arange(n).reshape(nz, nt)
+        east = np.roll(node, -1, axis=1).ravel()
+        cavitated = start.cavitated.copy()
+        iterations = start.iterations
+        full_lower = None
+        for _ in range(MAX_ACTIVE_SET_ITERATIONS):
+            held = self.fixed | cavitated
+            values, diag = self._masked_values(stencil, held)
+            if full_lower is None:
+                upper = self.pattern.upper
+            matrix = sp.csc_matrix((values, upper.indices, upper.indptr), shape=(n, n))
+            strict = sp.triu(matrix, k=1)
+            symmetric = (matrix + strict.T).tocsr()
+            # Void-fraction columns of cavitated free nodes: +q on own row, -q on the downstream row.
+            cav = np.flatnonzero(cavitated.ravel())
+            q = stencil.couette_face.ravel()[cav]
+            down = east[cav]
+            keep_down = ~self.fixed.ravel()[down]
+            # Cavitated rows keep their coupling to pressurised neighbours: restore them.
+            rows_c, cols_c, vals_c = _rows_to_pressurised(stencil, cavitated, self.fixed, self.shape)
+            transport = sp.csr_matrix(
+                (
+                    np.concatenate([q, -q[keep_down], vals_c]),
+                    (np.concatenate([cav, down[keep_down], rows_c]), np.concatenate([cav, cav[keep_down], cols_c])),
+                ),
+                shape=(n, n),
+            )
+            # Cavitated rows: zero the symmetric (held) diagonal, the transport term replaces it.
+            row_scale = np.where(cavitated.ravel(), 0.0, 1.0)
+            system = (sp.diags(row_scale) @ symmetric + transport).tocsc()
+            boundary = np.where(self.fixed, self.fixed_pressure, 0.0)
+            rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
+            rhs = np.where(self.fixed, diag.reshape(self.shape) * self.fixed_pressure, rhs)
+            unknown = spla.spsolve(system, rhs.ravel()).reshape(self.shape)
+            iterations += 1
+            pressure = np.where(cavitated, 0.0, unknown)
+            void = np.where(cavitated, unknown, 0.0)
+            scale = max(float(np.abs(pressure).max()), 1e-300)
+            enter = ~held & (pressure < -1e-12 * scale)
+            leave = cavitated & (void < -1e-12)
+            if not enter.any() and not leave.any():
+                fraction = np.clip(1.0 - void, 0.0, 1.0)
+                return ReynoldsSolution(pressure, fraction, cavitated, iterations)
+            cavitated = (cavitated & ~leave) | enter
+        raise ReynoldsConvergenceError("JFO active set did not settle")
+
+    def linear_response(self, stencil: Stencil, solution: ReynoldsSolution, rhs_change: np.ndarray) -> np.ndarray:
+        """Pressure change ``dP`` for a residual change ``dR`` with the active set frozen.
+
+        Solves ``A_free dP = -dR`` on the pressurised free nodes, reusing the
+        factorisation of the converged active set when it is still held.
+        """
+        held = self.fixed | solution.cavitated
+        if (
+            self._factor is None
+            or self._factor_stencil is not stencil
+            or self._factor_mask is None
+            or not np.array_equal(self._factor_mask, held)
+        ):
+            self._factorise(stencil, held)
+        columns = np.atleast_2d(rhs_change.reshape(-1, self.shape[0] * self.shape[1]))
+        out = np.empty_like(columns)
+        for k, column in enumerate(columns):
+            rhs = np.where(held.ravel(), 0.0, -column)
+            out[k] = self._factor.solve(rhs)
+        return out.reshape((-1,) + self.shape)
+
+
+def _rows_to_pressurised(
+    stencil: Stencil, cavitated: np.ndarray, fixed: np.ndarray, shape: tuple[int, int]
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Entries ``-c`` coupling cavitated rows to their pressurised free neighbours."""
+    nz, nt = shape
+    node = np.arange(nz * nt).reshape(nz, nt)
+    pressurised = ~(cavitated | fixed)
+    rows, cols, vals = [], [], []
+    pairs = (
+        (node, np.roll(node, -1, axis=1), stencil.c_theta),
+        (np.roll(node, -1, axis=1), node, stencil.c_theta),
+        (node[:-1], node[1:], stencil.c_z),
+        (node[1:], node[:-1], stencil.c_z),
+    )
+    flat_cav = cavitated.ravel()
+    flat_p = pressurised.ravel()
+    for a, b, coef in pairs:
+        a, b, coef = a.ravel(), b.ravel(), coef.ravel()
+        pick = flat_cav[a] & flat_p[b]
+        rows.append(a[pick])
+        cols.append(b[pick])
+        vals.append(-coef[pick])
+    return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
+
+
+def _marched_film_fraction(film: np.ndarray, cavitated: np.ndarray) -> np.ndarray:
+    """Film fraction in a cavitated zone from Couette transport of the film at rupture.
+
+    Along each circumferential line the liquid leaving the last full-film node is
+    carried unchanged through the cavitated zone (pure Couette flow), so the film
+    fraction is ``h_rupture / h``. Used with the Reynolds and half-Sommerfeld
+    conditions, which do not compute it themselves.
+    """
+    nz, nt = film.shape
+    full = ~cavitated
+    if full.all():
+        return np.ones_like(film)
+    index = np.where(full, np.arange(nt)[None, :], -1)
+    # Two periods so that a zone wrapping past theta = 2 pi finds its upstream full node.
+    doubled = np.concatenate([index - nt, index], axis=1)
+    doubled = np.where(np.concatenate([full, full], axis=1), doubled, -(10 * nt))
+    last_full = np.maximum.accumulate(doubled, axis=1)[:, nt:]
+    rows = np.arange(nz)[:, None]
+    has_source = last_full > -(5 * nt)
+    source = np.where(has_source, last_full % nt, 0)
+    fraction = np.where(has_source, film[rows, source] / film, 1.0)
+    return np.where(full, 1.0, np.clip(fraction, 0.0, 1.0))

@@ -1,0 +1,123 @@
+"""Flat, documented summaries of bearing results for tables and JSON."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from shaftline.film.bearing import BearingState, Equilibrium
+from shaftline.film.dynamics import DynamicCoefficients
+
+#: (key, unit, description, value) for every scalar written to JSON. The README's
+#: table of JSON fields is generated from the same list.
+FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
+    (
+        "eccentricity_ratio",
+        "-",
+        "journal eccentricity from the bore centre at mid-plane / radial clearance",
+        lambda s: s.eccentricity_ratio,
+    ),
+    (
+        "attitude_angle_deg",
+        "deg",
+        "load line to line of centres, positive in the sense of rotation",
+        lambda s: math.degrees(s.attitude_angle),
+    ),
+    (
+        "position_angle_deg",
+        "deg",
+        "bearing angle of the line of centres (from top, in the sense of rotation)",
+        lambda s: math.degrees(s.position_angle),
+    ),
+    (
+        "ey",
+        "m",
+        "vertical offset of the journal centre at mid-plane from the nominal bore axis",
+        lambda s: s.position.ey,
+    ),
+    ("ez", "m", "horizontal (starboard) offset of the journal centre at mid-plane", lambda s: s.position.ez),
+    ("tilt_y", "rad", "journal tilt in the vertical plane (dy/dx)", lambda s: s.position.tilt_y),
+    ("tilt_z", "rad", "journal tilt in the horizontal plane (dz/dx)", lambda s: s.position.tilt_z),
+    ("min_film_thickness", "m", "smallest film thickness h_min", lambda s: s.min_film_thickness),
+    ("min_film_theta_deg", "deg", "bearing angle of h_min", lambda s: math.degrees(s.min_film_theta)),
+    ("min_film_z", "m", "axial position of h_min from the aft edge", lambda s: s.min_film_z),
+    ("max_pressure", "Pa", "largest film pressure p_max (gauge)", lambda s: s.max_pressure),
+    ("max_pressure_theta_deg", "deg", "bearing angle of p_max", lambda s: math.degrees(s.max_pressure_theta)),
+    ("max_pressure_z", "m", "axial position of p_max from the aft edge", lambda s: s.max_pressure_z),
+    ("mean_pressure", "Pa", "load capacity / (L D)", lambda s: s.mean_pressure),
+    ("load_capacity", "N", "magnitude of the film force", lambda s: s.load_capacity),
+    ("force_y", "N", "vertical film force on the journal (+ up)", lambda s: s.force_y),
+    ("force_z", "N", "horizontal film force on the journal (+ starboard)", lambda s: s.force_z),
+    ("moment_y", "N m", "first moment of the vertical film force about mid-plane", lambda s: s.moment_y),
+    ("moment_z", "N m", "first moment of the horizontal film force about mid-plane", lambda s: s.moment_z),
+    (
+        "load_centre_offset",
+        "m",
+        "axial position of the film resultant from mid-plane (+ forward)",
+        lambda s: s.load_centre_offset,
+    ),
+    ("friction_force", "N", "shear force on the journal", lambda s: s.friction_force),
+    ("friction_torque", "N m", "friction torque on the journal", lambda s: s.friction_torque),
+    ("friction_coefficient", "-", "friction force / load capacity", lambda s: s.friction_coefficient),
+    ("power_loss", "W", "friction power", lambda s: s.power_loss),
+    (
+        "inlet_flow",
+        "m^3/s",
+        "flow entering the film (groove supply, or across the line of maximum film)",
+        lambda s: s.inlet_flow,
+    ),
+    ("side_leakage", "m^3/s", "net flow out through both bearing edges", lambda s: s.side_leakage),
+    ("sommerfeld_number", "-", "(R/c)^2 eta N / P, N in rev/s", lambda s: s.sommerfeld_number),
+    ("contact", "-", "true when the film reaches the solver's film floor", lambda s: s.contact),
+]
+
+
+def _clean(value: Any) -> Any:
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (float, np.floating)):
+        return float(value) if math.isfinite(value) else None
+    return value
+
+
+def state_summary(state: BearingState) -> dict[str, Any]:
+    """Scalar results of a film solution, keyed as in :data:`FIELDS`."""
+    return {key: _clean(getter(state)) for key, _, _, getter in FIELDS}
+
+
+def units() -> dict[str, str]:
+    """Unit of every key of :func:`state_summary`."""
+    return {key: unit for key, unit, _, _ in FIELDS}
+
+
+def equilibrium_summary(equilibrium: Equilibrium, coefficients: DynamicCoefficients | None = None) -> dict[str, Any]:
+    """Scalar results of an equilibrium, with stiffness and damping when given."""
+    out = state_summary(equilibrium.state)
+    out.update(
+        {
+            "load_y": equilibrium.load_y,
+            "load_z": equilibrium.load_z,
+            "converged": equilibrium.converged,
+            "contact": bool(equilibrium.contact),
+            "iterations": equilibrium.iterations,
+            "force_residual": equilibrium.residual,
+        }
+    )
+    if coefficients is not None:
+        out["stiffness"] = coefficients.stiffness.tolist()
+        out["damping"] = coefficients.damping.tolist()
+    return {k: _clean(v) for k, v in out.items()}
+
+
+EXTRA_UNITS = {
+    "load_y": "N",
+    "load_z": "N",
+    "converged": "-",
+    "iterations": "-",
+    "force_residual": "N",
+    "stiffness": "N/m, [[Kyy, Kyz], [Kzy, Kzz]]",
+    "damping": "N s/m, [[Cyy, Cyz], [Czy, Czz]]",
+}
