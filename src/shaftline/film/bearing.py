@@ -322,6 +322,16 @@ class JournalBearing:
             raise InputError(
                 "bearing.film_modification", str(np.shape(geometry.film_modification)), "", f"shape {grid.shape}"
             )
+        if self.options.cavitation == "jfo":
+            feed = max(operating.aft_pressure, operating.fore_pressure, *(g.pressure for g in operating.grooves))
+            if feed <= operating.cavitation_pressure:
+                raise InputError(
+                    "operation.cavitation_pressure",
+                    operating.cavitation_pressure,
+                    "Pa",
+                    f"below the highest edge or groove pressure ({feed} Pa) for the mass-conserving "
+                    "(jfo) model: without a pressure difference to feed it the film runs dry",
+                )
         self._base_grid = grid
         radius = geometry.radius
         c = geometry.radial_clearance
@@ -642,14 +652,22 @@ class JournalBearing:
         # Flows from the discrete face fluxes (consistent with the solver's mass balance).
         stencil = evaluation.stencil
         rel = evaluation.relative_pressure
-        void = 1.0 - fraction if self.options.cavitation == "jfo" else np.zeros_like(fraction)
-        theta_flux = stencil.couette_face * (1.0 - void) - stencil.c_theta * (np.roll(rel, -1, axis=1) - rel)
-        circumferential = self.flow_scale * theta_flux[1:-1].sum(axis=0)
-        aft = self.flow_scale * stencil.c_z[0] * (rel[1] - rel[0])
-        fore = self.flow_scale * stencil.c_z[-1] * (rel[-2] - rel[-1])
-        edge = np.vstack([aft, fore])
+        # Couette transport carries the liquid share of the upwind node. The half cells between
+        # the edge rows and the first interior faces carry half the transport of their interior
+        # row; what they gain in the full film leaves through the edge. Fixed-pressure nodes
+        # (supply lines) are sources, not leakage, so their half cells are left out.
+        transport = stencil.couette_face * fraction
+        theta_flux = transport - stencil.c_theta * (np.roll(rel, -1, axis=1) - rel)
+        edge_transport = 0.5 * np.vstack([transport[1], transport[-2]])
+        circumferential = self.flow_scale * (theta_flux[1:-1].sum(axis=0) + edge_transport.sum(axis=0))
+        solver_fixed = self._solver().fixed
+        half_cells = np.roll(edge_transport, 1, axis=1) - edge_transport
+        half_cells[:, solver_fixed[1] | solver_fixed[-2]] = 0.0
+        aft = stencil.c_z[0] * (rel[1] - rel[0])
+        fore = stencil.c_z[-1] * (rel[-2] - rel[-1])
+        edge = self.flow_scale * (np.vstack([aft, fore]) + half_cells)
         side_leakage = float(edge.sum())
-        inlet = self._inlet_flow(evaluation, theta_flux)
+        inlet = self._inlet_flow(evaluation, theta_flux, circumferential)
         mean_pressure = capacity / (g.length * g.diameter)
         sommerfeld = (
             (g.radius / g.radial_clearance) ** 2 * op.viscosity * (op.speed / (2 * np.pi)) / mean_pressure
@@ -694,22 +712,24 @@ class JournalBearing:
             iterations=evaluation.solution.iterations,
         )
 
-    def _inlet_flow(self, evaluation: _Evaluation, theta_flux: np.ndarray) -> float:
-        solver = self._solver()
-        stencil = evaluation.stencil
+    def _inlet_flow(self, evaluation: _Evaluation, theta_flux: np.ndarray, circumferential: np.ndarray) -> float:
         if self.operating.grooves:
-            # Net outflow of the groove nodes into the film.
-            rel = evaluation.relative_pressure
-            groove = solver.fixed.copy()
+            # Net outflow of the groove nodes into the film, with the Couette inflow from a
+            # cavitated upstream zone carrying only its liquid share.
+            groove = self._solver().fixed.copy()
             groove[[0, -1]] = False
-            if not groove.any():
-                return 0.0
-            into_film = apply_operator(stencil.c_theta, stencil.c_z, rel) - stencil.rhs
-            return float(self.flow_scale * into_film[groove].sum())
-        # Without a groove: the flow across the line of maximum film thickness (mid-plane).
+            rel = evaluation.relative_pressure
+            stencil = evaluation.stencil
+            net = theta_flux - np.roll(theta_flux, 1, axis=1)
+            flow_north = stencil.c_z * (rel[:-1] - rel[1:])
+            net[:-1] += flow_north
+            net[1:] -= flow_north
+            return float(self.flow_scale * net[groove].sum())
+        # Without a groove: the flow entering the converging film across the line of
+        # maximum film thickness at mid-plane (Raimondi & Boyd's Q).
         mid = evaluation.film.shape[0] // 2
         column = int(np.argmax(evaluation.film[mid]))
-        return float(self.flow_scale * theta_flux[1:-1, column - 1].sum())
+        return float(circumferential[column])
 
 
 class _NegativeFilm(Exception):

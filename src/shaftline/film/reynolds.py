@@ -375,7 +375,8 @@ class ReynoldsSolver:
             matrix = sp.csc_matrix((values, upper.indices, upper.indptr), shape=(n, n))
             strict = sp.triu(matrix, k=1)
             symmetric = (matrix + strict.T).tocsr()
-            # Void-fraction columns of cavitated free nodes: +q on own row, -q on the downstream row.
+            # Void-fraction columns of cavitated free nodes: a void s_k cuts the Couette outflow of
+            # cell k by s_k q_k and the inflow of the downstream cell by the same amount.
             cav = np.flatnonzero(cavitated.ravel())
             q = stencil.couette_face.ravel()[cav]
             down = east[cav]
@@ -384,7 +385,7 @@ class ReynoldsSolver:
             rows_c, cols_c, vals_c = _rows_to_pressurised(stencil, cavitated, self.fixed, self.shape)
             transport = sp.csr_matrix(
                 (
-                    np.concatenate([q, -q[keep_down], vals_c]),
+                    np.concatenate([-q, q[keep_down], vals_c]),
                     (np.concatenate([cav, down[keep_down], rows_c]), np.concatenate([cav, cav[keep_down], cols_c])),
                 ),
                 shape=(n, n),
