@@ -42,8 +42,7 @@ def test_jfo_mass_balance():
     """JFO conserves mass: flow across a section upstream of the cavitated zone = side leakage
     between the sections + flow across a section downstream of it, to 1e-9 relative
     (the discrete balance holds to the linear-solver round-off)."""
-    bearing = make_bearing(1.0, cavitation_pressure=-2e4, axial_nodes=31, circumferential_nodes=120,
-                           cavitation="jfo")
+    bearing = make_bearing(1.0, cavitation_pressure=-2e4, axial_nodes=31, circumferential_nodes=120, cavitation="jfo")
     state = bearing.solve_at(JournalPosition.from_polar(0.7 * CLEARANCE, np.pi))
     assert state.film_fraction.min() < 0.9  # a real cavitated zone is crossed
     flow = state.circumferential_flow
@@ -67,8 +66,9 @@ def test_jfo_groove_supply_equals_side_leakage():
 
     bearing = JournalBearing(
         BearingGeometry(length=0.1, diameter=0.1, radial_clearance=1e-4),
-        OperatingPoint(speed=60.0, viscosity=0.02, grooves=(SupplyGroove(angle=np.pi / 2, pressure=1e5,
-                                                                          length_fraction=0.8),)),
+        OperatingPoint(
+            speed=60.0, viscosity=0.02, grooves=(SupplyGroove(angle=np.pi / 2, pressure=1e5, length_fraction=0.8),)
+        ),
         SolverOptions(axial_nodes=31, circumferential_nodes=120, cavitation="jfo"),
     )
     state = bearing.solve_at(JournalPosition.from_polar(0.6 * CLEARANCE, np.pi))
@@ -83,8 +83,7 @@ def test_jfo_starvation_with_feed_pressure():
     position = JournalPosition.from_polar(0.6 * CLEARANCE, np.pi)
     loads = []
     for feed in (1e3, 2e4, 1e5):
-        jfo = make_bearing(1.0, cavitation_pressure=-feed, axial_nodes=31, circumferential_nodes=120,
-                           cavitation="jfo")
+        jfo = make_bearing(1.0, cavitation_pressure=-feed, axial_nodes=31, circumferential_nodes=120, cavitation="jfo")
         loads.append(jfo.solve_at(position).load_capacity)
     assert loads[0] < 0.3 * loads[1] < loads[1] < loads[2]
 

@@ -535,34 +535,13 @@ class JournalBearing:
                 break
             iterations += 1
             jacobian = self._position_jacobian(evaluation)
-            try:
-                step = np.linalg.solve(jacobian, -residual)
-            except np.linalg.LinAlgError:
-                step = -residual / max(float(np.abs(jacobian).max()), 1e-300)
-            step = self._limit_step(position, step, c)
-            hmin_now = self.min_film(position)
-            alpha = 1.0
-            # Fraction to the boundary: never close more than 80 % of the film left above the floor.
-            while alpha > 1e-8:
-                trial_hmin = self.min_film(self._moved(position, alpha * step))
-                if trial_hmin - floor >= 0.2 * (hmin_now - floor):
-                    break
-                alpha *= 0.5
             accepted = None
-            while alpha > 1e-8:
-                trial = self._moved(position, alpha * step)
-                try:
-                    trial_eval = self._evaluate(trial)
-                except _NegativeFilm:
-                    alpha *= 0.5
-                    continue
-                trial_residual = trial_eval.force + load
-                if np.hypot(*trial_residual) < (1.0 - 1e-4 * alpha) * norm:
-                    accepted = trial_eval
+            for step, sufficient in self._candidate_steps(jacobian, residual, load, c):
+                accepted = self._line_search(position, step, load, norm, floor, sufficient)
+                if accepted is not None:
                     break
-                alpha *= 0.5
             if accepted is None:
-                contact = hmin_now <= 1.5 * floor
+                contact = self.min_film(position) <= 1.5 * floor
                 break
             evaluation = accepted
             position = evaluation.position
@@ -580,7 +559,48 @@ class JournalBearing:
     def _moved(self, position: JournalPosition, step: np.ndarray) -> JournalPosition:
         return replace(position, ey=position.ey + float(step[0]), ez=position.ez + float(step[1]))
 
-    def _limit_step(self, position: JournalPosition, step: np.ndarray, c: float) -> np.ndarray:
+    def _candidate_steps(self, jacobian: np.ndarray, residual: np.ndarray, load: np.ndarray, c: float):
+        """Newton step first; then the damped fallbacks: steepest descent of |r|^2/2 and a push
+        along the load (which walks a load that is too large down to the film floor)."""
+        try:
+            yield self._limit_step(np.linalg.solve(jacobian, -residual), c), 1e-4
+        except np.linalg.LinAlgError:
+            pass
+        gradient = -jacobian.T @ residual
+        if np.any(gradient):
+            yield 0.1 * c * gradient / float(np.hypot(*gradient)), 0.0
+        yield 0.1 * c * load / float(np.hypot(*load)), 0.0
+
+    def _line_search(
+        self,
+        position: JournalPosition,
+        step: np.ndarray,
+        load: np.ndarray,
+        norm: float,
+        floor: float,
+        sufficient: float,
+    ) -> _Evaluation | None:
+        """Backtracking that keeps the film above the floor and lowers the force residual
+        (by the Armijo share ``sufficient * alpha`` for a Newton step, at all for a fallback)."""
+        hmin_now = self.min_film(position)
+        alpha = 1.0
+        # Fraction to the boundary: never close more than 80 % of the film left above the floor.
+        while alpha > 1e-8:
+            if self.min_film(self._moved(position, alpha * step)) - floor >= 0.2 * (hmin_now - floor):
+                break
+            alpha *= 0.5
+        while alpha > 1e-8:
+            try:
+                trial = self._evaluate(self._moved(position, alpha * step))
+            except _NegativeFilm:
+                alpha *= 0.5
+                continue
+            if np.hypot(*(trial.force + load)) < (1.0 - sufficient * alpha) * norm:
+                return trial
+            alpha *= 0.5
+        return None
+
+    def _limit_step(self, step: np.ndarray, c: float) -> np.ndarray:
         length = float(np.hypot(*step))
         limit = 0.5 * c
         return step if length <= limit else step * (limit / length)

@@ -1,0 +1,106 @@
+"""Film thickness geometry (seed 004 Eq. 53-55 in fixed bearing axes)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from shaftline.errors import InputError
+from shaftline.film import BearingGeometry, BentJournal, BoreSegment, Grid, JournalPosition, film_thickness
+
+GEOMETRY = BearingGeometry(length=1.0, diameter=0.5, radial_clearance=5e-4)
+GRID = Grid(1.0, 11, 36)
+
+
+def test_aligned_film_is_c_minus_e_cos():
+    position = JournalPosition.from_polar(2e-4, np.pi)
+    h = film_thickness(GEOMETRY, GRID, position)
+    expected = 5e-4 - 2e-4 * np.cos(GRID.theta - np.pi)
+    assert np.allclose(h, expected[None, :])
+    # thinnest at the bottom of the bore (theta = 180 deg), for both senses of rotation
+    assert GRID.theta[np.argmin(h[0])] == pytest.approx(np.pi)
+
+
+def test_rotation_sense_mirrors_horizontal_offsets():
+    cw = BearingGeometry(1.0, 0.5, 5e-4, rotation=1)
+    ccw = BearingGeometry(1.0, 0.5, 5e-4, rotation=-1)
+    position = JournalPosition(ey=0.0, ez=2e-4)  # journal moved to starboard
+    h_cw = film_thickness(cw, GRID, position)
+    h_ccw = film_thickness(ccw, GRID, position)
+    # starboard is theta = 90 deg for clockwise-from-aft rotation, 270 deg otherwise
+    assert GRID.theta[np.argmin(h_cw[0])] == pytest.approx(np.pi / 2)
+    assert GRID.theta[np.argmin(h_ccw[0])] == pytest.approx(3 * np.pi / 2)
+
+
+def test_tilt_changes_film_linearly_along_the_bearing():
+    tilt = 4e-4
+    h = film_thickness(GEOMETRY, GRID, JournalPosition(tilt_y=tilt))
+    bottom = np.argmin(np.abs(GRID.theta - np.pi))
+    # journal rising forward: the film at the bottom grows forward by tilt * dz
+    assert np.allclose(np.diff(h[:, bottom]), tilt * GRID.dz)
+    assert h[0, bottom] == pytest.approx(5e-4 - tilt * 0.5)
+
+
+def test_single_slope_bore_parallel_to_tilted_journal_gives_uniform_film():
+    tilt = 4e-4
+    bored = BearingGeometry(1.0, 0.5, 5e-4, bore=(BoreSegment(1.0, tilt),), bore_anchor="mid")
+    h = film_thickness(bored, GRID, JournalPosition(ey=-1e-4, tilt_y=tilt))
+    assert np.allclose(h, h[0][None, :])
+
+
+def test_double_slope_bore_is_continuous_with_a_knuckle():
+    bored = BearingGeometry(1.0, 0.5, 5e-4, bore=(BoreSegment(0.6, 3e-4), BoreSegment(0.4, 1e-4)))
+    z = np.linspace(0.0, 1.0, 101)
+    line, _ = bored.bore_centre_line(z)
+    assert line[-1] == 0.0  # anchored at the forward end
+    assert line[0] == pytest.approx(-(0.6 * 3e-4 + 0.4 * 1e-4))
+    slopes = np.diff(line) / np.diff(z)
+    assert np.allclose(slopes[:59], 3e-4) and np.allclose(slopes[61:], 1e-4)
+
+
+def test_bent_journal_is_interpolated_linearly():
+    bent = BentJournal(z=[0.0, 0.5, 1.0], dy=[-1e-4, 0.0, 0.0], dz=[0.0, 0.0, 0.0])
+    geometry = BearingGeometry(1.0, 0.5, 5e-4, bent_journal=bent)
+    h = film_thickness(geometry, GRID, JournalPosition())
+    bottom = np.argmin(np.abs(GRID.theta - np.pi))
+    expected = 5e-4 + np.interp(GRID.z, [0.0, 0.5, 1.0], [-1e-4, 0.0, 0.0])
+    assert np.allclose(h[:, bottom], expected)
+
+
+def test_negative_film_is_reported_not_clipped():
+    h = film_thickness(GEOMETRY, GRID, JournalPosition(ey=-6e-4))
+    assert h.min() == pytest.approx(-1e-4)
+
+
+def test_additive_profile():
+    wear = np.zeros(GRID.shape)
+    wear[:, 18] = 3e-5
+    geometry = BearingGeometry(1.0, 0.5, 5e-4, film_modification=wear)
+    assert np.allclose(film_thickness(geometry, GRID, JournalPosition()) - 5e-4, wear)
+
+
+@pytest.mark.parametrize(
+    "kwargs, field",
+    [
+        ({"radial_clearance": 0.0}, "bearing.radial_clearance"),
+        ({"radial_clearance": -1e-4}, "bearing.radial_clearance"),
+        ({"length": 0.0}, "bearing.length"),
+        ({"diameter": -0.5}, "bearing.diameter"),
+        ({"radial_clearance": float("nan")}, "bearing.radial_clearance"),
+        ({"bore": (BoreSegment(0.5, 1e-4), BoreSegment(0.4, 0.0))}, "bearing.bore.length_fraction"),
+    ],
+)
+def test_bad_geometry_names_the_field(kwargs, field):
+    values = {"length": 1.0, "diameter": 0.5, "radial_clearance": 5e-4} | kwargs
+    with pytest.raises(InputError) as error:
+        BearingGeometry(**values)
+    assert error.value.field == field
+
+
+def test_coarse_grid_is_rejected():
+    with pytest.raises(InputError) as error:
+        Grid(1.0, 3, 60)
+    assert error.value.field == "solver.axial_nodes"
+    with pytest.raises(InputError) as error:
+        Grid(1.0, 20, 8)
+    assert error.value.field == "solver.circumferential_nodes"
