@@ -462,8 +462,11 @@ class JournalBearing:
         return np.column_stack([dfy, dfz])
 
     # -- public API ----------------------------------------------------------------------
-    def solve_at(self, position: JournalPosition) -> BearingState:
+    def solve_at(self, position: JournalPosition, warm_start: bool = True) -> BearingState:
         """Film solution with the journal held at ``position``.
+
+        ``warm_start`` starts the cavitation active set from the previous solution of this
+        bearing (a sweep over nearby positions); otherwise from the nested coarse-grid guess.
 
         Raises
         ------
@@ -471,7 +474,7 @@ class JournalBearing:
             When the journal at that position would cut into the bore (h <= 0).
         """
         try:
-            evaluation = self._evaluate(position)
+            evaluation = self._evaluate(position, warm=warm_start)
         except _NegativeFilm as exc:
             raise InputError(
                 "position",
