@@ -68,18 +68,19 @@ def test_long_bearing_half_sommerfeld_load(epsilon):
     assert abs(tangential) == pytest.approx(expected_tangential, rel=0.01)
 
 
-@pytest.mark.parametrize("epsilon", [0.2, 0.5, 0.8])
-def test_short_bearing_limit_is_ocvirk(epsilon):
-    """Half-Sommerfeld film of L/D = 1/20 against Ocvirk: load within 1.5 %, attitude within 1 deg.
+@pytest.mark.parametrize("epsilon, tolerance", [(0.2, 0.01), (0.5, 0.01), (0.8, 0.02)])
+def test_short_bearing_limit_is_ocvirk(epsilon, tolerance):
+    """Half-Sommerfeld film of L/D = 1/20 against Ocvirk: load and attitude (1 deg).
 
-    The short-bearing theory drops circumferential pressure flow, an O((L/D)^2) = 0.25 %
-    effect here; the rest of the tolerance is the 21-node axial parabola.
+    The short-bearing theory drops circumferential pressure flow, whose share grows with
+    the film curvature near h_min: the grid-converged gap is -0.4 % at eps = 0.2, -0.6 %
+    at 0.5 and -1.2 % at 0.8 (81 x 480 nodes), so 1 % and, at eps = 0.8, 2 %.
     """
-    bearing = make_bearing(0.05, axial_nodes=21, circumferential_nodes=240, cavitation="half_sommerfeld")
+    bearing = make_bearing(0.05, axial_nodes=41, circumferential_nodes=240, cavitation="half_sommerfeld")
     state = bearing.solve_at(JournalPosition.from_polar(epsilon * CLEARANCE, np.pi))
     radial, tangential = _dimensionless_load(state, bearing)
     expected_radial, expected_tangential = short_bearing_load(epsilon, 0.05)
-    assert np.hypot(radial, tangential) == pytest.approx(np.hypot(expected_radial, expected_tangential), rel=0.015)
+    assert np.hypot(radial, tangential) == pytest.approx(np.hypot(expected_radial, expected_tangential), rel=tolerance)
     expected_attitude = np.degrees(np.arctan2(expected_tangential, expected_radial))
     assert np.degrees(state.attitude_angle) == pytest.approx(expected_attitude, abs=1.0)
 
