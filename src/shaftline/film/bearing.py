@@ -341,7 +341,7 @@ class JournalBearing:
         self.flow_scale = 0.5 * operating.speed * radius**2 * c
         self._d_theta = grid.d_theta
         self._d_z = grid.dz / radius
-        self._solver_cache: dict[bool, ReynoldsSolver] = {}
+        self._reynolds_solver: ReynoldsSolver | None = None
         self._last_cavitated: np.ndarray | None = None
 
     # -- grid and fixed nodes ----------------------------------------------------------
@@ -362,8 +362,8 @@ class JournalBearing:
         return replace(self._base_grid, theta_start=float(start))
 
     def _solver(self) -> ReynoldsSolver:
-        key = True
-        if key not in self._solver_cache:
+        """The Reynolds solver of this bearing's grid and fixed-pressure nodes (built once)."""
+        if self._reynolds_solver is None:
             grid = self._base_grid
             nz, nt = grid.shape
             fixed = np.zeros(grid.shape, dtype=bool)
@@ -383,8 +383,8 @@ class JournalBearing:
                 fixed[:, 0] = True
                 value[1:-1, 0] = 0.0
             relative = (value - op.cavitation_pressure) / self.pressure_scale
-            self._solver_cache[key] = ReynoldsSolver(grid.shape, self._d_theta, self._d_z, fixed, relative)
-        return self._solver_cache[key]
+            self._reynolds_solver = ReynoldsSolver(grid.shape, self._d_theta, self._d_z, fixed, relative)
+        return self._reynolds_solver
 
     # -- core evaluation -------------------------------------------------------------
     def film(self, position: JournalPosition) -> np.ndarray:
@@ -406,8 +406,7 @@ class JournalBearing:
         start = self._last_cavitated if warm else None
         solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
         self._last_cavitated = solution.cavitated
-        relative = np.where(solver.fixed & ~solution.cavitated, solver.fixed_pressure, solution.pressure)
-        relative = np.where(solver.fixed, solver.fixed_pressure, relative)
+        relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
         force = self._integrate_force(grid, relative)
         return _Evaluation(position, grid, film, stencil, solution, relative, force)
 
@@ -421,8 +420,10 @@ class JournalBearing:
         wz[[0, -1]] *= 0.5
         return wz[:, None] * (self.geometry.radius * grid.d_theta)
 
-    def _integrate_force(self, grid: Grid, relative: np.ndarray) -> np.ndarray:
-        pressure = self._gauge(relative)
+    def _integrate_force(self, grid: Grid, relative: np.ndarray, gauge: bool = True) -> np.ndarray:
+        """Film force on the journal, N, from dimensionless pressures (a change of them when
+        ``gauge`` is False, which leaves out the constant cavitation-pressure offset)."""
+        pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
         weighted = pressure * self._weights()
         theta = grid.theta
         fy = -np.sum(weighted * np.cos(theta)[None, :])
@@ -446,10 +447,7 @@ class JournalBearing:
                 d_residual = d_residual + self._d_theta * self._d_z * d_rate
             changes.append(d_residual)
         d_pressure = solver.linear_response(evaluation.stencil, evaluation.solution, np.array(changes))
-        return [
-            self._integrate_force(evaluation.grid, dp) - self._integrate_force(evaluation.grid, 0.0 * dp)
-            for dp in d_pressure
-        ]
+        return [self._integrate_force(evaluation.grid, dp, gauge=False) for dp in d_pressure]
 
     def _position_jacobian(self, evaluation: _Evaluation) -> np.ndarray:
         """d(force)/d(ey, ez), N/m, with the active set frozen (exact for the Reynolds condition)."""

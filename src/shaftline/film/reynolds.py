@@ -366,12 +366,10 @@ class ReynoldsSolver:
         east = np.roll(node, -1, axis=1).ravel()
         cavitated = start.cavitated.copy()
         iterations = start.iterations
-        full_lower = None
+        upper = self.pattern.upper
         for _ in range(MAX_ACTIVE_SET_ITERATIONS):
             held = self.fixed | cavitated
             values, diag = self._masked_values(stencil, held)
-            if full_lower is None:
-                upper = self.pattern.upper
             matrix = sp.csc_matrix((values, upper.indices, upper.indptr), shape=(n, n))
             strict = sp.triu(matrix, k=1)
             symmetric = (matrix + strict.T).tocsr()
