@@ -98,3 +98,31 @@ def test_jfo_without_feed_is_refused():
     with pytest.raises(InputError) as error:
         JournalBearing(bearing_case.geometry, bearing_case.operating, bearing_case.options)
     assert error.value.field == "operation.cavitation_pressure"
+
+
+def test_film_profile_from_csv(tmp_path):
+    rows = ["theta_deg,z,delta"]
+    for z in (0.0, 100.0):
+        for theta in range(0, 360, 30):
+            rows.append(f"{theta},{z},{0.02 if theta == 180 else 0.0}")
+    (tmp_path / "wear.csv").write_text("\n".join(rows))
+    data = with_change("bearing.film_profile", {"file": "wear.csv", "length_unit": "mm"})
+    profile = parse_case(data, tmp_path).bearings[0].geometry.film_profile
+    assert profile.delta.shape == (2, 12)
+    assert profile.z[-1] == pytest.approx(0.1)
+    assert profile.delta.max() == pytest.approx(2e-5)
+
+
+@pytest.mark.parametrize(
+    "text, fragment",
+    [
+        ("theta_deg,z,delta\n0,0,0\n90,0,nan\n", "row 3, delta"),
+        ("theta_deg,z,delta\n0,0,0\n90,0,0\n0,1,0\n", "full grid"),
+        ("angle,z,delta\n0,0,0\n", "columns theta_deg, z, delta"),
+    ],
+)
+def test_bad_film_profile_csv(tmp_path, text, fragment):
+    (tmp_path / "wear.csv").write_text(text)
+    with pytest.raises(InputError) as error:
+        parse_case(with_change("bearing.film_profile", {"file": "wear.csv"}), tmp_path)
+    assert fragment in str(error.value)

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from shaftline.errors import InputError
-from shaftline.film import BearingGeometry, BentJournal, BoreSegment, Grid, JournalPosition, film_thickness
+from shaftline.film import BearingGeometry, BentJournal, BoreSegment, FilmProfile, Grid, JournalPosition, film_thickness
 
 GEOMETRY = BearingGeometry(length=1.0, diameter=0.5, radial_clearance=5e-4)
 GRID = Grid(1.0, 11, 36)
@@ -72,11 +72,25 @@ def test_negative_film_is_reported_not_clipped():
     assert h.min() == pytest.approx(-1e-4)
 
 
-def test_additive_profile():
-    wear = np.zeros(GRID.shape)
-    wear[:, 18] = 3e-5
-    geometry = BearingGeometry(1.0, 0.5, 5e-4, film_modification=wear)
-    assert np.allclose(film_thickness(geometry, GRID, JournalPosition()) - 5e-4, wear)
+def test_additive_profile_follows_the_grid():
+    """A wear scar given on its own table lands at the same bearing angle on any grid,
+    including one whose first node is rotated (grooves, film start at h_max)."""
+    theta = np.radians(np.arange(0, 360, 10.0))
+    scar = np.where(np.abs(theta - np.pi) < 0.3, 3e-5, 0.0)
+    profile = FilmProfile(theta=theta, z=[0.0, 1.0], delta=np.vstack([scar, scar]))
+    geometry = BearingGeometry(1.0, 0.5, 5e-4, film_profile=profile)
+    for start in (0.0, 0.7):
+        grid = Grid(1.0, 11, 36, theta_start=start)
+        added = film_thickness(geometry, grid, JournalPosition()) - 5e-4
+        expected = np.interp((grid.theta) % (2 * np.pi), np.append(theta, 2 * np.pi), np.append(scar, scar[0]))
+        assert np.allclose(added, expected[None, :])
+
+
+def test_additive_profile_interpolates_in_z():
+    profile = FilmProfile(theta=[0.0, np.pi], z=[0.0, 1.0], delta=[[0.0, 0.0], [2e-5, 2e-5]])
+    geometry = BearingGeometry(1.0, 0.5, 5e-4, film_profile=profile)
+    added = film_thickness(geometry, GRID, JournalPosition()) - 5e-4
+    assert np.allclose(added[:, 0], 2e-5 * GRID.z)
 
 
 @pytest.mark.parametrize(

@@ -37,8 +37,11 @@ def _field_name(location: tuple[Any, ...]) -> str:
     return name
 
 
-def parse_case(data: dict[str, Any]) -> Case:
-    """Validate a case given as a dict (as read from TOML) and convert it to SI."""
+def parse_case(data: dict[str, Any], base_dir: Path | None = None) -> Case:
+    """Validate a case given as a dict (as read from TOML) and convert it to SI.
+
+    Relative file names in the case are read from ``base_dir`` (default: the working folder).
+    """
     _find_nan(data)
     try:
         model = CaseIn.model_validate(data)
@@ -55,7 +58,7 @@ def parse_case(data: dict[str, Any]) -> Case:
         if isinstance(value, dict):
             value = "{...}"
         raise InputError(field, value, "", message.removeprefix("Value error, ")) from None
-    return build_case(model)
+    return build_case(model, base_dir)
 
 
 def load_case(path: str | Path) -> Case:
@@ -77,4 +80,4 @@ def load_case(path: str | Path) -> Case:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError("case file", str(path), "", f"valid TOML ({exc})") from None
-    return parse_case(data)
+    return parse_case(data, path.parent)

@@ -9,12 +9,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
 
 from pydantic import BaseModel, ConfigDict, model_validator
 
 from shaftline.errors import InputError
 from shaftline.film.bearing import OperatingPoint, SolverOptions, SupplyGroove
-from shaftline.film.geometry import BearingGeometry, BentJournal, BoreSegment
+from shaftline.film.geometry import BearingGeometry, BentJournal, BoreSegment, FilmProfile
 from shaftline.lubricants import Lubricant
 from shaftline.units import to_si
 
@@ -59,6 +62,11 @@ class BentJournalIn(_Strict):
     dz: list[Quantity] | None = None
 
 
+class FilmProfileIn(_Strict):
+    file: str
+    length_unit: str = "m"
+
+
 class BearingIn(_Strict):
     length: Quantity
     diameter: Quantity
@@ -68,6 +76,7 @@ class BearingIn(_Strict):
     bore_anchor: str = "fore"
     bore: list[BoreSegmentIn] = []
     bent_journal: BentJournalIn | None = None
+    film_profile: FilmProfileIn | None = None
 
     @model_validator(mode="after")
     def _one_clearance(self) -> BearingIn:
@@ -271,8 +280,41 @@ def _tilt(value: Quantity | None, ratio: float | None, field_name: str, length: 
     return to_si(value, "angle", field_name)
 
 
-def build_case(data: CaseIn) -> Case:
-    """Convert a validated case file into SI domain objects (raises :class:`InputError`)."""
+def read_film_profile(path: Path, length_unit: str = "m") -> FilmProfile:
+    """Read an additive film profile from CSV: columns ``theta_deg, z, delta``, one row per
+    point of a full regular grid (any order); z and delta in ``length_unit``."""
+    field_name = "bearing.film_profile.file"
+    scale = to_si(f"1 {length_unit}", "length", "bearing.film_profile.length_unit")
+    try:
+        table = np.genfromtxt(path, delimiter=",", names=True, dtype=float, encoding="utf-8")
+    except OSError:
+        raise InputError(field_name, str(path), "", "an existing CSV file") from None
+    except ValueError as exc:
+        raise InputError(field_name, str(path), "", f"a CSV of numbers ({exc})") from None
+    names = table.dtype.names or ()
+    if set(names) != {"theta_deg", "z", "delta"}:
+        raise InputError(field_name, str(path), "", "columns theta_deg, z, delta")
+    table = np.atleast_1d(table)
+    for column in names:
+        bad = np.flatnonzero(~np.isfinite(table[column]))
+        if bad.size:
+            raise InputError(f"{path.name}: row {int(bad[0]) + 2}, {column}", "NaN", "", "a number")
+    theta = np.unique(table["theta_deg"])
+    z = np.unique(table["z"])
+    if theta.size * z.size != table.size:
+        raise InputError(field_name, str(path), "", f"a full grid of {theta.size} angles x {z.size} stations")
+    delta = np.full((z.size, theta.size), np.nan)
+    delta[np.searchsorted(z, table["z"]), np.searchsorted(theta, table["theta_deg"])] = table["delta"]
+    if np.isnan(delta).any():
+        raise InputError(field_name, str(path), "", "each (theta_deg, z) pair exactly once")
+    return FilmProfile(theta=np.radians(theta), z=z * scale, delta=delta * scale)
+
+
+def build_case(data: CaseIn, base_dir: Path | None = None) -> Case:
+    """Convert a validated case file into SI domain objects (raises :class:`InputError`).
+
+    ``base_dir`` is the folder that relative file names in the case are read from.
+    """
     b = data.bearing
     length = to_si(b.length, "length", "bearing.length")
     diameter = to_si(b.diameter, "length", "bearing.diameter")
@@ -297,6 +339,12 @@ def build_case(data: CaseIn) -> Case:
         dy = [to_si(v, "length", f"bearing.bent_journal.dy[{k}]") for k, v in enumerate(bj.dy)]
         dz = [to_si(v, "length", f"bearing.bent_journal.dz[{k}]") for k, v in enumerate(bj.dz)] if bj.dz else None
         bent = BentJournal(z=z, dy=dy, dz=dz if dz is not None else [0.0] * len(z))
+    profile = None
+    if b.film_profile is not None:
+        profile_path = Path(b.film_profile.file)
+        if not profile_path.is_absolute():
+            profile_path = (base_dir or Path.cwd()) / profile_path
+        profile = read_film_profile(profile_path, b.film_profile.length_unit)
     geometry = BearingGeometry(
         length=length,
         diameter=diameter,
@@ -304,6 +352,7 @@ def build_case(data: CaseIn) -> Case:
         bore=_bore(b.bore, "bearing.bore", length, clearance),
         bore_anchor=b.bore_anchor,
         bent_journal=bent,
+        film_profile=profile,
         rotation=rotation,
     )
     op = data.operation
@@ -378,6 +427,7 @@ def build_case(data: CaseIn) -> Case:
                 bore=_bore(variant.bore, f"variants[{k}].bore", length, clearance),
                 bore_anchor=b.bore_anchor,
                 bent_journal=bent,
+                film_profile=profile,
                 rotation=rotation,
             )
         new_tilt = tilt_y

@@ -318,10 +318,6 @@ class JournalBearing:
         self.operating = operating
         self.options = options or SolverOptions()
         grid = Grid(geometry.length, self.options.axial_nodes, self.options.circumferential_nodes)
-        if geometry.film_modification is not None and np.shape(geometry.film_modification) != grid.shape:
-            raise InputError(
-                "bearing.film_modification", str(np.shape(geometry.film_modification)), "", f"shape {grid.shape}"
-            )
         if self.options.cavitation == "jfo":
             feed = max(operating.aft_pressure, operating.fore_pressure, *(g.pressure for g in operating.grooves))
             if feed <= operating.cavitation_pressure:

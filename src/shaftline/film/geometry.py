@@ -88,6 +88,60 @@ class BentJournal:
 
 
 @dataclass(frozen=True)
+class FilmProfile:
+    """An additive film change delta(theta, z) given on its own table (wear, bore errors).
+
+    Attributes
+    ----------
+    theta : ndarray (m,)
+        Bearing angles of the table, rad, increasing within one turn.
+    z : ndarray (n,)
+        Axial stations from the aft edge, m, increasing.
+    delta : ndarray (n, m)
+        Film change at those points, m (positive opens the clearance, e.g. wear).
+
+    It is interpolated linearly, periodically in theta and held constant beyond the
+    end stations in z, so it follows the grid wherever the grid's angles start.
+    """
+
+    theta: np.ndarray
+    z: np.ndarray
+    delta: np.ndarray
+
+    def __post_init__(self) -> None:
+        theta = np.asarray(self.theta, dtype=float)
+        z = np.asarray(self.z, dtype=float)
+        delta = np.asarray(self.delta, dtype=float)
+        if theta.ndim != 1 or theta.size < 2 or np.any(np.diff(theta) <= 0) or theta[-1] - theta[0] >= 2 * np.pi:
+            raise InputError("bearing.film_profile.theta", theta.size, "rad", "increasing angles within one turn")
+        if z.ndim != 1 or z.size < 1 or np.any(np.diff(z) <= 0):
+            raise InputError("bearing.film_profile.z", z.size, "m", "increasing stations")
+        if delta.shape != (z.size, theta.size):
+            raise InputError("bearing.film_profile.delta", str(delta.shape), "m", f"shape {(z.size, theta.size)}")
+        if not np.all(np.isfinite(delta)):
+            raise InputError("bearing.film_profile.delta", "NaN", "m", "finite values")
+        object.__setattr__(self, "theta", theta)
+        object.__setattr__(self, "z", z)
+        object.__setattr__(self, "delta", delta)
+
+    def on(self, theta: np.ndarray, z: np.ndarray) -> np.ndarray:
+        """The profile at grid angles ``theta`` (rad) and stations ``z`` (m), shape (z, theta)."""
+        # Linear in z (clamped), then periodic linear in theta.
+        if self.z.size == 1:
+            rows = np.repeat(self.delta, z.size, axis=0)
+        else:
+            position = np.clip(np.interp(z, self.z, np.arange(self.z.size)), 0, self.z.size - 1)
+            lower = np.minimum(np.floor(position).astype(int), self.z.size - 2)
+            weight = position - lower
+            rows = self.delta[lower] * (1 - weight)[:, None] + self.delta[lower + 1] * weight[:, None]
+        period = 2 * np.pi
+        table_theta = np.concatenate([self.theta, [self.theta[0] + period]])
+        table = np.concatenate([rows, rows[:, :1]], axis=1)
+        wrapped = (theta - self.theta[0]) % period + self.theta[0]
+        return np.stack([np.interp(wrapped, table_theta, row) for row in table])
+
+
+@dataclass(frozen=True)
 class BearingGeometry:
     """Geometry of a plain (optionally slope-bored) journal bearing.
 
@@ -107,9 +161,8 @@ class BearingGeometry:
         machined lower), ``"aft"`` or ``"mid"``.
     bent_journal : BentJournal or None
         Offsets of a bent journal centre line.
-    film_modification : ndarray or None
-        Additive film change delta(theta, z), m, on the solver grid
-        (``axial_nodes x circumferential_nodes``), e.g. wear or bore errors.
+    film_profile : FilmProfile or None
+        Additive film change delta(theta, z), e.g. wear or bore errors.
     rotation : int
         +1 for a shaft turning clockwise seen from aft, -1 for anticlockwise.
     """
@@ -120,7 +173,7 @@ class BearingGeometry:
     bore: tuple[BoreSegment, ...] = ()
     bore_anchor: str = "fore"
     bent_journal: BentJournal | None = None
-    film_modification: np.ndarray | None = field(default=None, repr=False)
+    film_profile: FilmProfile | None = field(default=None, repr=False)
     rotation: int = 1
 
     def __post_init__(self) -> None:
@@ -308,15 +361,8 @@ def film_thickness(geometry: BearingGeometry, grid: Grid, position: JournalPosit
     h = geometry.radial_clearance - (
         oy[:, None] * np.cos(theta)[None, :] + geometry.rotation * oz[:, None] * np.sin(theta)[None, :]
     )
-    if geometry.film_modification is not None:
-        modification = np.asarray(geometry.film_modification, dtype=float)
-        if modification.shape != grid.shape:
-            raise InputError(
-                "bearing.film_modification", str(modification.shape), "", f"an array of shape {grid.shape}"
-            )
-        if not np.all(np.isfinite(modification)):
-            raise InputError("bearing.film_modification", "NaN", "m", "finite values")
-        h = h + modification
+    if geometry.film_profile is not None:
+        h = h + geometry.film_profile.on(theta, grid.z)
     return h
 
 
