@@ -12,7 +12,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-
 from pydantic import BaseModel, ConfigDict, model_validator
 
 from shaftline.errors import InputError
