@@ -1,0 +1,485 @@
+"""Shaft alignment: elastic line, bearing reactions, slopes and influence coefficients.
+
+Formulation (docs/theory.md, "Shaft alignment"): the shaft is pinned at two
+reference support points, which makes its stiffness non-singular; ``F`` is the
+flexibility at all support points for self-equilibrated loads. The reactions
+``lambda >= 0`` (bottom contact, upwards; top contact, downwards, after the
+vertical clearance) solve the convex quadratic programme
+
+    min 1/2 lambda' (D' F D + C) lambda + (D' (u0 - o) + g)' lambda
+    s.t. lambda >= 0 (one-sided),  sum of forces = 0,  sum of moments = 0,
+
+whose optimality conditions are the contact conditions (gap >= 0, reaction >= 0,
+gap * reaction = 0); the multipliers of the two equilibrium equations are the
+rigid-body line (a + b x) added to the pinned deflection. ``C`` holds the
+support compliances (bearing and foundation). The primal active-set method
+(Nocedal & Wright 2006, Alg. 16.3) solves it exactly in a finite number of steps.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import linprog
+
+from shaftline.errors import InputError
+from shaftline.shaft.fem import Mesh, PinnedBeam, build_mesh, uniform_load_vector
+from shaftline.shaft.model import Condition, ShaftLine
+
+
+@dataclass(frozen=True)
+class SupportPoints:
+    """All support points of the line, in the order of the bearings.
+
+    Attributes
+    ----------
+    x : ndarray (m,)
+        Stations, m.
+    bearing : ndarray of int (m,)
+        Index of the bearing each point belongs to.
+    compliance : ndarray (m,)
+        1 / stiffness, m/N (0 for rigid).
+    clearance : ndarray (m,)
+        Vertical travel to the top of the bore, m (inf: no top contact).
+    one_sided : ndarray of bool (m,)
+    node : ndarray of int (m,)
+        Mesh node of each point.
+    """
+
+    x: np.ndarray
+    bearing: np.ndarray
+    compliance: np.ndarray
+    clearance: np.ndarray
+    one_sided: np.ndarray
+    node: np.ndarray
+
+
+@dataclass(frozen=True)
+class BearingResult:
+    """Result at one bearing in one condition (SI; slopes in rad).
+
+    Attributes
+    ----------
+    name : str
+    reaction_y, reaction_z : float
+        Support force on the shaft, N (+ up / + starboard).
+    mean_pressure : float
+        |reaction_y| / (L D), Pa.
+    contact : str
+        ``"bottom"``, ``"top"``, ``"partial"`` (multi-point) or ``"lifted"``.
+    shaft_slope : float
+        Slope of the shaft across the bearing, (v_fore - v_aft) / L.
+    shaft_slope_at_support : float
+        Tangent slope of the shaft at the (first) support point.
+    relative_slope : float
+        Shaft slope across the bearing less the bearing's own slope (slope boring).
+    point_reactions : ndarray
+        Reactions of the individual support points, N.
+    """
+
+    name: str
+    reaction_y: float
+    reaction_z: float
+    mean_pressure: float
+    contact: str
+    shaft_slope: float
+    shaft_slope_at_support: float
+    relative_slope: float
+    point_reactions: np.ndarray
+
+
+@dataclass(frozen=True)
+class ConditionResult:
+    """Elastic line and bearing results of one condition.
+
+    Attributes
+    ----------
+    name : str
+    x : ndarray (n,)
+        Node stations, m.
+    deflection_y, deflection_z : ndarray (n,)
+        Elastic line, m.
+    rotation_y, rotation_z : ndarray (n,)
+        Section rotations in the vertical and horizontal planes, rad.
+    moment_y, moment_z : ndarray (n,)
+        Bending moments in the vertical and horizontal planes, N m (+ sagging:
+        tension at the bottom / at port). Averaged at nodes where a point load
+        makes them jump (use ``element_moment_y`` for the two sides).
+    shear_y : ndarray (n,)
+        Shear force in the vertical plane, N.
+    stress : ndarray (n,)
+        Largest bending stress of the combined moment, Pa.
+    element_moment_y : ndarray (n-1, 2)
+        Vertical-plane moment at both ends of each element, N m.
+    bearings : list of BearingResult
+    iterations : int
+        Active-set iterations of the contact solution.
+    """
+
+    name: str
+    x: np.ndarray
+    deflection_y: np.ndarray
+    deflection_z: np.ndarray
+    rotation_y: np.ndarray
+    rotation_z: np.ndarray
+    moment_y: np.ndarray
+    moment_z: np.ndarray
+    shear_y: np.ndarray
+    stress: np.ndarray
+    element_moment_y: np.ndarray
+    bearings: list[BearingResult]
+    iterations: int
+
+    def bearing(self, name: str) -> BearingResult:
+        for result in self.bearings:
+            if result.name == name:
+                return result
+        raise KeyError(name)
+
+
+@dataclass(frozen=True)
+class InfluenceMatrix:
+    """Reaction change at each bearing per unit vertical offset of each bearing.
+
+    Attributes
+    ----------
+    names : list of str
+    matrix : ndarray (b, b)
+        ``matrix[i, j]`` = d reaction_i / d offset_j, N/m, all supports in contact.
+    """
+
+    names: list[str]
+    matrix: np.ndarray
+
+
+class AlignmentModel:
+    """The finite-element model of a shaft line, built once for all conditions.
+
+    Examples
+    --------
+    >>> from shaftline.shaft import AlignmentModel, Bearing, ShaftLine, ShaftSegment
+    >>> line = ShaftLine(
+    ...     segments=(ShaftSegment(length=12.0, outer_diameter=0.5),),
+    ...     bearings=(Bearing("aft", 1.0, 0.5), Bearing("mid", 6.0, 0.4), Bearing("fwd", 11.0, 0.4)),
+    ... )
+    >>> result = AlignmentModel(line).solve()[0]
+    >>> round(sum(b.reaction_y for b in result.bearings) / 1e3, 1)  # carries its own weight, kN
+    181.4
+    """
+
+    def __init__(self, line: ShaftLine) -> None:
+        self.line = line
+        diameters = [line.outer_diameter_at(b.x) for b in line.bearings]
+        per_bearing = [b.support_points(d) for b, d in zip(line.bearings, diameters, strict=True)]
+        stations = [np.concatenate(per_bearing)]
+        for bearing in line.bearings:
+            stations.append(np.array([bearing.x - 0.5 * bearing.length, bearing.x + 0.5 * bearing.length, bearing.x]))
+        stations.append(np.array([p.x for p in line.point_loads] + [m.x for m in line.masses]))
+        stations.append(
+            np.array([d.x_start for d in line.distributed_loads] + [d.x_end for d in line.distributed_loads])
+        )
+        for condition in line.all_conditions():
+            stations.append(np.array([p.x for p in condition.loads]))
+        if line.propeller is not None:
+            stations.append(np.array([max(line.propeller.x, 0.0)]))
+        self.mesh: Mesh = build_mesh(line, np.concatenate(stations))
+        x_points = np.concatenate(per_bearing)
+        owner = np.concatenate([np.full(p.size, k) for k, p in enumerate(per_bearing)])
+        compliance = []
+        for bearing, points in zip(line.bearings, per_bearing, strict=True):
+            stiffness = bearing.stiffness if bearing.support != "point" else math.inf
+            compliance.append(np.full(points.size, 0.0 if math.isinf(stiffness) else 1.0 / stiffness))
+        self.supports = SupportPoints(
+            x=x_points,
+            bearing=owner,
+            compliance=np.concatenate(compliance),
+            clearance=np.array([line.bearings[k].vertical_clearance for k in owner]),
+            one_sided=np.array([line.bearings[k].one_sided for k in owner]),
+            node=self.mesh.node_at(x_points),
+        )
+        order = np.argsort(x_points)
+        self._pins = (int(self.supports.node[order[0]]), int(self.supports.node[order[-1]]))
+        if self._pins[0] == self._pins[1]:
+            raise InputError("bearings", len(line.bearings), "", "supports at two different stations at least")
+        self.beam = PinnedBeam(self.mesh, (2 * self._pins[0], 2 * self._pins[1]))
+        unit = np.zeros((2 * self.mesh.nodes, x_points.size))
+        unit[2 * self.supports.node, np.arange(x_points.size)] = 1.0
+        response = self.beam.solve(unit)
+        self.flexibility = response[2 * self.supports.node]
+        self._unit_response = response
+        self._uniform = -self.mesh.weight_per_length
+
+    # -- loads ---------------------------------------------------------------------------
+    def _loads(self, condition: Condition) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Nodal force vectors (vertical, horizontal) and uniform loads per element (vertical, horizontal)."""
+        line, mesh = self.line, self.mesh
+        vertical = self._uniform.copy()
+        horizontal = np.zeros(mesh.nodes - 1)
+        middle = 0.5 * (mesh.x[:-1] + mesh.x[1:])
+        for load in line.distributed_loads:
+            inside = (middle > load.x_start) & (middle < load.x_end)
+            vertical[inside] += load.load_y
+            horizontal[inside] += load.load_z
+        fy = uniform_load_vector(mesh, vertical)
+        fz = uniform_load_vector(mesh, horizontal)
+        for load in (*line.point_loads, *condition.loads):
+            node = int(mesh.node_at(load.x))
+            fy[2 * node] += load.force_y
+            fy[2 * node + 1] += load.moment_vertical
+            fz[2 * node] += load.force_z
+            fz[2 * node + 1] += load.moment_horizontal
+        for mass in line.masses:
+            fy[2 * int(mesh.node_at(mass.x))] -= mass.mass * line.gravity
+        propeller = line.propeller
+        if propeller is not None:
+            weight = propeller.weight(condition.propeller_immersion, line.gravity)
+            node = int(mesh.node_at(max(propeller.x, 0.0)))
+            fy[2 * node] -= weight
+            # A centre of gravity beyond the aft end acts on the end node with its lever arm.
+            fy[2 * node + 1] += (propeller.x - mesh.x[node]) * -weight
+        return fy, fz, vertical, horizontal
+
+    def _offsets(self, condition: Condition) -> tuple[np.ndarray, np.ndarray]:
+        line, supports = self.line, self.supports
+        oy = np.empty(supports.x.size)
+        oz = np.empty(supports.x.size)
+        for k, bearing in enumerate(line.bearings):
+            pick = supports.bearing == k
+            arm = supports.x[pick] - bearing.x
+            oy[pick] = bearing.offset_y + condition.offsets_y.get(bearing.name, 0.0) + bearing.slope * arm
+            oz[pick] = bearing.offset_z + condition.offsets_z.get(bearing.name, 0.0)
+        return oy, oz
+
+    # -- solution ----------------------------------------------------------------------
+    def solve(self, conditions: tuple[Condition, ...] | None = None) -> list[ConditionResult]:
+        """Solve every condition of the line (or the given ones)."""
+        return [self.solve_condition(c) for c in (conditions or self.line.all_conditions())]
+
+    def solve_condition(self, condition: Condition) -> ConditionResult:
+        mesh, supports = self.mesh, self.supports
+        fy, fz, uniform_y, uniform_z = self._loads(condition)
+        oy, oz = self._offsets(condition)
+        reactions_y, rigid_y, iterations, state = self._contact(fy, oy, vertical=True)
+        reactions_z, rigid_z, _, _ = self._contact(fz, oz, vertical=False)
+        line_y = self._elastic_line(fy, reactions_y, rigid_y)
+        line_z = self._elastic_line(fz, reactions_z, rigid_z)
+        forces_y = self.beam.end_forces(line_y, uniform_y)
+        forces_z = self.beam.end_forces(line_z, uniform_z)
+        element_moment_y = np.stack([-forces_y[:, 1], forces_y[:, 3]], axis=1)
+        moment_y = _node_average(element_moment_y, mesh.nodes)
+        moment_z = _node_average(np.stack([-forces_z[:, 1], forces_z[:, 3]], axis=1), mesh.nodes)
+        shear_y = _node_average(np.stack([forces_y[:, 0], -forces_y[:, 2]], axis=1), mesh.nodes)
+        inertia_modulus = self._section_modulus()
+        stress = np.hypot(moment_y, moment_z) / inertia_modulus
+        v, rot_y = line_y[0::2], line_y[1::2]
+        w, rot_z = line_z[0::2], line_z[1::2]
+        bearings = []
+        for k, bearing in enumerate(self.line.bearings):
+            pick = supports.bearing == k
+            ry = float(reactions_y[pick].sum())
+            rz = float(reactions_z[pick].sum())
+            states = state[pick]
+            if np.all(states == "bottom"):
+                contact = "bottom"
+            elif np.all(states == "top"):
+                contact = "top"
+            elif np.all(states == "lifted"):
+                contact = "lifted"
+            else:
+                contact = "partial"
+            aft = np.interp(bearing.x - 0.5 * bearing.length, mesh.x, v)
+            fore = np.interp(bearing.x + 0.5 * bearing.length, mesh.x, v)
+            slope = (fore - aft) / bearing.length
+            node = int(supports.node[np.flatnonzero(pick)[0]])
+            diameter = self.line.outer_diameter_at(bearing.x)
+            bearings.append(
+                BearingResult(
+                    name=bearing.name,
+                    reaction_y=ry,
+                    reaction_z=rz,
+                    mean_pressure=abs(ry) / (bearing.length * diameter),
+                    contact=contact,
+                    shaft_slope=float(slope),
+                    shaft_slope_at_support=float(rot_y[node]),
+                    relative_slope=float(slope - bearing.slope),
+                    point_reactions=reactions_y[pick],
+                )
+            )
+        return ConditionResult(
+            name=condition.name,
+            x=mesh.x,
+            deflection_y=v,
+            deflection_z=w,
+            rotation_y=rot_y,
+            rotation_z=rot_z,
+            moment_y=moment_y,
+            moment_z=moment_z,
+            shear_y=shear_y,
+            stress=stress,
+            element_moment_y=element_moment_y,
+            bearings=bearings,
+            iterations=iterations,
+        )
+
+    def _section_modulus(self) -> np.ndarray:
+        """I / (D/2) at the nodes, the smaller of the two neighbouring elements (conservative)."""
+        mesh = self.mesh
+        modulus = mesh.inertia / (0.5 * mesh.outer_diameter)
+        node = np.empty(mesh.nodes)
+        node[0], node[-1] = modulus[0], modulus[-1]
+        node[1:-1] = np.minimum(modulus[:-1], modulus[1:])
+        return node
+
+    def _elastic_line(self, forces: np.ndarray, reactions: np.ndarray, rigid: np.ndarray) -> np.ndarray:
+        total = forces.copy()
+        np.add.at(total, 2 * self.supports.node, reactions)
+        u = self.beam.solve(total)
+        u[0::2] += rigid[0] + rigid[1] * self.mesh.x
+        u[1::2] += rigid[1]
+        return u
+
+    def _contact(self, forces: np.ndarray, offsets: np.ndarray, vertical: bool):
+        """Support reactions (per point), rigid line (a, b), iterations and contact states."""
+        supports = self.supports
+        m = supports.x.size
+        u0 = self.beam.solve(forces)[2 * supports.node]
+        total_force = float(forces[0::2].sum())
+        total_moment = float((forces[0::2] * self.mesh.x).sum() + forces[1::2].sum())
+        if vertical:
+            top = np.flatnonzero(supports.one_sided & np.isfinite(supports.clearance))
+            columns = np.concatenate([np.eye(m), -np.eye(m)[:, top]], axis=1)
+            gap_offset = np.concatenate([np.zeros(m), supports.clearance[top]])
+            compliance = np.concatenate([supports.compliance, supports.compliance[top]])
+            bounded = np.concatenate([supports.one_sided, np.ones(top.size, bool)])
+        else:  # horizontal: two-sided supports, the clearance is not modelled
+            columns = np.eye(m)
+            gap_offset = np.zeros(m)
+            compliance = supports.compliance.copy()
+            bounded = np.zeros(m, bool)
+        hessian = columns.T @ self.flexibility @ columns + np.diag(compliance)
+        linear = columns.T @ (u0 - offsets) + gap_offset
+        equality = np.vstack([columns.sum(axis=0), supports.x @ columns])
+        target = np.array([-total_force, -total_moment])
+        solution, multipliers, iterations = active_set_qp(hessian, linear, equality, target, bounded)
+        reactions = columns @ solution
+        state = np.full(m, "bottom", dtype=object)
+        if vertical:
+            lifted = supports.one_sided & (solution[:m] <= 0.0)
+            state[lifted] = "lifted"
+            if top.size:
+                state[top[solution[m:] > 0.0]] = "top"
+        return reactions, multipliers, iterations, state
+
+    # -- influence coefficients ---------------------------------------------------------
+    def influence_matrix(self) -> InfluenceMatrix:
+        """d reaction_i / d offset_j for the bearings, all support points in contact (linear model)."""
+        supports = self.supports
+        m = supports.x.size
+        hessian = self.flexibility + np.diag(supports.compliance)
+        equality = np.vstack([np.ones(m), supports.x])
+        kkt = np.block([[hessian, equality.T], [equality, np.zeros((2, 2))]])
+        # d lambda / d offsets: the right-hand side of the stationarity rows is + offsets.
+        rhs = np.vstack([np.eye(m), np.zeros((2, m))])
+        per_point = np.linalg.solve(kkt, rhs)[:m]
+        grouping = np.zeros((m, len(self.line.bearings)))
+        grouping[np.arange(m), supports.bearing] = 1.0
+        matrix = grouping.T @ per_point @ grouping
+        return InfluenceMatrix(names=[b.name for b in self.line.bearings], matrix=0.5 * (matrix + matrix.T))
+
+
+def _top_columns(equality: np.ndarray) -> np.ndarray:
+    """Columns that push the shaft down (top-of-bore contacts): negative in the force row."""
+    return equality[0] < 0
+
+
+def _node_average(ends: np.ndarray, nodes: int) -> np.ndarray:
+    out = np.zeros(nodes)
+    count = np.zeros(nodes)
+    np.add.at(out, np.arange(nodes - 1), ends[:, 0])
+    np.add.at(count, np.arange(nodes - 1), 1)
+    np.add.at(out, np.arange(1, nodes), ends[:, 1])
+    np.add.at(count, np.arange(1, nodes), 1)
+    return out / count
+
+
+def active_set_qp(
+    hessian: np.ndarray, linear: np.ndarray, equality: np.ndarray, target: np.ndarray, bounded: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, int]:
+    """Solve min 1/2 x'Hx + c'x s.t. E x = t, x_i >= 0 for bounded i (H positive semi-definite).
+
+    Primal active-set method (Nocedal & Wright 2006, Alg. 16.3) from a feasible point found
+    by linear programming. Each step either adds the blocking bound or drops the bound with
+    the most negative multiplier; with the objective strictly decreasing between working
+    sets no working set repeats, so the iteration ends in finitely many steps.
+
+    Returns
+    -------
+    x, equality multipliers (E'mu enters the stationarity as + E'mu), iterations.
+    """
+    n = linear.size
+    scale = max(float(np.abs(np.diag(hessian)).max()), 1e-300)
+    hessian = hessian + 1e-12 * scale * np.eye(n)
+    rows = equality.shape[0]
+    # Usual case first: every bottom contact closed, every top contact open. If that
+    # equality-constrained solution has no negative reaction and no penetration it is optimal.
+    guess = ~bounded | (np.arange(n) < n - np.count_nonzero(_top_columns(equality)))
+    kkt = np.block(
+        [[hessian[np.ix_(guess, guess)], equality[:, guess].T], [equality[:, guess], np.zeros((rows, rows))]]
+    )
+    try:
+        solved = np.linalg.solve(kkt, np.concatenate([-linear[guess], target]))
+    except np.linalg.LinAlgError:
+        solved = None
+    if solved is not None:
+        x = np.zeros(n)
+        x[guess] = solved[: guess.sum()]
+        mu = solved[guess.sum() :]
+        gaps = hessian @ x + linear + equality.T @ mu
+        if np.all(x[bounded] >= 0.0) and np.all(gaps[~guess] >= -1e-12):
+            return x, mu, 1
+    bounds = [(0.0, None) if b else (None, None) for b in bounded]
+    start = linprog(np.zeros(n), A_eq=equality, b_eq=target, bounds=bounds, method="highs")
+    if start.status != 0:
+        raise InputError("bearings", "supports", "", "supports that can carry the loads (the line tips over)")
+    x = np.where(bounded, np.maximum(start.x, 0.0), start.x)
+    working = bounded & (x <= 1e-12 * max(1.0, float(np.abs(x).max())))
+    x[working] = 0.0
+    force_scale = max(1.0, float(np.abs(target).max()))
+    # Multipliers of the bounds are gaps (m): a penetration below 1e-12 m is round-off.
+    gap_tolerance = 1e-12
+    for iteration in range(1, 20 * n + 50):
+        free = ~working
+        g = hessian @ x + linear
+        kkt = np.block(
+            [
+                [hessian[np.ix_(free, free)], equality[:, free].T],
+                [equality[:, free], np.zeros((equality.shape[0],) * 2)],
+            ]
+        )
+        rhs = np.concatenate([-g[free], np.zeros(equality.shape[0])])
+        step_and_mu = np.linalg.lstsq(kkt, rhs, rcond=None)[0]
+        step = np.zeros(n)
+        step[free] = step_and_mu[: free.sum()]
+        mu = step_and_mu[free.sum() :]
+        if np.abs(step).max() <= 1e-11 * force_scale:
+            multipliers_bound = g + equality.T @ mu
+            candidates = np.flatnonzero(working & (multipliers_bound < -gap_tolerance))
+            if candidates.size == 0:
+                return x, mu, iteration
+            drop = candidates[np.argmin(multipliers_bound[candidates])]
+            working[drop] = False
+            continue
+        blocking = free & bounded & (step < 0)
+        alpha, block = 1.0, -1
+        if blocking.any():
+            ratios = -x[blocking] / step[blocking]
+            k = int(np.argmin(ratios))
+            if ratios[k] < 1.0:
+                alpha, block = float(ratios[k]), int(np.flatnonzero(blocking)[k])
+        x = x + alpha * step
+        if block >= 0:
+            x[block] = 0.0
+            working[block] = True
+    raise RuntimeError("alignment contact iteration did not terminate")  # pragma: no cover
