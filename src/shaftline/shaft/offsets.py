@@ -1,0 +1,205 @@
+"""Bearing offsets: an alignment that meets the rules in every condition, and the offsets
+behind measured reactions ("reverse engineering").
+
+Optimisation: reactions and the aft-bearing slope are linear in the offsets while the
+contact state holds, so the design is a linear programme (scipy's HiGHS): minimise the
+largest aft-bearing relative slope over the conditions (or the largest
+departure of a load ratio from 1), subject to every reaction above its minimum and every mean pressure below
+its limit in every condition, offsets within bounds. The linearisation is taken at the
+current contact state; the plan is re-solved with the full one-sided model and
+re-linearised until the contact state settles.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+from scipy.optimize import linprog
+
+from shaftline.errors import InputError
+from shaftline.shaft.alignment import AlignmentModel, ConditionResult
+from shaftline.shaft.model import Condition
+from shaftline.shaft.rules import Rule, weight_shares
+
+#: ``aft_slope``: the largest relative slope in the aft stern-tube bearing over the conditions;
+#: ``load_spread``: the largest departure of a load ratio (reaction / straight-line weight
+#: share of the bearing) from 1.
+OBJECTIVES = ("aft_slope", "load_spread")
+
+
+@dataclass(frozen=True)
+class OffsetPlan:
+    """Offsets found by :func:`optimise_offsets`.
+
+    Attributes
+    ----------
+    offsets : dict
+        Added vertical offset per bearing, m.
+    results : list of ConditionResult
+        The conditions solved with these offsets (full one-sided model).
+    objective : float
+        Largest aft-bearing relative slope (rad) or load-ratio departure (-).
+    iterations : int
+        Linearise-and-solve rounds.
+    """
+
+    offsets: dict[str, float]
+    results: list[ConditionResult]
+    objective: float
+    iterations: int
+
+
+def _with_offsets(condition: Condition, offsets: dict[str, float]) -> Condition:
+    merged = dict(condition.offsets_y)
+    for name, value in offsets.items():
+        merged[name] = merged.get(name, 0.0) + value
+    return replace(condition, offsets_y=merged)
+
+
+def _limits(model: AlignmentModel, rules: list[Rule]) -> tuple[np.ndarray, np.ndarray]:
+    """Smallest and largest admissible reaction per bearing, N, from the rules."""
+    line = model.line
+    shares = weight_shares(model)
+    low = np.zeros(len(line.bearings))
+    high = np.full(len(line.bearings), np.inf)
+    for k, bearing in enumerate(line.bearings):
+        area = bearing.length * line.outer_diameter_at(bearing.x)
+        for rule in rules:
+            if rule.applies_to not in ("all", bearing.material):
+                continue
+            if rule.quantity == "reaction" and rule.comparison in (">", ">="):
+                low[k] = max(low[k], rule.limit)
+            elif rule.quantity == "reaction_share" and rule.comparison in (">", ">="):
+                low[k] = max(low[k], rule.limit * shares[k])
+            elif rule.quantity == "mean_pressure" and rule.comparison in ("<", "<="):
+                high[k] = min(high[k], rule.limit * area)
+    return low, high
+
+
+def optimise_offsets(
+    model: AlignmentModel,
+    rules: list[Rule],
+    adjustable: list[str] | None = None,
+    objective: str = "aft_slope",
+    bound: float = 5e-3,
+    max_rounds: int = 6,
+) -> OffsetPlan:
+    """Offsets of the ``adjustable`` bearings (default: all but the aft- and forward-most)."""
+    line = model.line
+    names = [b.name for b in line.bearings]
+    if objective not in OBJECTIVES:
+        raise InputError("alignment.optimise.objective", objective, "", "one of " + ", ".join(OBJECTIVES))
+    if adjustable is None:
+        ordered = sorted(line.bearings, key=lambda b: b.x)
+        adjustable = [b.name for b in ordered[1:-1]]
+    for name in adjustable:
+        if name not in names:
+            raise InputError("alignment.optimise.adjustable", name, "", "bearing names: " + ", ".join(names))
+    if not adjustable:
+        raise InputError("alignment.optimise.adjustable", "[]", "", "at least one adjustable bearing")
+    conditions = line.all_conditions()
+    low, high = _limits(model, rules)
+    # Plan with a small margin inside the limits so round-off cannot fail the checks.
+    low = low + 1e-6 * np.abs(low) + 1.0
+    high = high - 1e-6 * np.abs(high)
+    aft_index = names.index(min(line.bearings, key=lambda b: b.x).name)
+    shares = weight_shares(model)
+    offsets = np.zeros(len(adjustable))
+    step = 1e-5
+    for rounds in range(1, max_rounds + 1):
+        rows_a, rows_b, slope_rows, slope_rhs, use_rows, use_rhs = [], [], [], [], [], []
+        states = []
+        for condition in conditions:
+            current = _with_offsets(condition, dict(zip(adjustable, offsets, strict=True)))
+            base = model.solve_condition(current)
+            states.append([b.contact for b in base.bearings])
+            reactions = np.array([b.reaction_y for b in base.bearings])
+            slope = base.bearings[aft_index].relative_slope
+            jac_r = np.empty((len(names), len(adjustable)))
+            jac_s = np.empty(len(adjustable))
+            for j, name in enumerate(adjustable):
+                moved = model.solve_condition(_with_offsets(current, {name: step}))
+                jac_r[:, j] = (np.array([b.reaction_y for b in moved.bearings]) - reactions) / step
+                jac_s[j] = (moved.bearings[aft_index].relative_slope - slope) / step
+            # low <= R + J d <= high  ->  -J d <= R - low ;  J d <= high - R   (d = change from current)
+            rows_a.append(-jac_r)
+            rows_b.append(reactions - low)
+            finite = np.isfinite(high)
+            rows_a.append(jac_r[finite])
+            rows_b.append(high[finite] - reactions[finite])
+            slope_rows.append(jac_s)
+            slope_rhs.append(slope)
+            use_rows.append(jac_r / shares[:, None])
+            use_rhs.append(reactions / shares - 1.0)
+        n = len(adjustable)
+        # variables: d (n), t
+        c = np.zeros(n + 1)
+        c[-1] = 1.0
+        a_ub = [np.hstack([np.vstack(rows_a), np.zeros((sum(len(r) for r in rows_b), 1))])]
+        b_ub = [np.concatenate(rows_b)]
+        if objective == "aft_slope":
+            for row, value in zip(slope_rows, slope_rhs, strict=True):
+                a_ub.append(np.concatenate([row, [-1.0]])[None, :])
+                b_ub.append([-value])
+                a_ub.append(np.concatenate([-row, [-1.0]])[None, :])
+                b_ub.append([value])
+        else:  # -t <= ratio - 1 + J d / share <= t
+            for rows, values in zip(use_rows, use_rhs, strict=True):
+                a_ub.append(np.hstack([rows, -np.ones((rows.shape[0], 1))]))
+                b_ub.append(-values)
+                a_ub.append(np.hstack([-rows, -np.ones((rows.shape[0], 1))]))
+                b_ub.append(values)
+        bounds = [(-bound - o, bound - o) for o in offsets] + [(0.0, None)]
+        solution = linprog(c, A_ub=np.vstack(a_ub), b_ub=np.concatenate(b_ub), bounds=bounds, method="highs")
+        if solution.status != 0:
+            raise InputError(
+                "alignment.optimise",
+                objective,
+                "",
+                "rule limits that some offsets within the bounds can meet in every condition",
+            )
+        offsets = offsets + solution.x[:n]
+        results = [
+            model.solve_condition(_with_offsets(c, dict(zip(adjustable, offsets, strict=True)))) for c in conditions
+        ]
+        new_states = [[b.contact for b in r.bearings] for r in results]
+        if new_states == states:
+            break
+    if objective == "aft_slope":
+        value = max(abs(r.bearings[aft_index].relative_slope) for r in results)
+    else:
+        value = max(abs(b.reaction_y / shares[k] - 1.0) for r in results for k, b in enumerate(r.bearings))
+    return OffsetPlan(dict(zip(adjustable, map(float, offsets), strict=True)), results, float(value), rounds)
+
+
+def offsets_from_reactions(
+    model: AlignmentModel,
+    measured: dict[str, float],
+    condition: Condition | None = None,
+    reference: tuple[str, str] | None = None,
+) -> tuple[dict[str, float], float]:
+    """Offsets that explain measured reactions, by least squares on the influence matrix.
+
+    Two ``reference`` bearings (default: aft- and forward-most) stay at their offsets: a
+    rigid line changes no reaction, so only offsets relative to them can be found.
+    Returns the added offsets per bearing (m) and the RMS reaction misfit (N).
+    """
+    line = model.line
+    names = [b.name for b in line.bearings]
+    for name in measured:
+        if name not in names:
+            raise InputError("alignment.measured_reactions", name, "", "bearing names: " + ", ".join(names))
+    if reference is None:
+        ordered = sorted(line.bearings, key=lambda b: b.x)
+        reference = (ordered[0].name, ordered[-1].name)
+    base = model.solve_condition(condition or line.all_conditions()[0])
+    reactions = np.array([b.reaction_y for b in base.bearings])
+    matrix = model.influence_matrix().matrix
+    rows = [names.index(n) for n in measured]
+    free = [k for k, n in enumerate(names) if n not in reference]
+    target = np.array([measured[names[k]] for k in rows]) - reactions[rows]
+    solution, *_ = np.linalg.lstsq(matrix[np.ix_(rows, free)], target, rcond=None)
+    misfit = matrix[np.ix_(rows, free)] @ solution - target
+    offsets = {names[k]: float(v) for k, v in zip(free, solution, strict=True)}
+    return offsets, float(np.sqrt(np.mean(misfit**2)))
