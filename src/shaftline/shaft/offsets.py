@@ -107,7 +107,9 @@ def optimise_offsets(
     shares = weight_shares(model)
     offsets = np.zeros(len(adjustable))
     step = 1e-5
-    for rounds in range(1, max_rounds + 1):
+    rounds = 0
+    while rounds < max_rounds:
+        rounds += 1
         rows_a, rows_b, slope_rows, slope_rhs, use_rows, use_rhs = [], [], [], [], [], []
         states = []
         for condition in conditions:

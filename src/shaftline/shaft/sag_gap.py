@@ -88,7 +88,11 @@ def sag_and_gap(
                 "",
                 f"supports enough for the {name} piece to stand (at least two under it)",
             )
-        inside = lambda x, lo=shift, hi=shift + sum(s.length for s in segments): lo <= x <= hi  # noqa: E731
+        start, end = shift, shift + sum(s.length for s in segments)
+
+        def inside(x: float, lo: float = start, hi: float = end) -> bool:
+            return lo <= x <= hi
+
         piece = ShaftLine(
             segments=tuple(segments),
             bearings=bearings,
