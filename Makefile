@@ -28,6 +28,7 @@ lint: $(STAMP)
 bench:
 	bash benchmarks/setup_env.sh
 	.venv-bench/bin/python benchmarks/bench_bearing.py
+	.venv-bench/bin/python benchmarks/bench_alignment.py
 
 clean:
 	rm -rf $(VENV) .venv-bench results .pytest_cache

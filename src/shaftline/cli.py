@@ -51,83 +51,118 @@ def _fail(error: InputError) -> None:
     raise typer.Exit(code=2)
 
 
-def _print_table(runs) -> None:
-    from shaftline.jobs import bearing_table_rows
-
-    headers, rows = bearing_table_rows(runs)
-    table = Table(title="Bearing film at equilibrium")
-    for header in headers:
-        table.add_column(header, justify="right" if header != "quantity" else "left")
+def _print(headers: list[str], rows: list[list[str]], title: str) -> None:
+    table = Table(title=title)
+    for k, header in enumerate(headers):
+        table.add_column(header, justify="left" if k == 0 else "right")
     for row in rows:
         table.add_row(*row)
     console.print(table)
 
 
-def _solve(case_file: Path):
-    from shaftline.jobs import solve_bearings
+def _print_bearing(runs) -> None:
+    from shaftline.jobs import bearing_table_rows
+
+    _print(*bearing_table_rows(runs), "Bearing film at equilibrium")
+
+
+def _print_alignment(run) -> None:
+    from shaftline.jobs import _check_rows, alignment_table_rows
+
+    headers, rows = alignment_table_rows(run)
+    _print(headers, rows, "Shaft alignment")
+    failed = [row for row in _check_rows(run.checks) if row[0] == "FAIL"]
+    if failed:
+        _print(
+            ["result", "rule", "condition", "bearing", "value", "limit", "source", "confidence"],
+            failed,
+            f"Class-rule checks: {len(failed)} of {len(run.checks)} fail",
+        )
+    else:
+        console.print(f"Class-rule checks: all {len(run.checks)} pass")
+
+
+def _solve(case_file: Path, film: bool, alignment: bool):
+    from shaftline.jobs import solve_alignment, solve_bearings
 
     case = load_case(case_file)
+    if film and not alignment and not case.bearings:
+        raise InputError("case file", str(case_file), "", "a bearing film: [bearing], [operation], [lubricant]")
+    if alignment and not film and case.alignment is None:
+        raise InputError("case file", str(case_file), "", "a shaft line: [shaft], [[shaft.segments]], [[bearings]]")
+    runs, alignment_run = [], None
     with console.status("solving") as status:
-        runs = solve_bearings(case, progress=lambda name: status.update(f"solving {name}"))
-    return case, runs
+        if film:
+            runs = solve_bearings(case, progress=lambda name: status.update(f"solving {name}"))
+        if alignment and case.alignment is not None:
+            alignment_run = solve_alignment(case.alignment, progress=lambda name: status.update(f"solving {name}"))
+    return case, runs, alignment_run
 
 
-def _emit_json(case, runs, json_path: str | None) -> None:
+def _emit_json(case, runs, alignment, json_path: str | None) -> None:
     from shaftline.jobs import dumps, results_document, write_text_atomic
 
     if json_path is None:
         return
-    text = dumps(results_document(case, runs))
+    text = dumps(results_document(case, runs, alignment))
     if json_path == "-":
         sys.stdout.write(text + "\n")
     else:
         write_text_atomic(Path(json_path), text + "\n")
 
 
-@bearing_app.command("solve")
-def bearing_solve(
-    case_file: Annotated[Path, typer.Argument(help="Case file (TOML).")],
-    json_path: Annotated[
-        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
-    ] = None,
-    out: Annotated[Path | None, typer.Option("--out", help="Folder for figures and the HTML report.")] = None,
-) -> None:
-    """Solve the bearing film at equilibrium under the case load."""
-    from shaftline.jobs import write_bearing_outputs
+JsonOption = Annotated[
+    str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
+]
+
+
+def _job(case_file: Path, json_path: str | None, out: Path | None, film: bool, alignment: bool) -> None:
+    from shaftline.jobs import write_outputs
 
     try:
-        case, runs = _solve(case_file)
+        case, runs, alignment_run = _solve(case_file, film, alignment)
     except InputError as error:
         _fail(error)
     if json_path != "-":
-        _print_table(runs)
-    _emit_json(case, runs, json_path)
+        if runs:
+            _print_bearing(runs)
+        if alignment_run is not None:
+            _print_alignment(alignment_run)
+    _emit_json(case, runs, alignment_run, json_path)
     if out is not None:
-        write_bearing_outputs(case, runs, out, str(case_file))
+        write_outputs(case, runs, alignment_run, out, str(case_file))
         if json_path != "-":
             console.print(f"report: {out / 'report.html'}")
+
+
+@bearing_app.command("solve")
+def bearing_solve(
+    case_file: Annotated[Path, typer.Argument(help="Case file (TOML).")],
+    json_path: JsonOption = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for figures and the HTML report.")] = None,
+) -> None:
+    """Solve the bearing film at equilibrium under the case load."""
+    _job(case_file, json_path, out, film=True, alignment=False)
+
+
+@app.command("align")
+def align(
+    case_file: Annotated[Path, typer.Argument(help="Case file (TOML).")],
+    json_path: JsonOption = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for figures and the HTML report.")] = None,
+) -> None:
+    """Shaft alignment: elastic line, reactions, slopes, influence matrix and rule checks."""
+    _job(case_file, json_path, out, film=False, alignment=True)
 
 
 @app.command("run")
 def run(
     case_file: Annotated[Path, typer.Argument(help="Case file (TOML).")],
     out: Annotated[Path | None, typer.Option("--out", help="Output folder (default results/<case name>).")] = None,
-    json_path: Annotated[str | None, typer.Option("--json", help="Also write results as JSON to PATH, or '-'.")] = None,
+    json_path: JsonOption = None,
 ) -> None:
     """The main job: every analysis the case file asks for, with the HTML report."""
-    from shaftline.jobs import write_bearing_outputs
-
-    try:
-        case, runs = _solve(case_file)
-    except InputError as error:
-        _fail(error)
-    out = out or Path("results") / case_file.stem
-    if json_path != "-":
-        _print_table(runs)
-    _emit_json(case, runs, json_path)
-    write_bearing_outputs(case, runs, out, str(case_file))
-    if json_path != "-":
-        console.print(f"report: {out / 'report.html'}")
+    _job(case_file, json_path, out or Path("results") / case_file.stem, film=True, alignment=True)
 
 
 def main() -> None:

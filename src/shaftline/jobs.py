@@ -1,6 +1,6 @@
 """The jobs behind the command line, usable the same way from a notebook.
 
-``solve_bearings`` runs every bearing problem of a case; ``write_bearing_outputs``
+``solve_bearings`` and ``solve_alignment`` run what a case asks for; ``write_outputs``
 writes JSON, figures and the HTML report into a folder, atomically (a temporary
 folder renamed into place), so a failed run never leaves half an output.
 """
@@ -21,12 +21,18 @@ from typing import Any
 from markupsafe import Markup
 
 import shaftline
+from shaftline.cases.alignment_schema import AlignmentCase
 from shaftline.cases.schema import BearingCase, Case
 from shaftline.film.bearing import Equilibrium, JournalBearing
 from shaftline.film.dynamics import DynamicCoefficients, dynamic_coefficients
 from shaftline.film.summary import EXTRA_UNITS, equilibrium_summary, units
-from shaftline.report import figures
+from shaftline.report import alignment_figures, figures
 from shaftline.report.html import Section, image, render, table
+from shaftline.shaft.alignment import AlignmentModel, ConditionResult, InfluenceMatrix
+from shaftline.shaft.jackup import JackUpCurve, JackUpFit, jack_up, reaction_from_jack_curve
+from shaftline.shaft.offsets import OffsetPlan, offsets_from_reactions, optimise_offsets
+from shaftline.shaft.rules import RuleCheck, check_rules
+from shaftline.shaft.sag_gap import SagGap, sag_and_gap
 
 
 @dataclass(frozen=True)
@@ -63,13 +69,17 @@ def solve_bearings(case: Case, progress: Callable[[str], None] | None = None) ->
     return runs
 
 
-def results_document(case: Case, runs: list[BearingRun]) -> dict[str, Any]:
-    """JSON document: the base case's fields at top level, further variants in ``variants``."""
-    summaries = [run.summary() for run in runs]
+def results_document(case: Case, runs: list[BearingRun], alignment: AlignmentRun | None = None) -> dict[str, Any]:
+    """JSON document: the bearing film's base case at top level, further variants in
+    ``variants``, and the alignment under ``alignment``."""
     document: dict[str, Any] = {"shaftline_version": shaftline.__version__, "case": case.name}
-    document.update(summaries[0])
-    document["variants"] = summaries[1:]
-    document["units"] = {**units(), **EXTRA_UNITS}
+    if runs:
+        summaries = [run.summary() for run in runs]
+        document.update(summaries[0])
+        document["variants"] = summaries[1:]
+        document["units"] = {**units(), **EXTRA_UNITS}
+    if alignment is not None:
+        document["alignment"] = alignment.summary()
     return document
 
 
@@ -192,11 +202,283 @@ def bearing_section(runs: list[BearingRun], folder: Path) -> Section:
     return Section("Stern-tube bearing film", Markup("").join(parts))
 
 
-def write_bearing_outputs(case: Case, runs: list[BearingRun], out: Path, case_file: str) -> Path:
+def write_outputs(
+    case: Case, runs: list[BearingRun], alignment: AlignmentRun | None, out: Path, case_file: str
+) -> Path:
     """Write ``results.json``, figures and ``report.html`` into ``out`` (atomically)."""
     with atomic_folder(out) as folder:
-        (folder / "results.json").write_text(dumps(results_document(case, runs)), encoding="utf-8")
-        section = bearing_section(runs, folder)
-        html = render(case.name, case.description, case_file, [section])
+        (folder / "results.json").write_text(dumps(results_document(case, runs, alignment)), encoding="utf-8")
+        (folder / "figures").mkdir(exist_ok=True)
+        sections = []
+        if runs:
+            sections.append(bearing_section(runs, folder))
+        if alignment is not None:
+            sections.append(alignment_section(alignment, folder))
+        html = render(case.name, case.description, case_file, sections)
         (folder / "report.html").write_text(html, encoding="utf-8")
     return Path(out)
+
+
+# -- shaft alignment ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class AlignmentRun:
+    """Everything an alignment case asked for."""
+
+    case: AlignmentCase
+    model: AlignmentModel
+    results: list[ConditionResult]
+    influence: InfluenceMatrix
+    checks: list[RuleCheck]
+    plan: OffsetPlan | None = None
+    plan_checks: list[RuleCheck] | None = None
+    sag_gap: SagGap | None = None
+    jack: JackUpCurve | None = None
+    jack_fit: JackUpFit | None = None
+    reverse: tuple[dict[str, float], float] | None = None
+
+    def summary(self) -> dict[str, Any]:
+        out: dict[str, Any] = {
+            "units": {
+                "reaction_y": "N",
+                "reaction_z": "N",
+                "mean_pressure": "Pa",
+                "shaft_slope": "rad",
+                "relative_slope": "rad",
+                "influence_matrix": "N/m",
+                "offsets": "m",
+                "sag": "m",
+                "gap": "m",
+                "max_stress": "Pa",
+                "deflection": "m",
+            },
+            "conditions": [
+                {
+                    "name": r.name,
+                    "max_stress": float(r.stress.max()),
+                    "bearings": [
+                        {
+                            "name": b.name,
+                            "reaction_y": b.reaction_y,
+                            "reaction_z": b.reaction_z,
+                            "mean_pressure": b.mean_pressure,
+                            "contact": b.contact,
+                            "shaft_slope": b.shaft_slope,
+                            "relative_slope": b.relative_slope,
+                        }
+                        for b in r.bearings
+                    ],
+                    "elastic_line": {"x": r.x.tolist(), "deflection_y": r.deflection_y.tolist()},
+                }
+                for r in self.results
+            ],
+            "influence_matrix": {"bearings": self.influence.names, "matrix": self.influence.matrix.tolist()},
+            "rule_checks": [_check_dict(c) for c in self.checks],
+            "slope_boring_angle": self.slope_boring_angle(),
+        }
+        if self.plan is not None:
+            out["optimised_offsets"] = {
+                "offsets": self.plan.offsets,
+                "objective": self.plan.objective,
+                "rule_checks": [_check_dict(c) for c in self.plan_checks or []],
+            }
+        if self.sag_gap is not None:
+            out["sag_gap"] = {"flange_x": self.sag_gap.flange_x, "sag": self.sag_gap.sag, "gap": self.sag_gap.gap}
+        if self.jack is not None:
+            out["jack_up"] = {
+                "bearing": self.jack.bearing,
+                "jack_x": self.jack.jack_x,
+                "reaction_before": self.jack.reaction_before,
+                "liftoff_load": self.jack.liftoff_load,
+                "correction_factor": self.jack.correction_factor,
+                "curve": {"load": self.jack.loads.tolist(), "lift": self.jack.lifts.tolist()},
+            }
+            if self.jack_fit is not None:
+                out["jack_up"]["measured"] = {
+                    "knee_load": self.jack_fit.knee_load,
+                    "reaction": self.jack_fit.reaction,
+                    "residual": self.jack_fit.residual,
+                }
+        if self.reverse is not None:
+            out["offsets_from_reactions"] = {"offsets": self.reverse[0], "rms_misfit": self.reverse[1]}
+        return out
+
+    def slope_boring_angle(self) -> dict[str, float]:
+        """Per condition, the bore slope that would make the aft stern-tube bearing parallel to the shaft, rad."""
+        aft = min(self.model.line.bearings, key=lambda b: b.x).name
+        return {r.name: r.bearing(aft).shaft_slope for r in self.results}
+
+
+def _check_dict(check: RuleCheck) -> dict[str, Any]:
+    return {
+        "rule": check.rule.id,
+        "society": check.rule.society,
+        "clause": check.rule.clause,
+        "confidence": check.rule.confidence,
+        "condition": check.condition,
+        "bearing": check.bearing,
+        "value": check.value,
+        "comparison": check.rule.comparison,
+        "limit": check.rule.limit,
+        "passed": check.passed,
+    }
+
+
+def solve_alignment(case: AlignmentCase, progress: Callable[[str], None] | None = None) -> AlignmentRun:
+    """All conditions, the influence matrix, rule checks and the procedures the case asks for."""
+    step = progress or (lambda _: None)
+    step("alignment conditions")
+    model = AlignmentModel(case.line)
+    results = model.solve()
+    influence = model.influence_matrix()
+    checks = check_rules(model, results, case.rules)
+    plan = plan_checks = sag = jack = fit = reverse = None
+    if case.optimise is not None:
+        step("offset optimisation")
+        plan = optimise_offsets(
+            model, case.rules, case.optimise["adjustable"], case.optimise["objective"], case.optimise["bound"]
+        )
+        plan_checks = check_rules(model, plan.results, case.rules)
+    if case.sag_gap is not None:
+        step("sag and gap")
+        sg = case.sag_gap
+        sag = sag_and_gap(case.line, sg["flange_x"], sg["temporary_supports"], sg["condition"], sg["flange_diameter"])
+    if case.jack_up is not None:
+        step("jack-up")
+        ju = case.jack_up
+        jack = jack_up(case.line, ju["bearing"], ju["jack_x"], ju["condition"])
+        if ju["measured"] is not None:
+            fit = reaction_from_jack_curve(*ju["measured"], jack.correction_factor)
+    if case.measured_reactions is not None:
+        mr = case.measured_reactions
+        reverse = offsets_from_reactions(model, mr["values"], mr["condition"], mr["reference"])
+    return AlignmentRun(case, model, results, influence, checks, plan, plan_checks, sag, jack, fit, reverse)
+
+
+def _check_rows(checks: list[RuleCheck]) -> list[list[str]]:
+    rows = []
+    for c in checks:
+        unit = {
+            "reaction": ("kN", 1e-3),
+            "reaction_share": ("-", 1.0),
+            "mean_pressure": ("MPa", 1e-6),
+            "relative_slope": ("mrad", 1e3),
+        }[c.rule.quantity]
+        rows.append(
+            [
+                "pass" if c.passed else "FAIL",
+                c.rule.id,
+                c.condition,
+                c.bearing,
+                f"{c.value * unit[1]:.4g} {unit[0]}",
+                f"{c.rule.comparison} {c.rule.limit * unit[1]:.4g}",
+                c.rule.society,
+                c.rule.confidence,
+            ]
+        )
+    return rows
+
+
+def alignment_table_rows(run: AlignmentRun) -> tuple[list[str], list[list[str]]]:
+    headers = [
+        "condition",
+        "bearing",
+        "reaction [kN]",
+        "mean pressure [MPa]",
+        "contact",
+        "shaft slope [mrad]",
+        "relative slope [mrad]",
+    ]
+    rows = []
+    for result in run.results:
+        for b in result.bearings:
+            rows.append(
+                [
+                    result.name,
+                    b.name,
+                    _fmt(b.reaction_y, 1e-3),
+                    _fmt(b.mean_pressure, 1e-6),
+                    b.contact,
+                    _fmt(b.shaft_slope, 1e3),
+                    _fmt(b.relative_slope, 1e3),
+                ]
+            )
+    return headers, rows
+
+
+def alignment_section(run: AlignmentRun, folder: Path) -> Section:
+    figure_dir = folder / "figures"
+    figure_dir.mkdir(exist_ok=True)
+    headers, rows = alignment_table_rows(run)
+    failed = [c for c in run.checks if not c.passed]
+    parts = [
+        Markup(
+            f"<p>{len(run.results)} condition(s), {len(run.model.line.bearings)} bearings, "
+            f"{run.model.mesh.nodes - 1} {run.model.line.beam_theory.replace('_', '-')} elements. "
+            "Reactions + up; slopes dy/dx; the relative slope is the shaft's across the bearing less "
+            "the bearing's own.</p>"
+        ),
+        table(headers, rows),
+        Markup("<h3>Class-rule checks</h3>"),
+        Markup(f"<p class='{'warn' if failed else 'note'}'>{len(failed)} of {len(run.checks)} checks fail.</p>"),
+        table(
+            ["result", "rule", "condition", "bearing", "value", "limit", "source", "confidence"],
+            _check_rows(run.checks),
+        ),
+    ]
+    angles = run.slope_boring_angle()
+    parts.append(
+        Markup(
+            "<p>Slope-boring angle that would make the aft stern-tube bearing parallel to the shaft: "
+            + ", ".join(f"{name}: {value * 1e3:.3f} mrad" for name, value in angles.items())
+            + ".</p>"
+        )
+    )
+    for maker, stem, args in (
+        (alignment_figures.elastic_line, "elastic_line", (run.model, run.results)),
+        (alignment_figures.moment_and_shear, "moment_shear", (run.results,)),
+        (alignment_figures.reactions, "reactions", (run.results,)),
+        (alignment_figures.influence_heatmap, "influence", (run.influence,)),
+    ):
+        path = maker(*args, figure_dir / f"alignment_{stem}.png")
+        parts.append(image(f"figures/{path.name}", stem))
+    if run.plan is not None:
+        parts.append(Markup(f"<h3>Optimised offsets ({run.case.optimise['objective']})</h3>"))
+        parts.append(table(["bearing", "added offset [mm]"], [[k, _fmt(v, 1e3)] for k, v in run.plan.offsets.items()]))
+        plan_failed = [c for c in run.plan_checks or [] if not c.passed]
+        parts.append(
+            Markup(
+                f"<p>With these offsets {len(plan_failed)} rule checks fail; objective {run.plan.objective:.4g}.</p>"
+            )
+        )
+    if run.sag_gap is not None:
+        parts.append(
+            Markup(
+                f"<h3>Sag and gap at the flange at x = {run.sag_gap.flange_x:.3f} m</h3>"
+                f"<p>sag {run.sag_gap.sag * 1e3:.3f} mm (forward face higher +), "
+                f"gap {run.sag_gap.gap * 1e3:.3f} mm (open at the top +).</p>"
+            )
+        )
+    if run.jack is not None:
+        path = alignment_figures.jack_curve(
+            run.jack, figure_dir / "alignment_jack.png", run.case.jack_up["measured"], run.jack_fit
+        )
+        parts.append(Markup("<h3>Jack-up</h3>"))
+        text = (
+            f"<p>Bearing {run.jack.bearing}, jack at x = {run.jack.jack_x:.3f} m: modelled reaction "
+            f"{run.jack.reaction_before / 1e3:.1f} kN, lift-off at {run.jack.liftoff_load / 1e3:.1f} kN, "
+            f"correction factor {run.jack.correction_factor:.4f}."
+        )
+        if run.jack_fit is not None:
+            text += (
+                f" Measured curve: knee at {run.jack_fit.knee_load / 1e3:.1f} kN, reaction "
+                f"{run.jack_fit.reaction / 1e3:.1f} kN."
+            )
+        parts.append(Markup(text + "</p>"))
+        parts.append(image(f"figures/{path.name}", "jack-up"))
+    if run.reverse is not None:
+        parts.append(Markup("<h3>Offsets from measured reactions</h3>"))
+        parts.append(table(["bearing", "offset [mm]"], [[k, _fmt(v, 1e3)] for k, v in run.reverse[0].items()]))
+        parts.append(Markup(f"<p>RMS reaction misfit {run.reverse[1] / 1e3:.3f} kN.</p>"))
+    return Section("Shaft alignment", Markup("").join(parts))

@@ -30,6 +30,9 @@ SI_UNITS: dict[str, str] = {
     "dimensionless": "",
     "stiffness": "N/m",
     "volume_flow": "m**3/s",
+    "mass": "kg",
+    "force_per_length": "N/m",
+    "acceleration": "m/s**2",
 }
 
 

@@ -35,12 +35,12 @@ def shaft_lines(draw):
     )
     length = sum(s.length for s in segments)
     count = draw(st.integers(3, 7))
-    # Evenly spread stations, each moved by up to a quarter of the spacing: 0.2 m bearings
-    # never overlap (spacing >= 2 m / 8).
+    # Evenly spread stations, each moved by up to a quarter of the spacing; bearings of 0.4
+    # spacing never overlap (neighbours stay at least half a spacing apart).
     spacing = (length - 0.4) / (count - 1)
     jitter = draw(st.lists(st.floats(-0.25, 0.25), min_size=count, max_size=count))
     x = 0.2 + spacing * (np.arange(count) + np.array(jitter) * [0, *([1] * (count - 2)), 0])
-    bearings = tuple(Bearing(f"B{k}", float(xk), 0.2) for k, xk in enumerate(x))
+    bearings = tuple(Bearing(f"B{k}", float(xk), min(0.2, 0.4 * spacing)) for k, xk in enumerate(x))
     propeller = Propeller(x=-draw(st.floats(0.0, min(1.5, 0.4 * length))), mass=draw(st.floats(1e3, 5e4)))
     return ShaftLine(segments=segments, bearings=bearings, propeller=propeller, element_length=0.5)
 

@@ -14,6 +14,18 @@ from pathlib import Path
 import numpy as np
 from pydantic import BaseModel, ConfigDict, model_validator
 
+from shaftline.cases.alignment_schema import (
+    AlignmentBearingIn,
+    AlignmentCase,
+    AlignmentIn,
+    ConditionIn,
+    DistributedLoadIn,
+    MassIn,
+    PointLoadIn,
+    PropellerIn,
+    ShaftIn,
+    build_alignment,
+)
 from shaftline.errors import InputError
 from shaftline.film.bearing import OperatingPoint, SolverOptions, SupplyGroove
 from shaftline.film.geometry import BearingGeometry, BentJournal, BoreSegment, FilmProfile
@@ -155,11 +167,38 @@ class VariantIn(_Strict):
 
 class CaseIn(_Strict):
     case: CaseInfo = CaseInfo()
-    bearing: BearingIn
-    operation: OperationIn
-    lubricant: LubricantIn
+    # Stern-tube bearing film (all three or none).
+    bearing: BearingIn | None = None
+    operation: OperationIn | None = None
+    lubricant: LubricantIn | None = None
     solver: SolverIn = SolverIn()
     variants: list[VariantIn] = []
+    # Shaft alignment.
+    shaft: ShaftIn | None = None
+    bearings: list[AlignmentBearingIn] = []
+    loads: list[PointLoadIn] = []
+    masses: list[MassIn] = []
+    distributed_loads: list[DistributedLoadIn] = []
+    propeller: PropellerIn | None = None
+    conditions: list[ConditionIn] = []
+    alignment: AlignmentIn | None = None
+
+    @model_validator(mode="after")
+    def _something_to_do(self) -> CaseIn:
+        film = [self.bearing is not None, self.operation is not None, self.lubricant is not None]
+        if any(film) and not all(film):
+            missing = [n for n, given in zip(("bearing", "operation", "lubricant"), film, strict=True) if not given]
+            raise ValueError(
+                f"a bearing-film case needs [bearing], [operation] and [lubricant]; missing [{missing[0]}]"
+            )
+        alignment_parts = bool(self.bearings or self.loads or self.masses or self.conditions or self.propeller)
+        if alignment_parts and self.shaft is None:
+            raise ValueError("alignment inputs need a [shaft] with [[shaft.segments]]")
+        if self.shaft is not None and not self.bearings:
+            raise ValueError("a [shaft] needs its [[bearings]]")
+        if not any(film) and self.shaft is None:
+            raise ValueError("nothing to solve: give a bearing film ([bearing], [operation], [lubricant]) or a [shaft]")
+        return self
 
 
 # -- domain objects -------------------------------------------------------------------------
@@ -199,11 +238,12 @@ class BearingCase:
 
 @dataclass(frozen=True)
 class Case:
-    """A parsed case file: a title and the bearing problems it asks for (base case first)."""
+    """A parsed case file: a title, the bearing-film problems (base case first) and an alignment."""
 
     name: str
     description: str
     bearings: list[BearingCase] = field(default_factory=list)
+    alignment: AlignmentCase | None = None
 
 
 def _lubricant(data: LubricantIn) -> tuple[Lubricant, float, float, float | None]:
@@ -314,6 +354,24 @@ def build_case(data: CaseIn, base_dir: Path | None = None) -> Case:
 
     ``base_dir`` is the folder that relative file names in the case are read from.
     """
+    alignment = None
+    if data.shaft is not None:
+        alignment = build_alignment(
+            data.shaft,
+            data.bearings,
+            data.loads,
+            data.masses,
+            data.distributed_loads,
+            data.propeller,
+            data.conditions,
+            data.alignment,
+            base_dir,
+        )
+    bearings = _build_film(data, base_dir) if data.bearing is not None else []
+    return Case(name=data.case.name, description=data.case.description, bearings=bearings, alignment=alignment)
+
+
+def _build_film(data: CaseIn, base_dir: Path | None) -> list[BearingCase]:
     b = data.bearing
     length = to_si(b.length, "length", "bearing.length")
     diameter = to_si(b.diameter, "length", "bearing.diameter")
@@ -452,4 +510,4 @@ def build_case(data: CaseIn, base_dir: Path | None = None) -> Case:
                 temperature=temperature,
             )
         )
-    return Case(name=data.case.name, description=data.case.description, bearings=bearings)
+    return bearings

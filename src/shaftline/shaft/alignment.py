@@ -257,11 +257,16 @@ class AlignmentModel:
         """Solve every condition of the line (or the given ones)."""
         return [self.solve_condition(c) for c in (conditions or self.line.all_conditions())]
 
-    def solve_condition(self, condition: Condition) -> ConditionResult:
+    def solve_condition(self, condition: Condition, two_sided: bool = False) -> ConditionResult:
+        """Elastic line and bearing results of ``condition``.
+
+        ``two_sided`` holds every support point in contact (no lift-off, no top contact): the
+        linear model behind the influence matrix.
+        """
         mesh, supports = self.mesh, self.supports
         fy, fz, uniform_y, uniform_z = self._loads(condition)
         oy, oz = self._offsets(condition)
-        reactions_y, rigid_y, iterations, state = self._contact(fy, oy, vertical=True)
+        reactions_y, rigid_y, iterations, state = self._contact(fy, oy, vertical=not two_sided)
         reactions_z, rigid_z, _, _ = self._contact(fz, oz, vertical=False)
         line_y = self._elastic_line(fy, reactions_y, rigid_y)
         line_z = self._elastic_line(fz, reactions_z, rigid_z)

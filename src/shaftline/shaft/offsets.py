@@ -6,8 +6,9 @@ contact state holds, so the design is a linear programme (scipy's HiGHS): minimi
 largest aft-bearing relative slope over the conditions (or the largest
 departure of a load ratio from 1), subject to every reaction above its minimum and every mean pressure below
 its limit in every condition, offsets within bounds. The linearisation is taken at the
-current contact state; the plan is re-solved with the full one-sided model and
-re-linearised until the contact state settles.
+current contact state (the first round on the two-sided model, so that lifted bearings
+count); the plan is re-solved with the full one-sided model and re-linearised until the
+contact state settles.
 """
 
 from __future__ import annotations
@@ -112,16 +113,19 @@ def optimise_offsets(
         rounds += 1
         rows_a, rows_b, slope_rows, slope_rhs, use_rows, use_rhs = [], [], [], [], [], []
         states = []
+        # First round on the two-sided model: a lifted bearing has no sensitivity to a small
+        # offset in the one-sided model, but the plan must bring it back into contact.
+        two_sided = rounds == 1
         for condition in conditions:
             current = _with_offsets(condition, dict(zip(adjustable, offsets, strict=True)))
-            base = model.solve_condition(current)
+            base = model.solve_condition(current, two_sided)
             states.append([b.contact for b in base.bearings])
             reactions = np.array([b.reaction_y for b in base.bearings])
             slope = base.bearings[aft_index].relative_slope
             jac_r = np.empty((len(names), len(adjustable)))
             jac_s = np.empty(len(adjustable))
             for j, name in enumerate(adjustable):
-                moved = model.solve_condition(_with_offsets(current, {name: step}))
+                moved = model.solve_condition(_with_offsets(current, {name: step}), two_sided)
                 jac_r[:, j] = (np.array([b.reaction_y for b in moved.bearings]) - reactions) / step
                 jac_s[j] = (moved.bearings[aft_index].relative_slope - slope) / step
             # low <= R + J d <= high  ->  -J d <= R - low ;  J d <= high - R   (d = change from current)
@@ -166,7 +170,7 @@ def optimise_offsets(
             model.solve_condition(_with_offsets(c, dict(zip(adjustable, offsets, strict=True)))) for c in conditions
         ]
         new_states = [[b.contact for b in r.bearings] for r in results]
-        if new_states == states:
+        if new_states == states and not two_sided:
             break
     if objective == "aft_slope":
         value = max(abs(r.bearings[aft_index].relative_slope) for r in results)

@@ -1,0 +1,85 @@
+"""The alignment example through the command line: tables, JSON, report, bad input."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = ROOT / "examples" / "single_screw_alignment.toml"
+
+
+def shaftline(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "shaftline.cli", *args], capture_output=True, text=True, timeout=300)
+
+
+@pytest.fixture(scope="module")
+def outputs(tmp_path_factory):
+    out = tmp_path_factory.mktemp("align") / "out"
+    result = shaftline("align", str(EXAMPLE), "--out", str(out))
+    assert result.returncode == 0, result.stderr
+    return result, out
+
+
+def test_align_prints_tables_and_writes_the_report(outputs):
+    result, out = outputs
+    assert "Shaft alignment" in result.stdout and "Class-rule checks" in result.stdout
+    html = (out / "report.html").read_text()
+    assert "Shaft alignment" in html and "Class-rule checks" in html and "Jack-up" in html
+    for name in ("elastic_line", "moment_shear", "reactions", "influence", "jack"):
+        assert (out / "figures" / f"alignment_{name}.png").stat().st_size > 10_000
+
+
+def test_alignment_json(outputs):
+    _, out = outputs
+    alignment = json.loads((out / "results.json").read_text())["alignment"]
+    assert [c["name"] for c in alignment["conditions"]] == [
+        "cold, ballast, static",
+        "cold, laden, static",
+        "hot, laden, running",
+    ]
+    matrix = alignment["influence_matrix"]["matrix"]
+    assert len(matrix) == 8 and abs(sum(matrix[0])) < 1e-6 * max(map(abs, matrix[0]))
+    # the straight engine line unloads main bearing 2; the optimised offsets fix every rule
+    assert any(not c["passed"] for c in alignment["rule_checks"])
+    assert all(c["passed"] for c in alignment["optimised_offsets"]["rule_checks"])
+    assert 0.5 < alignment["jack_up"]["correction_factor"] <= 1.0
+    assert alignment["slope_boring_angle"]["cold, ballast, static"] > 0
+
+
+def test_run_does_the_alignment_too(tmp_path):
+    result = shaftline("run", str(EXAMPLE), "--out", str(tmp_path / "run"), "--json", "-")
+    assert result.returncode == 0, result.stderr
+    assert "alignment" in json.loads(result.stdout)
+
+
+@pytest.mark.parametrize(
+    "replace, field",
+    [
+        (('x = "22.2 m"', 'x = "40 m"'), "bearings[3].x"),
+        (
+            ('outer_diameter = "620 mm"', 'outer_diameter = "620 mm"\ninner_diameter = "700 mm"'),
+            "shaft.segments[3].inner_diameter",
+        ),
+        (('"intermediate" = "0.15 mm"', '"intermediat" = "0.15 mm"'), "conditions.cold, laden, static.offsets"),
+        (('mass = "62 t"', 'mass = "62 m"'), "propeller.mass"),
+    ],
+)
+def test_bad_alignment_input(tmp_path, replace, field):
+    text = EXAMPLE.read_text()
+    assert replace[0] in text
+    case = tmp_path / "case.toml"
+    case.write_text(text.replace(*replace, 1))
+    result = shaftline("align", str(case), "--out", str(tmp_path / "out"))
+    assert result.returncode == 2
+    assert field in result.stderr and "Traceback" not in result.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_bearing_solve_refuses_a_shaft_only_case(tmp_path):
+    result = shaftline("bearing", "solve", str(EXAMPLE))
+    assert result.returncode == 2 and "bearing film" in result.stderr
