@@ -72,6 +72,7 @@ def test_aft_third_support_point():
         ({"bearings": (Bearing("a", 1.0, 0.5), Bearing("b", 1.2, 0.5))}, "bearings.b.x"),
         ({"bearings": (Bearing("a", 1.0, 0.5),)}, "bearings"),
         ({"conditions": (Condition("c", offsets_y={"nope": 1e-3}),)}, "conditions.c.offsets"),
+        ({"bearings": (Bearing("a", 1.0, 0.5, material="cheese"), Bearing("b", 9.0, 0.5))}, "bearings[0].material"),
     ],
 )
 def test_bad_shaft_input_names_the_field(change, field):

@@ -83,3 +83,33 @@ def test_bad_alignment_input(tmp_path, replace, field):
 def test_bearing_solve_refuses_a_shaft_only_case(tmp_path):
     result = shaftline("bearing", "solve", str(EXAMPLE))
     assert result.returncode == 2 and "bearing film" in result.stderr
+
+
+def test_measured_jack_curve_from_csv(tmp_path):
+    """A measured curve given as CSV in the case: the knee of the model's own curve with
+    measurement noise gives back the modelled reaction (2 %)."""
+    import numpy as np
+
+    from shaftline.cases import load_case
+    from shaftline.jobs import solve_alignment
+    from shaftline.shaft.jackup import jack_up
+
+    case = load_case(EXAMPLE).alignment
+    ju = case.jack_up
+    curve = jack_up(case.line, ju["bearing"], ju["jack_x"], ju["condition"])
+    noise = np.random.default_rng(7).normal(0.0, 2e-6, curve.lifts.size)
+    rows = ["load,lift"] + [f"{p:.3f},{v:.9f}" for p, v in zip(curve.loads, curve.lifts + noise, strict=True)]
+    (tmp_path / "jack.csv").write_text("\n".join(rows))
+    text = EXAMPLE.read_text().replace('jack_x = "15.2 m"', 'jack_x = "15.2 m"\nmeasured_curve = "jack.csv"')
+    (tmp_path / "case.toml").write_text(text)
+    run = solve_alignment(load_case(tmp_path / "case.toml").alignment)
+    assert run.jack_fit is not None
+    assert run.jack_fit.reaction == pytest.approx(curve.reaction_before, rel=0.02)
+    # and a gap in the file is refused with the row named
+    rows[5] = "nan,0.1"
+    (tmp_path / "jack.csv").write_text("\n".join(rows))
+    from shaftline.errors import InputError
+
+    with pytest.raises(InputError) as error:
+        load_case(tmp_path / "case.toml")
+    assert "row 6" in str(error.value)

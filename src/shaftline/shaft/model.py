@@ -18,6 +18,9 @@ from shaftline.errors import InputError, require_finite, require_positive
 GRAVITY = 9.80665
 SUPPORT_MODELS = ("point", "spring", "multi_point")
 SUPPORT_POSITIONS = ("centre", "aft_third")
+#: Bearing materials the rules know; "engine" marks engine main bearings (the engine
+#: maker's limits apply), "roller" a roller bearing.
+MATERIALS = ("white_metal", "synthetic", "rubber", "bronze", "composite", "lignum_vitae", "engine", "roller")
 
 
 @dataclass(frozen=True)
@@ -199,8 +202,7 @@ class Bearing:
         Diametral clearance: how far the shaft may rise before touching the top of the
         bore, m (``inf`` to ignore the top).
     material : str
-        Bearing material, for pressure limits (``white_metal``, ``synthetic``,
-        ``rubber``, ``roller``...).
+        Bearing material, for pressure limits: one of :data:`MATERIALS`.
     support : str
         ``"point"`` (rigid point), ``"spring"`` (one point on a linear spring of the
         bearing and foundation stiffness) or ``"multi_point"`` (``points`` supports
@@ -242,6 +244,8 @@ class Bearing:
         require_finite(f"{where}.slope", self.slope, "rad")
         if not (self.vertical_clearance > 0):
             raise InputError(f"{where}.vertical_clearance", self.vertical_clearance, "m", "> 0 (inf to ignore)")
+        if self.material not in MATERIALS:
+            raise InputError(f"{where}.material", self.material, "", "one of " + ", ".join(MATERIALS))
         if self.support not in SUPPORT_MODELS:
             raise InputError(f"{where}.support", self.support, "", "one of " + ", ".join(SUPPORT_MODELS))
         if self.position not in SUPPORT_POSITIONS:
