@@ -103,7 +103,8 @@ def optimise_offsets(
     low, high = _limits(model, rules)
     # Plan with a small margin inside the limits so round-off cannot fail the checks.
     low = low + 1e-6 * np.abs(low) + 1.0
-    high = np.where(np.isfinite(high), high - 1e-6 * np.abs(high), high)
+    limited = np.isfinite(high)
+    high[limited] -= 1e-6 * np.abs(high[limited])
     aft_index = names.index(min(line.bearings, key=lambda b: b.x).name)
     shares = weight_shares(model)
     offsets = np.zeros(len(adjustable))
