@@ -269,7 +269,17 @@ class AlignmentRun:
                         }
                         for b in r.bearings
                     ],
-                    "elastic_line": {"x": r.x.tolist(), "deflection_y": r.deflection_y.tolist()},
+                    "elastic_line": {
+                        "x": r.x.tolist(),
+                        "deflection_y": r.deflection_y.tolist(),
+                        "deflection_z": r.deflection_z.tolist(),
+                        "rotation_y": r.rotation_y.tolist(),
+                        "rotation_z": r.rotation_z.tolist(),
+                        "moment_y": r.moment_y.tolist(),
+                        "moment_z": r.moment_z.tolist(),
+                        "shear_y": r.shear_y.tolist(),
+                        "stress": r.stress.tolist(),
+                    },
                 }
                 for r in self.results
             ],

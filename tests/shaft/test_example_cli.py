@@ -42,6 +42,9 @@ def test_alignment_json(outputs):
         "cold, laden, static",
         "hot, laden, running",
     ]
+    line = alignment["conditions"][0]["elastic_line"]
+    assert set(line) >= {"x", "deflection_y", "deflection_z", "rotation_y", "moment_y", "shear_y", "stress"}
+    assert len(line["moment_y"]) == len(line["x"])
     matrix = alignment["influence_matrix"]["matrix"]
     assert len(matrix) == 8 and abs(sum(matrix[0])) < 1e-6 * max(map(abs, matrix[0]))
     # the straight engine line unloads main bearing 2; the optimised offsets fix every rule
