@@ -434,7 +434,7 @@ def alignment_section(run: AlignmentRun, folder: Path) -> Section:
         Markup(f"<p class='{'warn' if failed else 'note'}'>{len(failed)} of {len(run.checks)} checks fail.</p>"),
         table(
             ["result", "rule", "condition", "bearing", "value", "limit", "source", "confidence"],
-            _check_rows(run.checks),
+            _check_rows(sorted(run.checks, key=lambda c: c.passed)),  # failures first
         ),
     ]
     angles = run.slope_boring_angle()
