@@ -30,9 +30,7 @@ def table(headers: list[str], rows: list[list[str]]) -> Markup:
     """An HTML table from text cells (escaped); numbers right-aligned, text left-aligned."""
     head = "".join(f"<th>{escape(h)}</th>" for h in headers)
     body = "".join(
-        "<tr>"
-        + "".join(f"<td class='{'num' if _is_number(c) else 'text'}'>{escape(c)}</td>" for c in row)
-        + "</tr>"
+        "<tr>" + "".join(f"<td class='{'num' if _is_number(c) else 'text'}'>{escape(c)}</td>" for c in row) + "</tr>"
         for row in rows
     )
     return Markup(f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>")
