@@ -29,6 +29,7 @@ bench:
 	bash benchmarks/setup_env.sh
 	.venv-bench/bin/python benchmarks/bench_bearing.py
 	.venv-bench/bin/python benchmarks/bench_alignment.py
+	.venv-bench/bin/python benchmarks/bench_wear.py
 
 clean:
 	rm -rf $(VENV) .venv-bench results .pytest_cache

@@ -26,6 +26,8 @@ app = typer.Typer(
 )
 bearing_app = typer.Typer(no_args_is_help=True, help="Stern-tube journal bearing film.")
 app.add_typer(bearing_app, name="bearing")
+wear_app = typer.Typer(no_args_is_help=True, help="Service wear of CPP blade bearings.")
+app.add_typer(wear_app, name="wear")
 
 console = Console()
 error_console = Console(stderr=True)
@@ -82,29 +84,46 @@ def _print_alignment(run) -> None:
         console.print(f"Class-rule checks: all {len(run.checks)} pass")
 
 
-def _solve(case_file: Path, film: bool, alignment: bool):
+def _print_wear(run) -> None:
+    from shaftline.jobs.wear import wear_table_rows
+
+    _print(*wear_table_rows(run), "Blade-bearing wear")
+    if run.weibull is not None:
+        low, high = run.weibull.interval("shape")
+        console.print(
+            f"Weibull fit of tested wear rates: shape {run.weibull.shape:.3g} ({low:.3g}-{high:.3g}), "
+            f"scale {run.weibull.scale * 1e9:.3g} mm3/Nm"
+        )
+
+
+def _solve(case_file: Path, film: bool, alignment: bool, wear: bool = False, log=None):
     from shaftline.jobs import solve_alignment, solve_bearings
+    from shaftline.jobs.wear import solve_wear
 
     case = load_case(case_file)
     if film and not alignment and not case.bearings:
         raise InputError("case file", str(case_file), "", "a bearing film: [bearing], [operation], [lubricant]")
     if alignment and not film and case.alignment is None:
         raise InputError("case file", str(case_file), "", "a shaft line: [shaft], [[shaft.segments]], [[bearings]]")
-    runs, alignment_run = [], None
+    if wear and not (film or alignment) and case.wear is None:
+        raise InputError("case file", str(case_file), "", "a [wear] section")
+    runs, alignment_run, wear_run = [], None, None
     with console.status("solving") as status:
         if film:
             runs = solve_bearings(case, progress=lambda name: status.update(f"solving {name}"))
         if alignment and case.alignment is not None:
             alignment_run = solve_alignment(case.alignment, progress=lambda name: status.update(f"solving {name}"))
-    return case, runs, alignment_run
+        if wear and case.wear is not None:
+            wear_run = solve_wear(case.wear, log)
+    return case, runs, alignment_run, wear_run
 
 
-def _emit_json(case, runs, alignment, json_path: str | None) -> None:
+def _emit_json(case, runs, alignment, json_path: str | None, wear=None) -> None:
     from shaftline.jobs import dumps, results_document, write_text_atomic
 
     if json_path is None:
         return
-    text = dumps(results_document(case, runs, alignment))
+    text = dumps(results_document(case, runs, alignment, wear))
     if json_path == "-":
         sys.stdout.write(text + "\n")
     else:
@@ -116,11 +135,21 @@ JsonOption = Annotated[
 ]
 
 
-def _job(case_file: Path, json_path: str | None, out: Path | None, film: bool, alignment: bool) -> None:
+def _job(
+    case_file: Path,
+    json_path: str | None,
+    out: Path | None,
+    film: bool,
+    alignment: bool,
+    wear: bool = False,
+    log_file: Path | None = None,
+) -> None:
     from shaftline.jobs import write_outputs
+    from shaftline.wear.service import read_pitch_log
 
     try:
-        case, runs, alignment_run = _solve(case_file, film, alignment)
+        log = read_pitch_log(log_file) if log_file is not None else None
+        case, runs, alignment_run, wear_run = _solve(case_file, film, alignment, wear, log)
     except InputError as error:
         _fail(error)
     if json_path != "-":
@@ -128,9 +157,11 @@ def _job(case_file: Path, json_path: str | None, out: Path | None, film: bool, a
             _print_bearing(runs)
         if alignment_run is not None:
             _print_alignment(alignment_run)
-    _emit_json(case, runs, alignment_run, json_path)
+        if wear_run is not None:
+            _print_wear(wear_run)
+    _emit_json(case, runs, alignment_run, json_path, wear_run)
     if out is not None:
-        write_outputs(case, runs, alignment_run, out, str(case_file))
+        write_outputs(case, runs, alignment_run, out, str(case_file), wear_run)
         if json_path != "-":
             console.print(f"report: {out / 'report.html'}")
 
@@ -162,7 +193,69 @@ def run(
     json_path: JsonOption = None,
 ) -> None:
     """The main job: every analysis the case file asks for, with the HTML report."""
-    _job(case_file, json_path, out or Path("results") / case_file.stem, film=True, alignment=True)
+    _job(case_file, json_path, out or Path("results") / case_file.stem, film=True, alignment=True, wear=True)
+
+
+@wear_app.command("pitchlog")
+def wear_pitchlog(
+    log_file: Annotated[Path, typer.Argument(help="Pitch log CSV: time (s), pitch (% of design pitch).")],
+    case_file: Annotated[Path, typer.Option("--case", help="Case file with a [wear] section.")],
+    json_path: JsonOption = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for figures and the HTML report.")] = None,
+) -> None:
+    """Sliding distance and wear from a pitch log: standard control, active control, fretting."""
+    _job(case_file, json_path, out, film=False, alignment=False, wear=True, log_file=log_file)
+
+
+@wear_app.command("weibull")
+def wear_weibull(
+    data_file: Annotated[Path, typer.Argument(help="CSV with one column of wear depths or rates.")],
+    threshold: Annotated[
+        float | None, typer.Option("--threshold", help="Report P(value > threshold), same unit as the data.")
+    ] = None,
+    confidence: Annotated[float, typer.Option("--confidence", help="Level of the bounds.")] = 0.95,
+    json_path: JsonOption = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for the Weibull figure.")] = None,
+) -> None:
+    """Weibull fit (maximum likelihood) with confidence bounds."""
+    from shaftline.jobs import atomic_folder, dumps, write_text_atomic
+    from shaftline.report import wear_figures
+    from shaftline.wear.reliability import fit_weibull, read_samples
+
+    try:
+        fit = fit_weibull(read_samples(data_file), confidence)
+    except InputError as error:
+        _fail(error)
+    shape_interval, scale_interval = fit.interval("shape"), fit.interval("scale")
+    document = {
+        "shape": fit.shape,
+        "scale": fit.scale,
+        "shape_interval": shape_interval,
+        "scale_interval": scale_interval,
+        "confidence": confidence,
+        "samples": fit.samples.tolist(),
+    }
+    if threshold is not None:
+        low, mid, high = fit.exceedance(threshold)
+        document["exceedance"] = {"threshold": threshold, "lower": low, "estimate": mid, "upper": high}
+    if json_path != "-":
+        console.print(
+            f"Weibull fit of {fit.samples.size} samples: shape {fit.shape:.4g} "
+            f"({shape_interval[0]:.4g}-{shape_interval[1]:.4g}), scale {fit.scale:.4g} "
+            f"({scale_interval[0]:.4g}-{scale_interval[1]:.4g}), {confidence:.0%} intervals"
+        )
+        if threshold is not None:
+            e = document["exceedance"]
+            console.print(f"P(value > {threshold:g}) = {e['estimate']:.4g} ({e['lower']:.4g} - {e['upper']:.4g})")
+    if json_path == "-":
+        sys.stdout.write(dumps(document) + "\n")
+    elif json_path is not None:
+        write_text_atomic(Path(json_path), dumps(document) + "\n")
+    if out is not None:
+        with atomic_folder(out) as folder:
+            marks = {"threshold": threshold} if threshold is not None else None
+            wear_figures.weibull(fit, folder / "weibull.png", 1.0, "value", marks)
+            (folder / "results.json").write_text(dumps(document), encoding="utf-8")
 
 
 def main() -> None:

@@ -33,6 +33,9 @@ SI_UNITS: dict[str, str] = {
     "mass": "kg",
     "force_per_length": "N/m",
     "acceleration": "m/s**2",
+    "wear_rate": "m**3/(N*m)",
+    "time": "s",
+    "frequency": "Hz",
 }
 
 

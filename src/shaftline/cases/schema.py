@@ -26,6 +26,7 @@ from shaftline.cases.alignment_schema import (
     ShaftIn,
     build_alignment,
 )
+from shaftline.cases.wear_schema import WearCase, WearIn, build_wear
 from shaftline.errors import InputError
 from shaftline.film.bearing import OperatingPoint, SolverOptions, SupplyGroove
 from shaftline.film.geometry import BearingGeometry, BentJournal, BoreSegment, FilmProfile
@@ -182,6 +183,8 @@ class CaseIn(_Strict):
     propeller: PropellerIn | None = None
     conditions: list[ConditionIn] = []
     alignment: AlignmentIn | None = None
+    # Service wear of a CPP blade bearing.
+    wear: WearIn | None = None
 
     @model_validator(mode="after")
     def _something_to_do(self) -> CaseIn:
@@ -196,8 +199,10 @@ class CaseIn(_Strict):
             raise ValueError("alignment inputs need a [shaft] with [[shaft.segments]]")
         if self.shaft is not None and not self.bearings:
             raise ValueError("a [shaft] needs its [[bearings]]")
-        if not any(film) and self.shaft is None:
-            raise ValueError("nothing to solve: give a bearing film ([bearing], [operation], [lubricant]) or a [shaft]")
+        if not any(film) and self.shaft is None and self.wear is None:
+            raise ValueError(
+                "nothing to solve: give a bearing film ([bearing], [operation], [lubricant]), a [shaft] or [wear]"
+            )
         return self
 
 
@@ -244,6 +249,7 @@ class Case:
     description: str
     bearings: list[BearingCase] = field(default_factory=list)
     alignment: AlignmentCase | None = None
+    wear: WearCase | None = None
 
 
 def _lubricant(data: LubricantIn) -> tuple[Lubricant, float, float, float | None]:
@@ -368,7 +374,10 @@ def build_case(data: CaseIn, base_dir: Path | None = None) -> Case:
             base_dir,
         )
     bearings = _build_film(data, base_dir) if data.bearing is not None else []
-    return Case(name=data.case.name, description=data.case.description, bearings=bearings, alignment=alignment)
+    wear = build_wear(data.wear, base_dir) if data.wear is not None else None
+    return Case(
+        name=data.case.name, description=data.case.description, bearings=bearings, alignment=alignment, wear=wear
+    )
 
 
 def _build_film(data: CaseIn, base_dir: Path | None) -> list[BearingCase]:

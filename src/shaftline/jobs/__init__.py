@@ -69,9 +69,11 @@ def solve_bearings(case: Case, progress: Callable[[str], None] | None = None) ->
     return runs
 
 
-def results_document(case: Case, runs: list[BearingRun], alignment: AlignmentRun | None = None) -> dict[str, Any]:
+def results_document(
+    case: Case, runs: list[BearingRun], alignment: AlignmentRun | None = None, wear: Any = None
+) -> dict[str, Any]:
     """JSON document: the bearing film's base case at top level, further variants in
-    ``variants``, and the alignment under ``alignment``."""
+    ``variants``, the alignment under ``alignment`` and service wear under ``wear``."""
     document: dict[str, Any] = {"shaftline_version": shaftline.__version__, "case": case.name}
     if runs:
         summaries = [run.summary() for run in runs]
@@ -80,6 +82,8 @@ def results_document(case: Case, runs: list[BearingRun], alignment: AlignmentRun
         document["units"] = {**units(), **EXTRA_UNITS}
     if alignment is not None:
         document["alignment"] = alignment.summary()
+    if wear is not None:
+        document["wear"] = wear.summary()
     return document
 
 
@@ -203,17 +207,21 @@ def bearing_section(runs: list[BearingRun], folder: Path) -> Section:
 
 
 def write_outputs(
-    case: Case, runs: list[BearingRun], alignment: AlignmentRun | None, out: Path, case_file: str
+    case: Case, runs: list[BearingRun], alignment: AlignmentRun | None, out: Path, case_file: str, wear: Any = None
 ) -> Path:
     """Write ``results.json``, figures and ``report.html`` into ``out`` (atomically)."""
+    from shaftline.jobs.wear import wear_section
+
     with atomic_folder(out) as folder:
-        (folder / "results.json").write_text(dumps(results_document(case, runs, alignment)), encoding="utf-8")
+        (folder / "results.json").write_text(dumps(results_document(case, runs, alignment, wear)), encoding="utf-8")
         (folder / "figures").mkdir(exist_ok=True)
         sections = []
         if runs:
             sections.append(bearing_section(runs, folder))
         if alignment is not None:
             sections.append(alignment_section(alignment, folder))
+        if wear is not None:
+            sections.append(wear_section(wear, folder))
         html = render(case.name, case.description, case_file, sections)
         (folder / "report.html").write_text(html, encoding="utf-8")
     return Path(out)

@@ -1,0 +1,1 @@
+"""Wear of bearings in service: Archard's law, sliding distance from pitch logs, Weibull life."""
