@@ -1,0 +1,1 @@
+"""Controllable-pitch-propeller blade bearings: loads, friction torque, fretting, hydraulics."""
