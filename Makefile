@@ -30,6 +30,7 @@ bench:
 	.venv-bench/bin/python benchmarks/bench_bearing.py
 	.venv-bench/bin/python benchmarks/bench_alignment.py
 	.venv-bench/bin/python benchmarks/bench_wear.py
+	.venv-bench/bin/python benchmarks/bench_cpp.py
 
 clean:
 	rm -rf $(VENV) .venv-bench results .pytest_cache
