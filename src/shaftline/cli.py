@@ -28,6 +28,8 @@ bearing_app = typer.Typer(no_args_is_help=True, help="Stern-tube journal bearing
 app.add_typer(bearing_app, name="bearing")
 wear_app = typer.Typer(no_args_is_help=True, help="Service wear of CPP blade bearings.")
 app.add_typer(wear_app, name="wear")
+cpp_app = typer.Typer(no_args_is_help=True, help="CPP blade bearings: friction, fretting, carrier motion.")
+app.add_typer(cpp_app, name="cpp")
 
 console = Console()
 error_console = Console(stderr=True)
@@ -96,18 +98,29 @@ def _print_wear(run) -> None:
         )
 
 
-def _solve(case_file: Path, film: bool, alignment: bool, wear: bool = False, log=None):
+def _print_cpp(run) -> None:
+    from shaftline.jobs.cpp import cpp_table_rows
+
+    _print(*cpp_table_rows(run), "CPP blade bearing")
+
+
+def _solve(case_file: Path, film: bool, alignment: bool, wear: bool = False, log=None, cpp: str = ""):
     from shaftline.jobs import solve_alignment, solve_bearings
+    from shaftline.jobs.cpp import solve_cpp
     from shaftline.jobs.wear import solve_wear
 
     case = load_case(case_file)
+    if cpp and not (film or alignment or wear) and case.cpp is None:
+        raise InputError("case file", str(case_file), "", "a [cpp] section")
+    if cpp == "motion" and not (film or alignment or wear) and case.cpp.motion is None:
+        raise InputError("case file", str(case_file), "", "a [cpp.motion] section for the carrier motion")
     if film and not alignment and not case.bearings:
         raise InputError("case file", str(case_file), "", "a bearing film: [bearing], [operation], [lubricant]")
     if alignment and not film and case.alignment is None:
         raise InputError("case file", str(case_file), "", "a shaft line: [shaft], [[shaft.segments]], [[bearings]]")
     if wear and not (film or alignment) and case.wear is None:
         raise InputError("case file", str(case_file), "", "a [wear] section")
-    runs, alignment_run, wear_run = [], None, None
+    runs, alignment_run, wear_run, cpp_run = [], None, None, None
     with console.status("solving") as status:
         if film:
             runs = solve_bearings(case, progress=lambda name: status.update(f"solving {name}"))
@@ -115,15 +128,18 @@ def _solve(case_file: Path, film: bool, alignment: bool, wear: bool = False, log
             alignment_run = solve_alignment(case.alignment, progress=lambda name: status.update(f"solving {name}"))
         if wear and case.wear is not None:
             wear_run = solve_wear(case.wear, log)
-    return case, runs, alignment_run, wear_run
+        if cpp and case.cpp is not None:
+            status.update("solving the blade bearing")
+            cpp_run = solve_cpp(case.cpp, motion=cpp == "motion")
+    return case, runs, alignment_run, wear_run, cpp_run
 
 
-def _emit_json(case, runs, alignment, json_path: str | None, wear=None) -> None:
+def _emit_json(case, runs, alignment, json_path: str | None, wear=None, cpp=None) -> None:
     from shaftline.jobs import dumps, results_document, write_text_atomic
 
     if json_path is None:
         return
-    text = dumps(results_document(case, runs, alignment, wear))
+    text = dumps(results_document(case, runs, alignment, wear, cpp))
     if json_path == "-":
         sys.stdout.write(text + "\n")
     else:
@@ -143,13 +159,14 @@ def _job(
     alignment: bool,
     wear: bool = False,
     log_file: Path | None = None,
+    cpp: str = "",
 ) -> None:
     from shaftline.jobs import write_outputs
     from shaftline.wear.service import read_pitch_log
 
     try:
         log = read_pitch_log(log_file) if log_file is not None else None
-        case, runs, alignment_run, wear_run = _solve(case_file, film, alignment, wear, log)
+        case, runs, alignment_run, wear_run, cpp_run = _solve(case_file, film, alignment, wear, log, cpp)
     except InputError as error:
         _fail(error)
     if json_path != "-":
@@ -159,9 +176,11 @@ def _job(
             _print_alignment(alignment_run)
         if wear_run is not None:
             _print_wear(wear_run)
-    _emit_json(case, runs, alignment_run, json_path, wear_run)
+        if cpp_run is not None:
+            _print_cpp(cpp_run)
+    _emit_json(case, runs, alignment_run, json_path, wear_run, cpp_run)
     if out is not None:
-        write_outputs(case, runs, alignment_run, out, str(case_file), wear_run)
+        write_outputs(case, runs, alignment_run, out, str(case_file), wear_run, cpp_run)
         if json_path != "-":
             console.print(f"report: {out / 'report.html'}")
 
@@ -193,7 +212,35 @@ def run(
     json_path: JsonOption = None,
 ) -> None:
     """The main job: every analysis the case file asks for, with the HTML report."""
-    _job(case_file, json_path, out or Path("results") / case_file.stem, film=True, alignment=True, wear=True)
+    _job(
+        case_file,
+        json_path,
+        out or Path("results") / case_file.stem,
+        film=True,
+        alignment=True,
+        wear=True,
+        cpp="motion",
+    )
+
+
+@cpp_app.command("fretting")
+def cpp_fretting(
+    case_file: Annotated[Path, typer.Argument(help="Case file (TOML) with a [cpp] section.")],
+    json_path: JsonOption = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for figures and the HTML report.")] = None,
+) -> None:
+    """Friction torque, fretting coefficient and hydraulic pressures over a revolution."""
+    _job(case_file, json_path, out, film=False, alignment=False, cpp="fretting")
+
+
+@cpp_app.command("motion")
+def cpp_motion(
+    case_file: Annotated[Path, typer.Argument(help="Case file (TOML) with [cpp] and [cpp.motion].")],
+    json_path: JsonOption = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for figures and the HTML report.")] = None,
+) -> None:
+    """Fretting motion of the blade carrier over revolutions (oil spring, backlash, friction law)."""
+    _job(case_file, json_path, out, film=False, alignment=False, cpp="motion")
 
 
 @wear_app.command("pitchlog")

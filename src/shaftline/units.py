@@ -36,6 +36,11 @@ SI_UNITS: dict[str, str] = {
     "wear_rate": "m**3/(N*m)",
     "time": "s",
     "frequency": "Hz",
+    "volume": "m**3",
+    "area": "m**2",
+    "inertia": "kg*m**2",
+    "rotational_stiffness": "N*m",
+    "rotational_damping": "N*m*s",
 }
 
 

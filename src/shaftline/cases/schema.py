@@ -26,6 +26,7 @@ from shaftline.cases.alignment_schema import (
     ShaftIn,
     build_alignment,
 )
+from shaftline.cases.cpp_schema import CppCase, CppIn, build_cpp
 from shaftline.cases.wear_schema import WearCase, WearIn, build_wear
 from shaftline.errors import InputError
 from shaftline.film.bearing import OperatingPoint, SolverOptions, SupplyGroove
@@ -185,6 +186,8 @@ class CaseIn(_Strict):
     alignment: AlignmentIn | None = None
     # Service wear of a CPP blade bearing.
     wear: WearIn | None = None
+    # CPP blade-bearing friction, fretting and carrier motion.
+    cpp: CppIn | None = None
 
     @model_validator(mode="after")
     def _something_to_do(self) -> CaseIn:
@@ -199,9 +202,10 @@ class CaseIn(_Strict):
             raise ValueError("alignment inputs need a [shaft] with [[shaft.segments]]")
         if self.shaft is not None and not self.bearings:
             raise ValueError("a [shaft] needs its [[bearings]]")
-        if not any(film) and self.shaft is None and self.wear is None:
+        if not any(film) and self.shaft is None and self.wear is None and self.cpp is None:
             raise ValueError(
-                "nothing to solve: give a bearing film ([bearing], [operation], [lubricant]), a [shaft] or [wear]"
+                "nothing to solve: give a bearing film ([bearing], [operation], [lubricant]), "
+                "a [shaft], [wear] or [cpp]"
             )
         return self
 
@@ -250,6 +254,7 @@ class Case:
     bearings: list[BearingCase] = field(default_factory=list)
     alignment: AlignmentCase | None = None
     wear: WearCase | None = None
+    cpp: CppCase | None = None
 
 
 def _lubricant(data: LubricantIn) -> tuple[Lubricant, float, float, float | None]:
@@ -375,8 +380,14 @@ def build_case(data: CaseIn, base_dir: Path | None = None) -> Case:
         )
     bearings = _build_film(data, base_dir) if data.bearing is not None else []
     wear = build_wear(data.wear, base_dir) if data.wear is not None else None
+    cpp = build_cpp(data.cpp) if data.cpp is not None else None
     return Case(
-        name=data.case.name, description=data.case.description, bearings=bearings, alignment=alignment, wear=wear
+        name=data.case.name,
+        description=data.case.description,
+        bearings=bearings,
+        alignment=alignment,
+        wear=wear,
+        cpp=cpp,
     )
 
 

@@ -70,7 +70,7 @@ def solve_bearings(case: Case, progress: Callable[[str], None] | None = None) ->
 
 
 def results_document(
-    case: Case, runs: list[BearingRun], alignment: AlignmentRun | None = None, wear: Any = None
+    case: Case, runs: list[BearingRun], alignment: AlignmentRun | None = None, wear: Any = None, cpp: Any = None
 ) -> dict[str, Any]:
     """JSON document: the bearing film's base case at top level, further variants in
     ``variants``, the alignment under ``alignment`` and service wear under ``wear``."""
@@ -84,6 +84,8 @@ def results_document(
         document["alignment"] = alignment.summary()
     if wear is not None:
         document["wear"] = wear.summary()
+    if cpp is not None:
+        document["cpp"] = cpp.summary()
     return document
 
 
@@ -207,13 +209,21 @@ def bearing_section(runs: list[BearingRun], folder: Path) -> Section:
 
 
 def write_outputs(
-    case: Case, runs: list[BearingRun], alignment: AlignmentRun | None, out: Path, case_file: str, wear: Any = None
+    case: Case,
+    runs: list[BearingRun],
+    alignment: AlignmentRun | None,
+    out: Path,
+    case_file: str,
+    wear: Any = None,
+    cpp: Any = None,
 ) -> Path:
     """Write ``results.json``, figures and ``report.html`` into ``out`` (atomically)."""
+    from shaftline.jobs.cpp import cpp_section
     from shaftline.jobs.wear import wear_section
 
     with atomic_folder(out) as folder:
-        (folder / "results.json").write_text(dumps(results_document(case, runs, alignment, wear)), encoding="utf-8")
+        document = results_document(case, runs, alignment, wear, cpp)
+        (folder / "results.json").write_text(dumps(document), encoding="utf-8")
         (folder / "figures").mkdir(exist_ok=True)
         sections = []
         if runs:
@@ -222,6 +232,8 @@ def write_outputs(
             sections.append(alignment_section(alignment, folder))
         if wear is not None:
             sections.append(wear_section(wear, folder))
+        if cpp is not None:
+            sections.append(cpp_section(cpp, folder))
         html = render(case.name, case.description, case_file, sections)
         (folder / "report.html").write_text(html, encoding="utf-8")
     return Path(out)
