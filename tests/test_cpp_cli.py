@@ -7,6 +7,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "cpp_blade_bearing.toml"
 
@@ -38,3 +40,43 @@ def test_cpp_bad_input(tmp_path):
     result = shaftline("cpp", "fretting", str(case))
     assert result.returncode == 2 and "cpp.bearing.friction_coefficient" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_load_table_ranking_and_study(tmp_path):
+    """Blade loads from a CSV table (as from a propeller code) give the same coefficient as the
+    harmonics they were sampled from; two propellers are ranked; the study grows with backlash."""
+    import numpy as np
+
+    from shaftline.cases import load_case
+
+    case = load_case(EXAMPLE).cpp
+    loads = case.loads
+    rows = ["angle_deg,force_x,force_y,force_z,moment_x,moment_y,moment_z"]
+    for k in range(loads.angle.size):
+        values = [np.degrees(loads.angle[k]), *loads.hydro_force[k], *loads.hydro_moment[k]]
+        rows.append(",".join(f"{v:.6f}" for v in values))
+    (tmp_path / "loads.csv").write_text("\n".join(rows))
+    text = EXAMPLE.read_text()
+    start, end = text.index("[cpp.loads]"), text.index("[cpp.hydraulics]")
+    table_case = (
+        text[:start] + '[cpp.loads]\ntable = "loads.csv"\nblade_mass = "2.6 t"\n'
+        'centre_of_gravity = ["0.12 m", "-0.06 m", "0.55 m"]\n\n' + text[end:]
+    )
+    (tmp_path / "table.toml").write_text(
+        table_case.replace('name = "CPP blade bearing, fretting check"', 'name = "from a table"')
+    )
+    harmonic = json.loads(shaftline("cpp", "fretting", str(EXAMPLE), "--json", "-").stdout)["cpp"]
+    tabled = json.loads(shaftline("cpp", "fretting", str(tmp_path / "table.toml"), "--json", "-").stdout)["cpp"]
+    assert tabled["k_fret_max"] == pytest.approx(harmonic["k_fret_max"], rel=1e-6)
+    calmer = text.replace('amplitude = "30 kN*m"', 'amplitude = "12 kN*m"').replace(
+        'name = "CPP blade bearing, fretting check"', 'name = "calmer wake"'
+    )
+    (tmp_path / "calm.toml").write_text(calmer)
+    ranking = json.loads(shaftline("cpp", "fretting", str(EXAMPLE), str(tmp_path / "calm.toml"), "--json", "-").stdout)
+    assert [r["case"] for r in ranking["ranking"]] == ["CPP blade bearing, fretting check", "calmer wake"]
+    study = json.loads(shaftline("cpp", "motion", str(EXAMPLE), "--json", "-").stdout)["cpp"]["study"]
+    amplitudes = study["fretting_amplitude"]
+    assert study["parameter"] == "backlash" and all(a < b for a, b in zip(amplitudes, amplitudes[1:], strict=False))
+    (tmp_path / "loads.csv").write_text("\n".join(rows[:3] + ["nan" + rows[3][rows[3].index(",") :]] + rows[4:]))
+    result = shaftline("cpp", "fretting", str(tmp_path / "table.toml"))
+    assert result.returncode == 2 and "row 4" in result.stderr

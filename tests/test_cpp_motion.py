@@ -88,3 +88,23 @@ def test_bad_motion_input():
         )
     with pytest.raises(InputError):
         simulate_carrier(model(), 0)
+
+
+def test_parameter_study_of_sect_4_7():
+    """Seed Sect. 4.7.1: a mean (holding) hydraulic moment does not change the amplitude, it
+    offsets the motion; Sect. 4.7.2: the amplitude grows with the spindle torque (the seed
+    finds -25 % / +25 % for 0.8 / 1.2 times the design torque; here, with the illustrative
+    loads, a monotone rise)."""
+    from shaftline.cpp.motion import parameter_study
+
+    base = model(friction="static")
+    scaled = [m.amplitude[-1] for m in parameter_study(base, "spindle_scale", [0.8, 1.0, 1.2], 4)]
+    assert scaled[0] < scaled[1] < scaled[2]
+    held = parameter_study(base, "holding_moment", [0.0, 3.0e4, -3.0e4], 4)
+    amplitudes = [m.amplitude[-1] for m in held]
+    assert amplitudes[1] == pytest.approx(amplitudes[0], rel=0.02)
+    assert amplitudes[2] == pytest.approx(amplitudes[0], rel=0.02)
+    means = [float(np.mean(m.rotation)) for m in held]
+    assert means[1] < means[0] < means[2]  # the holding moment offsets the motion
+    with pytest.raises(InputError):
+        parameter_study(base, "colour", [1], 1)

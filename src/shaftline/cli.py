@@ -225,12 +225,48 @@ def run(
 
 @cpp_app.command("fretting")
 def cpp_fretting(
-    case_file: Annotated[Path, typer.Argument(help="Case file (TOML) with a [cpp] section.")],
+    case_files: Annotated[list[Path], typer.Argument(help="Case file(s) (TOML) with a [cpp] section.")],
     json_path: JsonOption = None,
     out: Annotated[Path | None, typer.Option("--out", help="Folder for figures and the HTML report.")] = None,
 ) -> None:
-    """Friction torque, fretting coefficient and hydraulic pressures over a revolution."""
-    _job(case_file, json_path, out, film=False, alignment=False, cpp="fretting")
+    """Friction torque, fretting coefficient and hydraulic pressures over a revolution; with
+    several case files, the propellers ranked by fretting risk."""
+    if len(case_files) == 1:
+        _job(case_files[0], json_path, out, film=False, alignment=False, cpp="fretting")
+        return
+    from shaftline.cpp.fretting import rank_by_fretting_risk
+    from shaftline.jobs import dumps, write_text_atomic
+    from shaftline.jobs.cpp import solve_cpp
+
+    coefficients = {}
+    try:
+        for path in case_files:
+            case = load_case(path)
+            if case.cpp is None:
+                raise InputError("case file", str(path), "", "a [cpp] section")
+            coefficients[case.name] = solve_cpp(case.cpp, motion=False).coefficient
+    except InputError as error:
+        _fail(error)
+    ranking = rank_by_fretting_risk(coefficients)
+    document = {
+        "ranking": [
+            {"case": name, "max_abs_k_fret": value, "gross_fretting_both_ways": coefficients[name].fretting}
+            for name, value in ranking
+        ]
+    }
+    if json_path != "-":
+        _print(
+            ["case", "max |k_fret|", "fretting both ways"],
+            [
+                [r["case"], f"{r['max_abs_k_fret']:.3f}", "yes" if r["gross_fretting_both_ways"] else "no"]
+                for r in document["ranking"]
+            ],
+            "Fretting risk, highest first",
+        )
+    if json_path == "-":
+        sys.stdout.write(dumps(document) + "\n")
+    elif json_path is not None:
+        write_text_atomic(Path(json_path), dumps(document) + "\n")
 
 
 @cpp_app.command("motion")

@@ -28,8 +28,9 @@ class HarmonicIn(_Strict):
 
 
 class LoadsIn(_Strict):
-    mean_force: list[Quantity]
-    mean_moment: list[Quantity]
+    table: str | None = None
+    mean_force: list[Quantity] | None = None
+    mean_moment: list[Quantity] | None = None
     harmonics: list[HarmonicIn] = []
     centrifugal_force: list[Quantity] | None = None
     centrifugal_moment: list[Quantity] | None = None
@@ -69,6 +70,12 @@ class MotionIn(_Strict):
     threshold_velocity: Quantity = 1e-4
 
 
+class StudyIn(_Strict):
+    parameter: str
+    values: list[Quantity | str]
+    revolutions: int = 10
+
+
 class CppIn(_Strict):
     blades: int
     shaft_speed: Quantity
@@ -78,6 +85,43 @@ class CppIn(_Strict):
     loads: LoadsIn
     hydraulics: HydraulicsIn
     motion: MotionIn | None = None
+    study: StudyIn | None = None
+
+
+STUDY_KINDS = {
+    "holding_moment": "moment",
+    "backlash": "length",
+    "oil_stiffness": "stiffness",
+    "water_inertia": "inertia",
+    "spindle_scale": "dimensionless",
+}
+
+
+def read_load_table(path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Blade loads over a revolution from CSV: angle_deg, force_x, force_y, force_z (N),
+    moment_x, moment_y, moment_z (N m), one row per blade angle within one turn."""
+    from pathlib import Path
+
+    path = Path(path)
+    columns = ["angle_deg", "force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
+    try:
+        with path.open(encoding="utf-8") as handle:
+            header = [name.strip() for name in handle.readline().split(",")]
+    except OSError:
+        raise InputError("cpp.loads.table", str(path), "", "an existing CSV file") from None
+    if header != columns:
+        raise InputError("cpp.loads.table", str(path), "", "columns " + ", ".join(columns))
+    try:
+        table = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    except ValueError as exc:
+        raise InputError("cpp.loads.table", str(path), "", f"numbers in every field ({exc})") from None
+    bad = np.argwhere(~np.isfinite(table))
+    if bad.size:
+        raise InputError(f"{path.name}: row {int(bad[0][0]) + 2}, {columns[int(bad[0][1])]}", "NaN", "", "a number")
+    angle = np.radians(table[:, 0])
+    if angle.size < 8 or np.any(np.diff(angle) <= 0) or angle[-1] - angle[0] >= 2 * math.pi:
+        raise InputError("cpp.loads.table", str(path), "", "at least 8 increasing angles within one turn")
+    return angle, table[:, 1:4], table[:, 4:7]
 
 
 @dataclass(frozen=True)
@@ -97,6 +141,7 @@ class CppCase:
     other_friction: float
     counterbalance_pressure: float
     motion: dict | None
+    study: dict | None = None
 
 
 def _vector(values: list[Quantity], kind: str, where: str) -> np.ndarray:
@@ -105,7 +150,7 @@ def _vector(values: list[Quantity], kind: str, where: str) -> np.ndarray:
     return np.array([to_si(v, kind, f"{where}[{k}]") for k, v in enumerate(values)])
 
 
-def build_cpp(data: CppIn) -> CppCase:
+def build_cpp(data: CppIn, base_dir=None) -> CppCase:
     if not 2 <= data.blades <= 8:
         raise InputError("cpp.blades", data.blades, "", "2 to 8")
     speed = to_si(data.shaft_speed, "speed", "cpp.shaft_speed")
@@ -148,17 +193,26 @@ def build_cpp(data: CppIn) -> CppCase:
                 to_si(h.phase, "angle", f"cpp.loads.harmonics[{k}].phase"),
             )
         )
-    if ld.points < 36:
-        raise InputError("cpp.loads.points", ld.points, "", ">= 36 per revolution")
-    angle = np.linspace(0.0, 2 * math.pi, ld.points, endpoint=False)
-    loads = BladeLoads.from_harmonics(
-        angle,
-        _vector(ld.mean_force, "force", "cpp.loads.mean_force"),
-        _vector(ld.mean_moment, "moment", "cpp.loads.mean_moment"),
-        harmonics,
-        f_ce,
-        m_ce,
-    )
+    if ld.table is not None:
+        from pathlib import Path
+
+        path = Path(ld.table)
+        angle, force, moment = read_load_table(path if path.is_absolute() else (base_dir or Path.cwd()) / path)
+        loads = BladeLoads(angle, force, moment, f_ce, m_ce)
+    else:
+        if ld.mean_force is None or ld.mean_moment is None:
+            raise InputError("cpp.loads.mean_force", "missing", "", "mean_force and mean_moment, or a load table")
+        if ld.points < 36:
+            raise InputError("cpp.loads.points", ld.points, "", ">= 36 per revolution")
+        angle = np.linspace(0.0, 2 * math.pi, ld.points, endpoint=False)
+        loads = BladeLoads.from_harmonics(
+            angle,
+            _vector(ld.mean_force, "force", "cpp.loads.mean_force"),
+            _vector(ld.mean_moment, "moment", "cpp.loads.mean_moment"),
+            harmonics,
+            f_ce,
+            m_ce,
+        )
     hy = data.hydraulics
     volume = to_si(hy.oil_volume, "volume", "cpp.hydraulics.oil_volume")
     area = to_si(hy.yoke_area, "area", "cpp.hydraulics.yoke_area")
@@ -179,6 +233,18 @@ def build_cpp(data: CppIn) -> CppCase:
             "stribeck_velocity": to_si(m.stribeck_velocity, "speed", "cpp.motion.stribeck_velocity"),
             "threshold_velocity": to_si(m.threshold_velocity, "speed", "cpp.motion.threshold_velocity"),
         }
+    study = None
+    if data.study is not None:
+        st = data.study
+        if st.parameter == "friction":
+            values = [str(v) for v in st.values]
+        elif st.parameter in STUDY_KINDS:
+            values = [to_si(v, STUDY_KINDS[st.parameter], f"cpp.study.values[{k}]") for k, v in enumerate(st.values)]
+        else:
+            raise InputError("cpp.study.parameter", st.parameter, "", "one of friction, " + ", ".join(STUDY_KINDS))
+        if data.motion is None:
+            raise InputError("cpp.study", st.parameter, "", "a [cpp.motion] section to vary")
+        study = {"parameter": st.parameter, "values": values, "revolutions": st.revolutions}
     return CppCase(
         data.blades,
         speed,
@@ -193,4 +259,5 @@ def build_cpp(data: CppIn) -> CppCase:
         to_si(hy.other_friction, "force", "cpp.hydraulics.other_friction"),
         to_si(hy.counterbalance_pressure, "pressure", "cpp.hydraulics.counterbalance_pressure"),
         motion,
+        study,
     )

@@ -380,7 +380,7 @@ def build_case(data: CaseIn, base_dir: Path | None = None) -> Case:
         )
     bearings = _build_film(data, base_dir) if data.bearing is not None else []
     wear = build_wear(data.wear, base_dir) if data.wear is not None else None
-    cpp = build_cpp(data.cpp) if data.cpp is not None else None
+    cpp = build_cpp(data.cpp, base_dir) if data.cpp is not None else None
     return Case(
         name=data.case.name,
         description=data.case.description,

@@ -60,6 +60,7 @@ def integrate(
     step,
     steps,
     every,
+    holding,
 ):
     """States (phi, w, z) sampled every ``every`` steps; returns phi, w, hydraulic force."""
     out = steps // every + 1
@@ -73,7 +74,7 @@ def integrate(
     res = np.zeros(3)
     for n in range(1, steps + 1):
         t = n * step
-        m_sp = _interp_periodic(speed * t, angle, spindle)
+        m_sp = _interp_periodic(speed * t, angle, spindle) - holding
         q_c = _interp_periodic(speed * t, angle, coulomb)
         p_new, w_new, z_new = phi, w, z
         for _ in range(12):

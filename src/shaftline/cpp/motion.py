@@ -59,6 +59,9 @@ class CarrierModel:
         v_s, rad/s (0.002).
     threshold_velocity : float
         v_th of the static law, rad/s.
+    holding_moment : float
+        Mean hydraulic moment on the blade from the holding pressure, N m (Eq. 4.24; the
+        seed takes it zero, which balances the mean spindle torque).
     """
 
     inertia: float
@@ -78,6 +81,7 @@ class CarrierModel:
     static_ratio: float = 1.1
     stribeck_velocity: float = 0.002
     threshold_velocity: float = 1e-5
+    holding_moment: float = 0.0
 
     def __post_init__(self) -> None:
         for name in (
@@ -157,7 +161,7 @@ def simulate_carrier(
 
     def tables(t):
         psi = (model.speed * t - model.angle[0]) % (2 * np.pi) + model.angle[0]
-        return np.interp(psi, table_angle, table_sp), np.interp(psi, table_angle, table_qc)
+        return np.interp(psi, table_angle, table_sp) - model.holding_moment, np.interp(psi, table_angle, table_qc)
 
     def spring(phi):
         travel = r_pin * (np.sin(model.pitch_angle + phi) - sin0)
@@ -262,6 +266,7 @@ def _simulate_compiled(model: CarrierModel, revolutions: int, samples: int, step
         step,
         revolutions * steps,
         steps // samples,
+        model.holding_moment,
     )
     time = np.arange(phi.size) * step * (steps // samples)
     return _motion(model, time, phi, w, force, revolutions, samples)
@@ -285,3 +290,26 @@ def _motion(model, time, phi, w, force, revolutions, per) -> CarrierMotion:
         np.array(sliding),
         np.array(fluctuation),
     )
+
+
+#: Parameters a study may vary: model fields, or "spindle_scale" (multiplies the spindle torque,
+#: as seed Sect. 4.7.2 does with 0.8 and 1.2).
+STUDY_PARAMETERS = ("holding_moment", "spindle_scale", "backlash", "friction", "oil_stiffness", "water_inertia")
+
+
+def parameter_study(model: CarrierModel, parameter: str, values: list, revolutions: int = 10) -> list[CarrierMotion]:
+    """Fretting motion for each value of one parameter (seed Sect. 4.7)."""
+    from dataclasses import replace
+
+    if parameter not in STUDY_PARAMETERS:
+        raise InputError("cpp.study.parameter", parameter, "", "one of " + ", ".join(STUDY_PARAMETERS))
+    if not values:
+        raise InputError("cpp.study.values", "[]", "", "at least one value")
+    results = []
+    for value in values:
+        if parameter == "spindle_scale":
+            changed = replace(model, spindle_torque=float(value) * np.asarray(model.spindle_torque))
+        else:
+            changed = replace(model, **{parameter: value})
+        results.append(simulate_carrier(changed, revolutions))
+    return results

@@ -19,7 +19,7 @@ from shaftline.cpp.fretting import (
 )
 from shaftline.cpp.hydraulics import hydraulic_pressures
 from shaftline.cpp.loads import FrictionTorque, friction_torque
-from shaftline.cpp.motion import CarrierModel, CarrierMotion, simulate_carrier
+from shaftline.cpp.motion import CarrierModel, CarrierMotion, parameter_study, simulate_carrier
 from shaftline.report import cpp_figures
 from shaftline.report.html import Section, image, table
 
@@ -33,6 +33,7 @@ class CppRun:
     critical: tuple[float | None, float | None]
     pressures: dict[str, float]
     motion: CarrierMotion | None
+    study: list[tuple[Any, float]] | None = None
 
     def summary(self) -> dict[str, Any]:
         c = self.coefficient
@@ -61,6 +62,12 @@ class CppRun:
                 "sliding_per_revolution": float(self.motion.sliding_per_revolution[-1]),
                 "pressure_fluctuation": float(self.motion.force_fluctuation[-1] / self.case.yoke_area),
             }
+        if self.study is not None:
+            out["study"] = {
+                "parameter": self.case.study["parameter"],
+                "values": [v for v, _ in self.study],
+                "fretting_amplitude": [a for _, a in self.study],
+            }
         return out
 
 
@@ -81,6 +88,7 @@ def solve_cpp(case: CppCase, motion: bool = True) -> CppRun:
         case.counterbalance_pressure,
     )
     carrier = None
+    study = None
     if motion and case.motion is not None:
         m = case.motion
         model = CarrierModel(
@@ -102,7 +110,20 @@ def solve_cpp(case: CppCase, motion: bool = True) -> CppRun:
             threshold_velocity=m["threshold_velocity"],
         )
         carrier = simulate_carrier(model, m["revolutions"])
-    return CppRun(case, friction, coefficient, f_fret, critical_values(coefficient, f_fret), pressures, carrier)
+        if case.study is not None:
+            st = case.study
+            motions = parameter_study(model, st["parameter"], st["values"], st["revolutions"])
+            study = [(value, float(result.amplitude[-1])) for value, result in zip(st["values"], motions, strict=True)]
+    return CppRun(
+        case,
+        friction,
+        coefficient,
+        f_fret,
+        critical_values(coefficient, f_fret),
+        pressures,
+        carrier,
+        study if carrier is not None and case.study is not None else None,
+    )
 
 
 def cpp_table_rows(run: CppRun) -> tuple[list[str], list[list[str]]]:
@@ -144,4 +165,8 @@ def cpp_section(run: CppRun, folder: Path) -> Section:
     if run.motion is not None:
         path = cpp_figures.motion(run, figure_dir / "cpp_motion.png")
         parts.append(image(f"figures/{path.name}", "fretting motion"))
+    if run.study is not None:
+        parameter = run.case.study["parameter"]
+        parts.append(Markup(f"<h3>Parameter study: {parameter}</h3>"))
+        parts.append(table([parameter, "fretting amplitude [um]"], [[str(v), f"{a * 1e6:.1f}"] for v, a in run.study]))
     return Section("CPP blade bearing: friction and fretting", Markup("").join(parts))
