@@ -7,8 +7,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict
 
+from shaftline.cases._base import Quantity, Strict
+from shaftline.csvio import read_columns
 from shaftline.errors import InputError
 from shaftline.shaft.model import (
     Bearing,
@@ -23,14 +24,8 @@ from shaftline.shaft.model import (
 from shaftline.shaft.rules import Rule, load_rules, rule_from_dict
 from shaftline.units import to_si
 
-Quantity = float | int | str
 
-
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-
-class SegmentIn(_Strict):
+class SegmentIn(Strict):
     length: Quantity
     outer_diameter: Quantity
     inner_diameter: Quantity = 0.0
@@ -44,7 +39,7 @@ class SegmentIn(_Strict):
     name: str = ""
 
 
-class ShaftIn(_Strict):
+class ShaftIn(Strict):
     segments: list[SegmentIn]
     beam_theory: str = "timoshenko"
     element_length: Quantity = 0.25
@@ -55,7 +50,7 @@ class ShaftIn(_Strict):
     density: Quantity = 7850.0
 
 
-class PropellerIn(_Strict):
+class PropellerIn(Strict):
     x: Quantity
     mass: Quantity
     material_density: Quantity = 7600.0
@@ -63,7 +58,7 @@ class PropellerIn(_Strict):
     immersed_fraction: float = 1.0
 
 
-class AlignmentBearingIn(_Strict):
+class AlignmentBearingIn(Strict):
     name: str
     x: Quantity
     length: Quantity
@@ -79,7 +74,7 @@ class AlignmentBearingIn(_Strict):
     slope: Quantity = 0.0
 
 
-class PointLoadIn(_Strict):
+class PointLoadIn(Strict):
     x: Quantity
     force_y: Quantity = 0.0
     force_z: Quantity = 0.0
@@ -88,13 +83,13 @@ class PointLoadIn(_Strict):
     name: str = ""
 
 
-class MassIn(_Strict):
+class MassIn(Strict):
     x: Quantity
     mass: Quantity
     name: str = ""
 
 
-class DistributedLoadIn(_Strict):
+class DistributedLoadIn(Strict):
     x_start: Quantity
     x_end: Quantity
     load_y: Quantity = 0.0
@@ -102,7 +97,7 @@ class DistributedLoadIn(_Strict):
     name: str = ""
 
 
-class ConditionIn(_Strict):
+class ConditionIn(Strict):
     name: str
     offsets_y: dict[str, Quantity] = {}
     offsets_z: dict[str, Quantity] = {}
@@ -110,39 +105,39 @@ class ConditionIn(_Strict):
     loads: list[PointLoadIn] = []
 
 
-class OptimiseIn(_Strict):
+class OptimiseIn(Strict):
     objective: str = "aft_slope"
     adjustable: list[str] | None = None
     bound: Quantity = 5e-3
 
 
-class TemporarySupportIn(_Strict):
+class TemporarySupportIn(Strict):
     name: str
     x: Quantity
     offset_y: Quantity = 0.0
 
 
-class SagGapIn(_Strict):
+class SagGapIn(Strict):
     flange_x: Quantity
     flange_diameter: Quantity | None = None
     condition: str | None = None
     temporary_supports: list[TemporarySupportIn] = []
 
 
-class JackUpIn(_Strict):
+class JackUpIn(Strict):
     bearing: str
     jack_x: Quantity
     condition: str | None = None
     measured_curve: str | None = None
 
 
-class MeasuredReactionsIn(_Strict):
+class MeasuredReactionsIn(Strict):
     condition: str | None = None
     values: dict[str, Quantity]
     reference: list[str] | None = None
 
 
-class AlignmentIn(_Strict):
+class AlignmentIn(Strict):
     rules_file: str | None = None
     rules: list[dict] = []
     optimise: OptimiseIn | None = None
@@ -204,20 +199,7 @@ def _condition_name(name: str | None, line: ShaftLine, where: str) -> Condition:
 
 def read_jack_curve(path: Path) -> tuple[np.ndarray, np.ndarray]:
     """A measured jack-up curve from CSV: columns ``load`` (N) and ``lift`` (m)."""
-    where = "alignment.jack_up.measured_curve"
-    try:
-        table = np.genfromtxt(path, delimiter=",", names=True, dtype=float, encoding="utf-8")
-    except OSError:
-        raise InputError(where, str(path), "", "an existing CSV file") from None
-    except ValueError as exc:
-        raise InputError(where, str(path), "", f"a CSV of numbers ({exc})") from None
-    if set(table.dtype.names or ()) != {"load", "lift"}:
-        raise InputError(where, str(path), "", "columns load (N) and lift (m)")
-    table = np.atleast_1d(table)
-    for column in ("load", "lift"):
-        bad = np.flatnonzero(~np.isfinite(table[column]))
-        if bad.size:
-            raise InputError(f"{path.name}: row {int(bad[0]) + 2}, {column}", "NaN", "", "a number")
+    table = read_columns(path, ["load", "lift"], "alignment.jack_up.measured_curve")
     return table["load"], table["lift"]
 
 

@@ -6,28 +6,23 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict
 
+from shaftline.cases._base import Quantity, Strict
 from shaftline.cpp.hydraulics import oil_spring_stiffness
 from shaftline.cpp.loads import BladeBearing, BladeLoads, centrifugal_point_mass
+from shaftline.csvio import read_columns
 from shaftline.errors import InputError
 from shaftline.units import to_si
 
-Quantity = float | int | str
 
-
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-
-class HarmonicIn(_Strict):
+class HarmonicIn(Strict):
     component: str  # force_x ... moment_z
     order: int
     amplitude: Quantity
     phase: Quantity = 0.0
 
 
-class LoadsIn(_Strict):
+class LoadsIn(Strict):
     table: str | None = None
     mean_force: list[Quantity] | None = None
     mean_moment: list[Quantity] | None = None
@@ -39,7 +34,7 @@ class LoadsIn(_Strict):
     points: int = 720
 
 
-class BladeBearingIn(_Strict):
+class BladeBearingIn(Strict):
     radius: Quantity
     friction_coefficient: float
     axial_radius: Quantity
@@ -48,7 +43,7 @@ class BladeBearingIn(_Strict):
     youngs_modulus: Quantity = 120e9
 
 
-class HydraulicsIn(_Strict):
+class HydraulicsIn(Strict):
     bulk_modulus: Quantity = 1.5e9
     oil_volume: Quantity
     yoke_area: Quantity
@@ -59,7 +54,7 @@ class HydraulicsIn(_Strict):
     column_length: Quantity | None = None
 
 
-class MotionIn(_Strict):
+class MotionIn(Strict):
     inertia: Quantity
     water_inertia: Quantity = 0.0
     friction: str = "lugre"
@@ -70,13 +65,13 @@ class MotionIn(_Strict):
     threshold_velocity: Quantity = 1e-4
 
 
-class StudyIn(_Strict):
+class StudyIn(Strict):
     parameter: str
     values: list[Quantity | str]
     revolutions: int = 10
 
 
-class CppIn(_Strict):
+class CppIn(Strict):
     blades: int
     shaft_speed: Quantity
     propeller_diameter: Quantity
@@ -100,24 +95,9 @@ STUDY_KINDS = {
 def read_load_table(path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Blade loads over a revolution from CSV: angle_deg, force_x, force_y, force_z (N),
     moment_x, moment_y, moment_z (N m), one row per blade angle within one turn."""
-    from pathlib import Path
-
-    path = Path(path)
     columns = ["angle_deg", "force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
-    try:
-        with path.open(encoding="utf-8") as handle:
-            header = [name.strip() for name in handle.readline().split(",")]
-    except OSError:
-        raise InputError("cpp.loads.table", str(path), "", "an existing CSV file") from None
-    if header != columns:
-        raise InputError("cpp.loads.table", str(path), "", "columns " + ", ".join(columns))
-    try:
-        table = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    except ValueError as exc:
-        raise InputError("cpp.loads.table", str(path), "", f"numbers in every field ({exc})") from None
-    bad = np.argwhere(~np.isfinite(table))
-    if bad.size:
-        raise InputError(f"{path.name}: row {int(bad[0][0]) + 2}, {columns[int(bad[0][1])]}", "NaN", "", "a number")
+    data = read_columns(path, columns, "cpp.loads.table", order_matters=True)
+    table = np.column_stack([data[name] for name in columns])
     angle = np.radians(table[:, 0])
     if angle.size < 8 or np.any(np.diff(angle) <= 0) or angle[-1] - angle[0] >= 2 * math.pi:
         raise InputError("cpp.loads.table", str(path), "", "at least 8 increasing angles within one turn")

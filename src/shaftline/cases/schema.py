@@ -12,8 +12,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, model_validator
+from pydantic import model_validator
 
+from shaftline.cases._base import Quantity, Strict
 from shaftline.cases.alignment_schema import (
     AlignmentBearingIn,
     AlignmentCase,
@@ -28,13 +29,12 @@ from shaftline.cases.alignment_schema import (
 )
 from shaftline.cases.cpp_schema import CppCase, CppIn, build_cpp
 from shaftline.cases.wear_schema import WearCase, WearIn, build_wear
+from shaftline.csvio import read_columns
 from shaftline.errors import InputError
 from shaftline.film.bearing import OperatingPoint, SolverOptions, SupplyGroove
 from shaftline.film.geometry import BearingGeometry, BentJournal, BoreSegment, FilmProfile
 from shaftline.lubricants import Lubricant
 from shaftline.units import to_si
-
-Quantity = float | int | str
 
 ROTATIONS = {
     "clockwise": 1,
@@ -47,16 +47,12 @@ ROTATIONS = {
 }
 
 
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-
-class CaseInfo(_Strict):
+class CaseInfo(Strict):
     name: str = "unnamed case"
     description: str = ""
 
 
-class BoreSegmentIn(_Strict):
+class BoreSegmentIn(Strict):
     length_fraction: float
     slope: Quantity | None = None
     slope_ratio: float | None = None
@@ -69,18 +65,18 @@ class BoreSegmentIn(_Strict):
         return self
 
 
-class BentJournalIn(_Strict):
+class BentJournalIn(Strict):
     z: list[Quantity]
     dy: list[Quantity]
     dz: list[Quantity] | None = None
 
 
-class FilmProfileIn(_Strict):
+class FilmProfileIn(Strict):
     file: str
     length_unit: str = "m"
 
 
-class BearingIn(_Strict):
+class BearingIn(Strict):
     length: Quantity
     diameter: Quantity
     radial_clearance: Quantity | None = None
@@ -98,13 +94,13 @@ class BearingIn(_Strict):
         return self
 
 
-class GrooveIn(_Strict):
+class GrooveIn(Strict):
     angle: Quantity
     pressure: Quantity = 0.0
     length_fraction: float = 1.0
 
 
-class OperationIn(_Strict):
+class OperationIn(Strict):
     speed: Quantity
     load: Quantity
     load_horizontal: Quantity = 0.0
@@ -126,7 +122,7 @@ class OperationIn(_Strict):
         return self
 
 
-class LubricantIn(_Strict):
+class LubricantIn(Strict):
     viscosity: Quantity | None = None
     preset: str | None = None
     temperature: Quantity | None = None
@@ -151,7 +147,7 @@ class LubricantIn(_Strict):
         return self
 
 
-class SolverIn(_Strict):
+class SolverIn(Strict):
     axial_nodes: int = 41
     circumferential_nodes: int = 120
     cavitation: str = "reynolds"
@@ -160,14 +156,14 @@ class SolverIn(_Strict):
     min_film_floor: float = 1e-3
 
 
-class VariantIn(_Strict):
+class VariantIn(Strict):
     name: str
     bore: list[BoreSegmentIn] | None = None
     misalignment_ratio_vertical: float | None = None
     tilt_vertical: Quantity | None = None
 
 
-class CaseIn(_Strict):
+class CaseIn(Strict):
     case: CaseInfo = CaseInfo()
     # Stern-tube bearing film (all three or none).
     bearing: BearingIn | None = None
@@ -335,23 +331,10 @@ def read_film_profile(path: Path, length_unit: str = "m") -> FilmProfile:
     point of a full regular grid (any order); z and delta in ``length_unit``."""
     field_name = "bearing.film_profile.file"
     scale = to_si(f"1 {length_unit}", "length", "bearing.film_profile.length_unit")
-    try:
-        table = np.genfromtxt(path, delimiter=",", names=True, dtype=float, encoding="utf-8")
-    except OSError:
-        raise InputError(field_name, str(path), "", "an existing CSV file") from None
-    except ValueError as exc:
-        raise InputError(field_name, str(path), "", f"a CSV of numbers ({exc})") from None
-    names = table.dtype.names or ()
-    if set(names) != {"theta_deg", "z", "delta"}:
-        raise InputError(field_name, str(path), "", "columns theta_deg, z, delta")
-    table = np.atleast_1d(table)
-    for column in names:
-        bad = np.flatnonzero(~np.isfinite(table[column]))
-        if bad.size:
-            raise InputError(f"{path.name}: row {int(bad[0]) + 2}, {column}", "NaN", "", "a number")
+    table = read_columns(path, ["theta_deg", "z", "delta"], field_name)
     theta = np.unique(table["theta_deg"])
     z = np.unique(table["z"])
-    if theta.size * z.size != table.size:
+    if theta.size * z.size != table["z"].size:
         raise InputError(field_name, str(path), "", f"a full grid of {theta.size} angles x {z.size} stations")
     delta = np.full((z.size, theta.size), np.nan)
     delta[np.searchsorted(z, table["z"]), np.searchsorted(theta, table["theta_deg"])] = table["delta"]

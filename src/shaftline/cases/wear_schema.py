@@ -5,47 +5,41 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict
 
+from shaftline.cases._base import Quantity, Strict
 from shaftline.errors import InputError
 from shaftline.units import to_si
 from shaftline.wear.archard import material_pairs
 from shaftline.wear.service import ServiceProfile
 
-Quantity = float | int | str
 
-
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-
-class ServiceIn(_Strict):
+class ServiceIn(Strict):
     voyages_per_day: float
     days_per_year: float
     years: float
     voyage_duration: Quantity | None = None
 
 
-class MimoIn(_Strict):
+class MimoIn(Strict):
     amplitude: float  # % of design pitch
     frequency: Quantity
     start: Quantity
     end: Quantity
 
 
-class FrettingIn(_Strict):
+class FrettingIn(Strict):
     amplitude: Quantity
     shaft_speed: Quantity
 
 
-class WeibullIn(_Strict):
+class WeibullIn(Strict):
     wear_depths: list[Quantity]
     test_pressure: Quantity
     test_distance: Quantity
     confidence: float = 0.95
 
 
-class WearIn(_Strict):
+class WearIn(Strict):
     design_pitch_angle: Quantity
     bearing_radius: Quantity
     contact_pressure: Quantity
