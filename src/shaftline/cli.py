@@ -71,11 +71,11 @@ def _print_bearing(runs) -> None:
 
 
 def _print_alignment(run) -> None:
-    from shaftline.jobs import _check_rows, alignment_table_rows
+    from shaftline.jobs import alignment_table_rows, rule_check_rows
 
     headers, rows = alignment_table_rows(run)
     _print(headers, rows, "Shaft alignment")
-    failed = [row for row in _check_rows(run.checks) if row[0] == "FAIL"]
+    failed = [row for row in rule_check_rows(run.checks) if row[0] == "FAIL"]
     if failed:
         _print(
             ["result", "rule", "condition", "bearing", "value", "limit", "source", "confidence"],

@@ -55,12 +55,6 @@ def long_bearing_pressure(theta: np.ndarray, epsilon: float) -> np.ndarray:
     return e * np.sin(theta) * (2.0 + e * np.cos(theta)) / ((2.0 + e**2) * (1.0 + e * np.cos(theta)) ** 2)
 
 
-def sommerfeld_from_load(radial: float, tangential: float) -> float:
-    """Sommerfeld number ``S = (R/c)^2 eta N / P`` from dimensionless load components."""
-    # W = w * eta omega R L (R/c)^2, P = W / (L D) and N = omega / (2 pi) give S = 1 / (pi w).
-    return 1.0 / (np.pi * np.hypot(radial, tangential))
-
-
 def attitude_angle(radial: float, tangential: float) -> float:
     """Attitude angle, rad, from the load components along and across the line of centres."""
     return float(np.arctan2(tangential, radial))

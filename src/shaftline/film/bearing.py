@@ -338,6 +338,10 @@ class JournalBearing:
         self._d_theta = grid.d_theta
         self._d_z = grid.dz / radius
         self._reynolds_solver: ReynoldsSolver | None = None
+        # Integration weights per node over the bore area, m^2 (trapezoid in z, periodic in theta).
+        wz = np.full(grid.axial_nodes, grid.dz)
+        wz[[0, -1]] *= 0.5
+        self._area_weights = wz[:, None] * (geometry.radius * grid.d_theta)
         self._last_cavitated: np.ndarray | None = None
 
     # -- grid and fixed nodes ----------------------------------------------------------
@@ -409,18 +413,11 @@ class JournalBearing:
     def _gauge(self, relative: np.ndarray) -> np.ndarray:
         return relative * self.pressure_scale + self.operating.cavitation_pressure
 
-    def _weights(self) -> np.ndarray:
-        """Integration weights per node over the bore area, m^2 (trapezoid in z, periodic in theta)."""
-        grid = self._base_grid
-        wz = np.full(grid.axial_nodes, grid.dz)
-        wz[[0, -1]] *= 0.5
-        return wz[:, None] * (self.geometry.radius * grid.d_theta)
-
     def _integrate_force(self, grid: Grid, relative: np.ndarray, gauge: bool = True) -> np.ndarray:
         """Film force on the journal, N, from dimensionless pressures (a change of them when
         ``gauge`` is False, which leaves out the constant cavitation-pressure offset)."""
         pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
-        weighted = pressure * self._weights()
+        weighted = pressure * self._area_weights
         theta = grid.theta
         fy = -np.sum(weighted * np.cos(theta)[None, :])
         fz = -self.geometry.rotation * np.sum(weighted * np.sin(theta)[None, :])
@@ -641,7 +638,7 @@ class JournalBearing:
         film = evaluation.film
         pressure = self._gauge(evaluation.relative_pressure)
         fraction = evaluation.solution.film_fraction
-        weights = self._weights()
+        weights = self._area_weights
         fy, fz = (float(v) for v in evaluation.force)
         capacity = float(np.hypot(fy, fz))
         e, angle = self._local_polar(evaluation.position)

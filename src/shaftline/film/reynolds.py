@@ -127,6 +127,14 @@ def build_stencil(film: np.ndarray, d_theta: float, d_z: float, film_rate: np.nd
     return Stencil(c_theta=c_theta, c_z=c_z, couette_face=couette_face, rhs=rhs)
 
 
+def stencil_diagonal(stencil: Stencil) -> np.ndarray:
+    """Diagonal of the discrete operator A: the sum of each node's link coefficients, (nz, nt)."""
+    diag = stencil.c_theta + np.roll(stencil.c_theta, 1, axis=1)
+    diag[:-1] += stencil.c_z
+    diag[1:] += stencil.c_z
+    return diag
+
+
 def apply_operator(c_theta: np.ndarray, c_z: np.ndarray, pressure: np.ndarray) -> np.ndarray:
     """``A @ P`` on every node: net diffusive outflow of each control volume."""
     flow_east = c_theta * (pressure - np.roll(pressure, -1, axis=1))
@@ -209,9 +217,7 @@ class ReynoldsSolver:
         free = ~held.ravel()
         c_theta = stencil.c_theta.ravel()
         c_z = stencil.c_z.ravel()
-        diag = c_theta + np.roll(stencil.c_theta, 1, axis=1).ravel()
-        diag[: -self.shape[1]] += c_z
-        diag[self.shape[1] :] += c_z
+        diag = stencil_diagonal(stencil).ravel()
         # Held rows keep their own diagonal so the matrix stays well scaled.
         pattern = self.pattern
         values = np.empty(pattern.slot_kind.size)
@@ -319,9 +325,7 @@ class ReynoldsSolver:
         stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z)
         solution = solver._solve_reynolds_lcp(stencil_c, None, film_c)
         self.coarse_iterations = solution.iterations
-        diag = stencil_c.c_theta + np.roll(stencil_c.c_theta, 1, axis=1)
-        diag[:-1] += stencil_c.c_z
-        diag[1:] += stencil_c.c_z
+        diag = stencil_diagonal(stencil_c)
         multiplier = apply_operator(stencil_c.c_theta, stencil_c.c_z, solution.pressure) - stencil_c.rhs
         indicator = np.where(solution.cavitated, -np.maximum(multiplier, 0.0) / diag, solution.pressure)
         indicator = np.where(solver.fixed, 0.0, indicator)

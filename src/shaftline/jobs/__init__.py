@@ -386,7 +386,7 @@ def solve_alignment(case: AlignmentCase, progress: Callable[[str], None] | None 
     return AlignmentRun(case, model, results, influence, checks, plan, plan_checks, sag, jack, fit, reverse)
 
 
-def _check_rows(checks: list[RuleCheck]) -> list[list[str]]:
+def rule_check_rows(checks: list[RuleCheck]) -> list[list[str]]:
     rows = []
     for c in checks:
         unit = {
@@ -454,7 +454,7 @@ def alignment_section(run: AlignmentRun, folder: Path) -> Section:
         Markup(f"<p class='{'warn' if failed else 'note'}'>{len(failed)} of {len(run.checks)} checks fail.</p>"),
         table(
             ["result", "rule", "condition", "bearing", "value", "limit", "source", "confidence"],
-            _check_rows(sorted(run.checks, key=lambda c: c.passed)),  # failures first
+            rule_check_rows(sorted(run.checks, key=lambda c: c.passed)),  # failures first
         ),
     ]
     angles = run.slope_boring_angle()

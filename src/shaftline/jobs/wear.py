@@ -208,10 +208,3 @@ def wear_section(run: WearRun, folder: Path) -> Section:
     path = wear_figures.depth_over_years(run, figure_dir / "wear_depth.png")
     parts.append(image(f"figures/{path.name}", "wear depth"))
     return Section("Blade-bearing wear in service", Markup("").join(parts))
-
-
-def weibull_only(samples: np.ndarray, confidence: float = 0.95) -> WeibullFit:
-    return fit_weibull(samples, confidence)
-
-
-__all__ = ["Scenario", "WearRun", "solve_wear", "wear_section", "wear_table_rows", "weibull_only"]

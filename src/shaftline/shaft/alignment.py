@@ -210,6 +210,9 @@ class AlignmentModel:
         self.flexibility = response[2 * self.supports.node]
         self._unit_response = response
         self._uniform = -self.mesh.weight_per_length
+        # I / (D/2) at the nodes, the smaller of the two neighbouring elements (conservative).
+        modulus = self.mesh.inertia / (0.5 * self.mesh.outer_diameter)
+        self._section_modulus = np.concatenate(([modulus[0]], np.minimum(modulus[:-1], modulus[1:]), [modulus[-1]]))
 
     # -- loads ---------------------------------------------------------------------------
     def _loads(self, condition: Condition) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -276,8 +279,7 @@ class AlignmentModel:
         moment_y = _node_average(element_moment_y, mesh.nodes)
         moment_z = _node_average(np.stack([-forces_z[:, 1], forces_z[:, 3]], axis=1), mesh.nodes)
         shear_y = _node_average(np.stack([forces_y[:, 0], -forces_y[:, 2]], axis=1), mesh.nodes)
-        inertia_modulus = self._section_modulus()
-        stress = np.hypot(moment_y, moment_z) / inertia_modulus
+        stress = np.hypot(moment_y, moment_z) / self._section_modulus
         v, rot_y = line_y[0::2], line_y[1::2]
         w, rot_z = line_z[0::2], line_z[1::2]
         bearings = []
@@ -327,15 +329,6 @@ class AlignmentModel:
             bearings=bearings,
             iterations=iterations,
         )
-
-    def _section_modulus(self) -> np.ndarray:
-        """I / (D/2) at the nodes, the smaller of the two neighbouring elements (conservative)."""
-        mesh = self.mesh
-        modulus = mesh.inertia / (0.5 * mesh.outer_diameter)
-        node = np.empty(mesh.nodes)
-        node[0], node[-1] = modulus[0], modulus[-1]
-        node[1:-1] = np.minimum(modulus[:-1], modulus[1:])
-        return node
 
     def _elastic_line(self, forces: np.ndarray, reactions: np.ndarray, rigid: np.ndarray) -> np.ndarray:
         total = forces.copy()
