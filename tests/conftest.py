@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from typer.testing import CliRunner, Result
 
 from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
 
@@ -22,3 +23,33 @@ def make_bearing(length_to_diameter: float = 1.0, cavitation_pressure: float = 0
 @pytest.fixture
 def square_bearing() -> JournalBearing:
     return make_bearing(1.0, axial_nodes=31, circumferential_nodes=96)
+
+
+#: A small bearing case that solves in a fraction of a second.
+MINIMAL_CASE = """
+[case]
+name = "small bearing"
+
+[bearing]
+length = "0.1 m"
+diameter = "0.1 m"
+radial_clearance = "0.1 mm"
+
+[bearing.operation]
+speed = "600 rpm"
+load = "5 kN"
+
+[bearing.lubricant]
+viscosity = "0.02 Pa*s"
+
+[bearing.solver]
+axial_nodes = 21
+circumferential_nodes = 72
+"""
+
+
+def invoke(*args: str) -> Result:
+    """Run the command line in this process (standard output and error kept apart)."""
+    from shaftline.cli import app
+
+    return CliRunner().invoke(app, list(args))

@@ -1,4 +1,4 @@
-"""Case files: every bad input gives one clear error naming the field."""
+"""Case files: every bad input gives one clear error naming the field by its path."""
 
 from __future__ import annotations
 
@@ -10,9 +10,13 @@ from shaftline.cases import parse_case
 from shaftline.errors import InputError
 
 BASE = {
-    "bearing": {"length": "0.1 m", "diameter": "0.1 m", "radial_clearance": "0.1 mm"},
-    "operation": {"speed": "600 rpm", "load": "5 kN"},
-    "lubricant": {"viscosity": "0.02 Pa*s"},
+    "bearing": {
+        "length": "0.1 m",
+        "diameter": "0.1 m",
+        "radial_clearance": "0.1 mm",
+        "operation": {"speed": "600 rpm", "load": "5 kN"},
+        "lubricant": {"viscosity": "0.02 Pa*s"},
+    }
 }
 
 
@@ -30,40 +34,64 @@ def with_change(path: str, value):
 
 
 def test_minimal_case_parses():
-    case = parse_case(copy.deepcopy(BASE))
-    bearing = case.bearings[0]
-    assert bearing.geometry.radial_clearance == pytest.approx(1e-4)
-    assert bearing.load_y == pytest.approx(-5e3)
-    assert bearing.options.cavitation == "reynolds"
+    study = parse_case(copy.deepcopy(BASE))["bearing"]
+    case = study.cases[0]
+    assert case.geometry.radial_clearance == pytest.approx(1e-4)
+    assert case.load_y == pytest.approx(-5e3)
+    assert case.options.cavitation == "reynolds"
+    assert case.operating.speed == pytest.approx(20 * 3.141592653589793)
 
 
 def test_preset_and_temperature():
-    data = with_change("lubricant", {"preset": "ISO VG 68", "temperature": "50 degC"})
-    bearing = parse_case(data).bearings[0]
-    assert 0.02 < bearing.operating.viscosity < 0.06
+    data = with_change("bearing.lubricant", {"preset": "ISO VG 68", "temperature": "50 degC"})
+    case = parse_case(data)["bearing"].cases[0]
+    assert 0.02 < case.operating.viscosity < 0.06
+
+
+def test_defaults_come_from_the_domain():
+    """The schema's defaults are the domain dataclasses' (one source, no drift)."""
+    from shaftline.cases.loader import case_model
+    from shaftline.cpp.motion import CarrierModel
+    from shaftline.film.bearing import SolverOptions
+
+    model = case_model()
+    solver = model.model_fields["bearing"].annotation.__args__[0].model_fields["solver"].default
+    for name in ("axial_nodes", "circumferential_nodes", "cavitation", "min_film_floor", "tolerance"):
+        assert getattr(solver, name) == getattr(SolverOptions(), name)
+    from shaftline.cpp.case import MotionSection
+
+    for name in ("stiffness", "damping", "stribeck_velocity", "threshold_velocity", "friction"):
+        assert MotionSection.model_fields[name].default == CarrierModel.__dataclass_fields__[name].default
 
 
 @pytest.mark.parametrize(
     "path, value, field, fragment",
     [
         ("bearing.radial_clearance", "0 mm", "bearing.radial_clearance", "> 0"),
-        ("bearing.radial_clearance", "-0.1 mm", "bearing.radial_clearance", "> 0"),
+        ("bearing.radial_clearance", "-0.1 mm", "bearing.radial_clearance", "-0.0001 m: allowed > 0"),
         ("bearing.length", "0 m", "bearing.length", "> 0"),
         ("bearing.diameter", "-1 m", "bearing.diameter", "> 0"),
-        ("bearing.length", "0.5 kg", "bearing.length", "length"),
+        ("bearing.length", "0.5 kg", "bearing.length", "quantity of length"),
         ("bearing.length", "1 parsecz", "bearing.length", "unit"),
-        ("operation.speed", "0 rpm", "operation.speed", "> 0 when the bearing carries a load"),
-        ("lubricant.viscosity", "0 Pa*s", "lubricant.viscosity", "> 0"),
-        ("lubricant.viscosity", "-1 cP", "lubricant.viscosity", "> 0"),
+        ("bearing.operation.speed", "0 rpm", "bearing.operation.speed", "> 0 when the bearing carries a load"),
+        ("bearing.operation.speed", "-10 rpm", "bearing.operation.speed", ">= 0"),
+        ("bearing.lubricant.viscosity", "0 Pa*s", "bearing.lubricant.viscosity", "> 0"),
+        ("bearing.lubricant.viscosity", "-1 cP", "bearing.lubricant.viscosity", "> 0"),
         ("bearing.length", float("nan"), "bearing.length", "finite"),
-        ("operation.load", "nan kN", "operation.load", "finite"),
-        ("bearing.lenght", "1 m", "bearing.lenght", "no such field"),
-        ("operation.speed", None, "operation.speed", "required"),
-        ("solver", {"axial_nodes": 3}, "solver.axial_nodes", "resolve"),
-        ("solver", {"circumferential_nodes": 10}, "solver.circumferential_nodes", "resolve"),
-        ("solver", {"cavitation": "magic"}, "solver.cavitation", "reynolds"),
+        ("bearing.operation.load", "nan kN", "bearing.operation.load", "finite"),
+        ("bearing.lenght", "1 m", "bearing.lenght", "did you mean 'length'"),
+        ("bearing.operation.speed", None, "bearing.operation.speed", "required"),
+        ("bearing.solver", {"axial_nodes": 3}, "bearing.solver.axial_nodes", "resolve"),
+        ("bearing.solver", {"axial_nodes": 1}, "bearing.solver.axial_nodes", ">= 3"),
+        ("bearing.solver", {"circumferential_nodes": 10}, "bearing.solver.circumferential_nodes", "resolve"),
+        ("bearing.solver", {"cavitation": "magic"}, "bearing.solver.cavitation", "'reynolds'"),
         ("bearing.rotation", "sideways", "bearing.rotation", "clockwise"),
-        ("lubricant.preset", "ISO VG 68", "lubricant", "exactly one"),
+        ("bearing.lubricant.preset", "ISO VG 68", "bearing.lubricant.viscosity", "exactly one"),
+        ("bearing.lubricant", {"preset": "ISO VG 69", "temperature": 40}, "bearing.lubricant.preset", "ISO VG 68"),
+        ("bearing.operation", {"speed": 10, "load": 0}, "bearing.operation.load", "> 0"),
+        ("bearing.bore", [{"length_fraction": 1.0}], "bearing.bore[0].slope", "either slope or slope_ratio"),
+        ("bearing.variants", [{"name": "x"}, {"name": "x"}], "bearing.variants[1].name", "not used"),
+        ("bearing.variants", [{"name": "unnamed case"}], "bearing.variants[0].name", "other than the case's"),
     ],
 )
 def test_bad_input_names_the_field(path, value, field, fragment):
@@ -80,7 +108,15 @@ def test_slope_segments_must_sum_to_one():
     )
     with pytest.raises(InputError) as error:
         parse_case(data)
-    assert error.value.field == "bearing.bore.length_fraction"
+    assert error.value.field.startswith("bearing.bore")
+    assert "sum" in str(error.value)
+
+
+def test_variant_bore_errors_name_the_variant():
+    data = with_change("bearing.variants", [{"name": "v", "bore": [{"length_fraction": 0.5, "slope": 0.0}]}])
+    with pytest.raises(InputError) as error:
+        parse_case(data)
+    assert error.value.field.startswith("bearing.variants[0].bore")
 
 
 def test_nan_in_a_list():
@@ -91,13 +127,34 @@ def test_nan_in_a_list():
 
 
 def test_jfo_without_feed_is_refused():
-    from shaftline.film import JournalBearing
-
-    data = with_change("solver", {"cavitation": "jfo"})
-    bearing_case = parse_case(data).bearings[0]
     with pytest.raises(InputError) as error:
-        JournalBearing(bearing_case.geometry, bearing_case.operating, bearing_case.options)
-    assert error.value.field == "operation.cavitation_pressure"
+        parse_case(with_change("bearing.solver", {"cavitation": "jfo"}))
+    assert error.value.field == "bearing.operation.cavitation_pressure"
+
+
+def test_the_old_layout_says_where_tables_went():
+    old = {
+        "bearing": {"length": 0.1, "diameter": 0.1, "radial_clearance": 1e-4},
+        "operation": {"speed": 60, "load": 5e3},
+        "lubricant": {"viscosity": 0.02},
+    }
+    with pytest.raises(InputError) as error:
+        parse_case(old)
+    assert error.value.field == "operation" and "[bearing.operation]" in str(error.value)
+    with pytest.raises(InputError) as error:
+        parse_case({"shaft": {"segments": []}})
+    assert "[alignment.shaft]" in str(error.value)
+
+
+def test_nothing_to_solve():
+    with pytest.raises(InputError) as error:
+        parse_case({"case": {"name": "empty"}})
+    assert "[bearing]" in str(error.value) and "[alignment]" in str(error.value)
+
+
+def test_overrides_replace_fields_before_validation():
+    case = parse_case(copy.deepcopy(BASE), overrides={"bearing.operation.load": "7 kN"})
+    assert case["bearing"].cases[0].load_y == pytest.approx(-7e3)
 
 
 def test_film_profile_from_csv(tmp_path):
@@ -107,7 +164,7 @@ def test_film_profile_from_csv(tmp_path):
             rows.append(f"{theta},{z},{0.02 if theta == 180 else 0.0}")
     (tmp_path / "wear.csv").write_text("\n".join(rows))
     data = with_change("bearing.film_profile", {"file": "wear.csv", "length_unit": "mm"})
-    profile = parse_case(data, tmp_path).bearings[0].geometry.film_profile
+    profile = parse_case(data, tmp_path)["bearing"].cases[0].geometry.film_profile
     assert profile.delta.shape == (2, 12)
     assert profile.z[-1] == pytest.approx(0.1)
     assert profile.delta.max() == pytest.approx(2e-5)

@@ -1,49 +1,35 @@
-"""The command line: results, JSON fields, report folder, and bad input (exit 2, no output)."""
+"""The command line, in process: results, JSON fields, report folder, bad input (exit 2,
+one line, no output), the schema verb."""
 
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-MINIMAL = """
-[bearing]
-length = "0.1 m"
-diameter = "0.1 m"
-radial_clearance = "0.1 mm"
-[operation]
-speed = "600 rpm"
-load = "5 kN"
-[lubricant]
-viscosity = "0.02 Pa*s"
-[solver]
-axial_nodes = 21
-circumferential_nodes = 72
-"""
+from tests.conftest import MINIMAL_CASE, invoke
 
 
-def shaftline(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
-    return subprocess.run(
-        [sys.executable, "-m", "shaftline.cli", *args], capture_output=True, text=True, cwd=cwd, timeout=120
-    )
+@pytest.fixture
+def case(tmp_path: Path) -> Path:
+    path = tmp_path / "case.toml"
+    path.write_text(MINIMAL_CASE)
+    return path
 
 
 def test_version():
-    result = shaftline("--version")
-    assert result.returncode == 0
+    result = invoke("--version")
+    assert result.exit_code == 0
     assert result.stdout.startswith("shaftline ")
 
 
-def test_bearing_solve_json_to_stdout(tmp_path):
-    case = tmp_path / "case.toml"
-    case.write_text(MINIMAL)
-    result = shaftline("bearing", "solve", str(case), "--json", "-")
-    assert result.returncode == 0, result.stderr
-    document = json.loads(result.stdout)
+def test_bearing_solve_json_to_stdout(case):
+    result = invoke("bearing", "solve", str(case), "--json", "-")
+    assert result.exit_code == 0, result.output
+    document = json.loads(result.stdout)  # nothing but the JSON on standard output
+    bearing = document["bearing"]
+    base = bearing["cases"][0]
     for key in (
         "eccentricity_ratio",
         "attitude_angle_deg",
@@ -54,50 +40,72 @@ def test_bearing_solve_json_to_stdout(tmp_path):
         "sommerfeld_number",
         "side_leakage",
     ):
-        assert isinstance(document[key], float), key
-    assert document["units"]["min_film_thickness"] == "m"
-    assert document["converged"] is True
-    assert len(document["stiffness"]) == 2
+        assert isinstance(base[key], float), key
+    assert bearing["units"]["min_film_thickness"] == "m"
+    assert base["converged"] is True
+    assert len(base["stiffness"]) == 2
+    assert document["case"] == "small bearing"
 
 
-def test_bearing_solve_writes_report(tmp_path):
-    case = tmp_path / "case.toml"
-    case.write_text(MINIMAL)
+def test_bearing_solve_writes_report(case, tmp_path):
     out = tmp_path / "out"
-    result = shaftline("bearing", "solve", str(case), "--out", str(out), "--json", str(tmp_path / "r.json"))
-    assert result.returncode == 0, result.stderr
+    result = invoke("bearing", "solve", str(case), "--out", str(out), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 0, result.output
     assert "Bearing film at equilibrium" in result.stdout
     assert (out / "report.html").read_text().count("<img") >= 3
     assert (out / "figures" / "bearing_0_maps.png").stat().st_size > 10_000
-    assert json.loads((tmp_path / "r.json").read_text())["min_film_thickness"] > 0
+    assert json.loads((tmp_path / "r.json").read_text())["bearing"]["cases"][0]["min_film_thickness"] > 0
+    assert json.loads((out / "results.json").read_text()) == json.loads((tmp_path / "r.json").read_text())
 
 
 @pytest.mark.parametrize(
     "replace, field",
     [
         (('radial_clearance = "0.1 mm"', 'radial_clearance = "-0.1 mm"'), "bearing.radial_clearance"),
-        (('speed = "600 rpm"', 'speed = "0 rpm"'), "operation.speed"),
+        (('speed = "600 rpm"', 'speed = "0 rpm"'), "bearing.operation.speed"),
         (('length = "0.1 m"', 'length = "0.1 kg"'), "bearing.length"),
-        (("axial_nodes = 21", "axial_nodes = 2"), "solver.axial_nodes"),
-        (('viscosity = "0.02 Pa*s"', "viscosity = nan"), "lubricant.viscosity"),
+        (("axial_nodes = 21", "axial_nodes = 2"), "bearing.solver.axial_nodes"),
+        (('viscosity = "0.02 Pa*s"', "viscosity = nan"), "bearing.lubricant.viscosity"),
+        (("[bearing.operation]", "[operation]"), "operation"),
     ],
 )
-def test_bad_input_exit_2_one_line_no_output(tmp_path, replace, field):
-    case = tmp_path / "case.toml"
-    case.write_text(MINIMAL.replace(*replace))
+def test_bad_input_exit_2_one_line_no_output(case, tmp_path, replace, field):
+    case.write_text(MINIMAL_CASE.replace(*replace))
     out = tmp_path / "out"
-    result = shaftline("run", str(case), "--out", str(out), "--json", str(tmp_path / "r.json"))
-    assert result.returncode == 2
-    assert "Traceback" not in result.stderr
+    result = invoke("run", str(case), "--out", str(out), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 2
     lines = [line for line in result.stderr.splitlines() if line.strip()]
-    assert len(lines) == 1 and field in lines[0]
+    assert len(lines) == 1 and lines[0].startswith(f"error: {field} = ")
+    assert result.stdout == ""
     assert not out.exists() and not (tmp_path / "r.json").exists()
 
 
 def test_missing_file_and_bad_toml(tmp_path):
-    result = shaftline("bearing", "solve", str(tmp_path / "nope.toml"))
-    assert result.returncode == 2 and "case file" in result.stderr
+    result = invoke("bearing", "solve", str(tmp_path / "nope.toml"))
+    assert result.exit_code == 2 and "case file" in result.stderr and "an existing file" in result.stderr
     bad = tmp_path / "bad.toml"
     bad.write_text("[bearing\nlength = 1")
-    result = shaftline("bearing", "solve", str(bad))
-    assert result.returncode == 2 and "valid TOML" in result.stderr
+    result = invoke("bearing", "solve", str(bad))
+    assert result.exit_code == 2 and "valid TOML" in result.stderr
+
+
+def test_verb_refuses_a_case_without_its_table(case):
+    result = invoke("align", str(case))
+    assert result.exit_code == 2 and "[alignment]" in result.stderr
+
+
+def test_run_writes_to_results_by_default(case, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    result = invoke("run", str(case))
+    assert result.exit_code == 0, result.output
+    assert (tmp_path / "results" / "case" / "report.html").exists()
+
+
+def test_schema_verb_prints_the_json_schema():
+    result = invoke("schema")
+    assert result.exit_code == 0
+    schema = json.loads(result.stdout)
+    length = schema["$defs"]["BearingSection"]["properties"]["length"]
+    assert length["x-unit"] == "m" and length["exclusiveMinimum"] == 0
+    markdown = invoke("schema", "--format", "markdown").stdout
+    assert "#### `[bearing.operation]`" in markdown

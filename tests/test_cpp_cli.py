@@ -3,30 +3,31 @@
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+from typer.testing import Result
+
+from tests.conftest import invoke
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "cpp_blade_bearing.toml"
 
 
-def shaftline(*args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "shaftline.cli", *args], capture_output=True, text=True, timeout=300)
+def shaftline(*args: str) -> Result:
+    return invoke(*args)
 
 
 def test_cpp_fretting_and_motion(tmp_path):
     result = shaftline("cpp", "fretting", str(EXAMPLE), "--json", "-")
-    assert result.returncode == 0, result.stderr
+    assert result.exit_code == 0, result.stderr
     cpp = json.loads(result.stdout)["cpp"]
     assert cpp["gross_fretting_both_ways"] is True
     assert cpp["k_fret_max"] > 1 > -1 > cpp["k_fret_min"]
     assert "motion" not in cpp
     out = tmp_path / "out"
     result = shaftline("cpp", "motion", str(EXAMPLE), "--out", str(out), "--json", str(tmp_path / "r.json"))
-    assert result.returncode == 0, result.stderr
+    assert result.exit_code == 0, result.stderr
     motion = json.loads((tmp_path / "r.json").read_text())["cpp"]["motion"]
     assert 20e-6 < motion["fretting_amplitude"] < 1e-3
     assert motion["pressure_fluctuation"] > 0
@@ -38,8 +39,7 @@ def test_cpp_bad_input(tmp_path):
     case = tmp_path / "case.toml"
     case.write_text(EXAMPLE.read_text().replace("friction_coefficient = 0.1", "friction_coefficient = 1.5"))
     result = shaftline("cpp", "fretting", str(case))
-    assert result.returncode == 2 and "cpp.bearing.friction_coefficient" in result.stderr
-    assert "Traceback" not in result.stderr
+    assert result.exit_code == 2 and "cpp.bearing.friction_coefficient = 1.5" in result.stderr
 
 
 def test_load_table_ranking_and_study(tmp_path):
@@ -49,7 +49,7 @@ def test_load_table_ranking_and_study(tmp_path):
 
     from shaftline.cases import load_case
 
-    case = load_case(EXAMPLE).cpp
+    case = load_case(EXAMPLE)["cpp"]
     loads = case.loads
     rows = ["angle_deg,force_x,force_y,force_z,moment_x,moment_y,moment_z"]
     for k in range(loads.angle.size):
@@ -79,4 +79,4 @@ def test_load_table_ranking_and_study(tmp_path):
     assert study["parameter"] == "backlash" and all(a < b for a, b in zip(amplitudes, amplitudes[1:], strict=False))
     (tmp_path / "loads.csv").write_text("\n".join(rows[:3] + ["nan" + rows[3][rows[3].index(",") :]] + rows[4:]))
     result = shaftline("cpp", "fretting", str(tmp_path / "table.toml"))
-    assert result.returncode == 2 and "row 4" in result.stderr
+    assert result.exit_code == 2 and "row 4" in result.stderr

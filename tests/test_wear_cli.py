@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
+
+from typer.testing import Result
+
+from tests.conftest import invoke
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def shaftline(*args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "shaftline.cli", *args], capture_output=True, text=True, timeout=300)
+def shaftline(*args: str) -> Result:
+    return invoke(*args)
 
 
 def test_pitchlog_with_case(tmp_path):
@@ -27,7 +29,7 @@ def test_pitchlog_with_case(tmp_path):
         "--json",
         "-",
     )
-    assert result.returncode == 0, result.stderr
+    assert result.exit_code == 0, result.stderr
     wear = json.loads(result.stdout)["wear"]
     names = [s["name"] for s in wear["scenarios"]]
     assert names == [
@@ -47,7 +49,7 @@ def test_weibull_verb(tmp_path):
         "depth_mm\n" + "\n".join(map(str, [0.09, 0.10, 0.06, 0.08, 0.097, 0.073, 0.077, 0.048, 0.043, 0.107]))
     )
     result = shaftline("wear", "weibull", str(data), "--threshold", "0.12", "--json", "-")
-    assert result.returncode == 0, result.stderr
+    assert result.exit_code == 0, result.stderr
     document = json.loads(result.stdout)
     assert abs(document["shape"] - 4.43) < 0.005
     assert 0 < document["exceedance"]["estimate"] < document["exceedance"]["upper"] < 1
@@ -57,10 +59,10 @@ def test_weibull_bad_data(tmp_path):
     data = tmp_path / "bad.csv"
     data.write_text("x\n0.1\n0.2\n")
     result = shaftline("wear", "weibull", str(data))
-    assert result.returncode == 2 and "at least 3" in result.stderr and "Traceback" not in result.stderr
+    assert result.exit_code == 2 and "at least 3" in result.stderr
     data.write_text("x\n0.1\nabc\n0.3\n")
     result = shaftline("wear", "weibull", str(data))
-    assert result.returncode == 2 and "row 3" in result.stderr
+    assert result.exit_code == 2 and "row 3" in result.stderr
 
 
 def test_pitchlog_with_gap(tmp_path):
@@ -75,5 +77,5 @@ def test_pitchlog_with_gap(tmp_path):
         "--out",
         str(tmp_path / "out"),
     )
-    assert result.returncode == 2 and "gap" in result.stderr
+    assert result.exit_code == 2 and "gap" in result.stderr
     assert not (tmp_path / "out").exists()

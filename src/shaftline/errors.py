@@ -8,6 +8,8 @@ exception that names the offending field.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
 from typing import Any
 
 
@@ -38,6 +40,32 @@ class InputError(ValueError):
         if allowed:
             message += f": allowed {allowed}"
         super().__init__(message)
+
+    def within(self, prefix: str, renames: Mapping[str, str] | None = None) -> InputError:
+        """The same error with its field placed under ``prefix``.
+
+        Domain objects name fields relative to themselves (``"radial_clearance"``,
+        ``"grooves[0].angle"``); the case layer, which knows where each object came from,
+        prefixes the path of its case-file table. ``renames`` maps the first part of the
+        field to its case-file name where the two differ (``{"point_loads": "loads"}``).
+        """
+        head, sep, rest = self.field.partition(".")
+        name, bracket, index = head.partition("[")
+        if renames and name in renames:
+            head = renames[name] + bracket + index
+        field = f"{head}{sep}{rest}"
+        if prefix:
+            field = f"{prefix}.{field}" if field else prefix
+        return InputError(field, self.value, self.unit, self.allowed)
+
+
+@contextmanager
+def located(prefix: str, renames: Mapping[str, str] | None = None) -> Iterator[None]:
+    """Re-raise an :class:`InputError` of the block with its field under ``prefix``."""
+    try:
+        yield
+    except InputError as error:
+        raise error.within(prefix, renames) from None
 
 
 def require_finite(field: str, value: float, unit: str = "") -> float:

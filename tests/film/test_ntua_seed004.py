@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from shaftline.cases import load_case
-from shaftline.jobs import solve_bearing
+from shaftline.film.study import solve_case
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "ntua_stern_tube.toml"
 
@@ -23,7 +23,7 @@ EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "ntua_stern_tube.to
 @pytest.fixture(scope="module")
 def runs():
     case = load_case(EXAMPLE)
-    return {run.case.name.split(",")[-1].strip(): run for run in map(solve_bearing, case.bearings)}
+    return {run.case.name.split(",")[-1].strip(): run for run in map(solve_case, case["bearing"].cases)}
 
 
 def test_sommerfeld_number_of_table_5_1(runs):

@@ -1,16 +1,43 @@
-"""Reading a TOML case file into SI domain objects."""
+"""Reading a TOML case file into SI domain objects.
+
+The file is one table per capability (``[bearing]``, ``[alignment]``, ``[wear]``,
+``[cpp]``) plus ``[case]`` for its labels. The schema of the whole file is assembled from
+the registry; pydantic validates it and names any bad field by its path; each
+capability's ``build`` then makes its domain objects, and an error the domain raises is
+placed under the table it came from.
+"""
 
 from __future__ import annotations
 
+import difflib
 import math
 import tomllib
+from collections.abc import Iterable, Mapping
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from pydantic import ValidationError
+from pydantic import BaseModel, ValidationError, create_model
 
-from shaftline.cases.schema import Case, CaseIn, build_case
-from shaftline.errors import InputError
+from shaftline import registry
+from shaftline.cases.types import CaseInfo, Section
+from shaftline.errors import InputError, located
+from shaftline.pipeline import Case
+from shaftline.registry import BuildContext
+
+
+@lru_cache(maxsize=4)
+def _case_model(version: int) -> type[BaseModel]:
+    fields: dict[str, Any] = {"case": (CaseInfo, CaseInfo())}
+    for key, capability in registry.capabilities().items():
+        fields[key] = (capability.section | None, None)
+    model: type[BaseModel] = create_model("CaseFile", __base__=Section, __doc__="A shaftline case file.", **fields)
+    return model
+
+
+def case_model() -> type[BaseModel]:
+    """The pydantic model of a whole case file, for the capabilities registered now."""
+    return _case_model(registry.version())
 
 
 def _find_nan(data: Any, where: str = "") -> None:
@@ -25,44 +52,183 @@ def _find_nan(data: Any, where: str = "") -> None:
         raise InputError(where, data, "", "a finite number")
 
 
-def _field_name(location: tuple[Any, ...]) -> str:
+#: Parts of pydantic's error locations that name the member of a union, not a field.
+_UNION_TAGS = {"float", "int", "str", "bool", "list", "dict"}
+
+
+def _path(location: Iterable[Any]) -> str:
     name = ""
     for part in location:
+        if isinstance(part, str) and (part in _UNION_TAGS or "[" in part or part.startswith("function-")):
+            continue
         if isinstance(part, int):
             name += f"[{part}]"
-        elif part in ("float", "int", "str", "function-after[_one_slope(), BoreSegmentIn]"):
-            continue
-        else:
+        elif part:
             name += f".{part}" if name else str(part)
     return name
 
 
-def parse_case(data: dict[str, Any], base_dir: Path | None = None) -> Case:
-    """Validate a case given as a dict (as read from TOML) and convert it to SI.
+def _model_at(location: tuple[Any, ...]) -> type[BaseModel] | None:
+    """The model whose fields an error location points into (for spelling suggestions)."""
+    model: Any = case_model()
+    for part in location:
+        if isinstance(part, int) or not (isinstance(model, type) and issubclass(model, BaseModel)):
+            continue
+        info = model.model_fields.get(part)
+        if info is None:
+            return None
+        model = _inner_model(info.annotation)
+    return model if isinstance(model, type) and issubclass(model, BaseModel) else None
 
-    Relative file names in the case are read from ``base_dir`` (default: the working folder).
+
+def _inner_model(annotation: Any) -> Any:
+    from typing import get_args
+
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in get_args(annotation):
+        found = _inner_model(arg)
+        if found is not None:
+            return found
+    return None
+
+
+_ALLOWED = {
+    "greater_than": ("> {gt}", "gt"),
+    "greater_than_equal": (">= {ge}", "ge"),
+    "less_than": ("< {lt}", "lt"),
+    "less_than_equal": ("<= {le}", "le"),
+}
+
+
+def _input_error(error: Mapping[str, Any]) -> InputError:
+    """One pydantic error as an :class:`InputError` naming the field by its path."""
+    location = tuple(error["loc"])
+    kind = error["type"]
+    context = error.get("ctx") or {}
+    value = error.get("input")
+    if kind == "field":  # a cross-field check of a model validator names its own field
+        where = _path(location)
+        field = f"{where}.{context['field']}" if where else context["field"]
+        return InputError(field, context["value"], context["unit"], context["allowed"])
+    field = _path(location) or "case file"
+    if kind == "quantity":
+        return InputError(field, context["value"], context["unit"], context["allowed"])
+    if kind == "missing":
+        return InputError(field, "missing", "", "a value (required field)")
+    if kind == "extra_forbidden":
+        allowed = "no such field (check the spelling)"
+        model = _model_at(location[:-1])
+        if model is not None:
+            close = difflib.get_close_matches(str(location[-1]), list(model.model_fields), n=1)
+            if close:
+                allowed = f"no such field; did you mean {close[0]!r}?"
+        return InputError(field, value if not isinstance(value, (dict, list)) else "{...}", "", allowed)
+    if kind == "literal_error":
+        return InputError(field, value, "", f"one of {context['expected']}")
+    if kind in _ALLOWED:
+        text, key = _ALLOWED[kind]
+        return InputError(field, value, "", text.format(**{key: context[key]}))
+    if kind in ("model_type", "model_attributes_type", "dict_type"):
+        return InputError(field, "{...}" if isinstance(value, (dict, list)) else value, "", "a table of fields")
+    if isinstance(value, (dict, list)):
+        value = "{...}" if isinstance(value, dict) else "[...]"
+    return InputError(field, value, "", str(error["msg"]).removeprefix("Value error, "))
+
+
+def _moved_tables(data: Mapping[str, Any]) -> None:
+    """Point a case file of the older layout (shaftline 0.1) at the tables' new places."""
+    for capability in registry.capabilities().values():
+        for old, new in capability.moved_tables.items():
+            if old in data:
+                raise InputError(old, "{...}", "", f"under [{new}] (the case-file layout changed: see CHANGELOG)")
+
+
+def _set(data: dict[str, Any], dotted: str, value: Any) -> None:
+    *parents, last = dotted.split(".")
+    node = data
+    for part in parents:
+        node = node.setdefault(part, {})
+        if not isinstance(node, dict):
+            raise InputError(dotted, value, "", "a field inside a table")
+    node[last] = value
+
+
+def parse_case(
+    data: Mapping[str, Any],
+    base_dir: Path | None = None,
+    only: Iterable[str] | None = None,
+    overrides: Mapping[str, Any] | None = None,
+    source: Path | None = None,
+) -> Case:
+    """Validate a case given as a dict (as read from TOML) and build its SI domain objects.
+
+    Parameters
+    ----------
+    data : mapping
+        The case file's tables.
+    base_dir : Path, optional
+        Folder that relative file names in the case are read from (default: the working folder).
+    only : iterable of str, optional
+        Capability keys to build (all tables are validated; only these are built).
+    overrides : mapping, optional
+        Dotted field names and values that replace those of the file (``{"wear.pitch_log":
+        "log.csv"}``), applied before validation.
+
+    Raises
+    ------
+    InputError
+        Naming the first bad field by its path in the file.
     """
-    _find_nan(data)
+    document: dict[str, Any] = {key: value for key, value in data.items()}
+    for dotted, value in (overrides or {}).items():
+        _set(document, dotted, value)
+    _find_nan(document)
+    _moved_tables(document)
+    capabilities = registry.capabilities()
     try:
-        model = CaseIn.model_validate(data)
+        model = case_model().model_validate(document)
     except ValidationError as exc:
-        error = exc.errors()[0]
-        location = tuple(p for p in error["loc"] if not (isinstance(p, str) and ("[" in p or "function" in p)))
-        field = _field_name(location) or "case"
-        value = error.get("input")
-        message = error["msg"]
-        if error["type"] == "missing":
-            raise InputError(field, "missing", "", "a value (required field)") from None
-        if error["type"] == "extra_forbidden":
-            raise InputError(field, value, "", "no such field (check the spelling)") from None
-        if isinstance(value, dict):
-            value = "{...}"
-        raise InputError(field, value, "", message.removeprefix("Value error, ")) from None
-    return build_case(model, base_dir)
+        raise _input_error(exc.errors()[0]) from None
+    present = [key for key in capabilities if getattr(model, key) is not None]
+    if not present:
+        raise InputError(
+            "case file",
+            str(source) if source else "{...}",
+            "",
+            "one of the tables " + ", ".join(f"[{k}]" for k in capabilities),
+        )
+    wanted = present if only is None else [key for key in present if key in set(only)]
+    info: CaseInfo = model.case  # type: ignore[attr-defined]
+    context = BuildContext(case=info, base_dir=base_dir or Path.cwd())
+    studies = {}
+    for key in wanted:
+        with located(key):
+            studies[key] = capabilities[key].build(getattr(model, key), context)
+    return Case(name=info.name, description=info.description, studies=studies, source=source)
 
 
-def load_case(path: str | Path) -> Case:
-    """Read and validate a TOML case file.
+def read_case_file(path: str | Path) -> dict[str, Any]:
+    """The tables of a TOML case file (raises :class:`InputError` for a missing file or bad TOML)."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise InputError("case file", str(path), "", "an existing file") from None
+    except IsADirectoryError:
+        raise InputError("case file", str(path), "", "a file, not a folder") from None
+    except UnicodeDecodeError:
+        raise InputError("case file", str(path), "", "a UTF-8 text file") from None
+    except OSError as exc:
+        raise InputError("case file", str(path), "", f"a readable file ({exc.strerror})") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError("case file", str(path), "", f"valid TOML ({exc})") from None
+
+
+def load_case(path: str | Path, only: Iterable[str] | None = None, overrides: Mapping[str, Any] | None = None) -> Case:
+    """Read, validate and build a TOML case file (see :func:`parse_case`).
 
     Raises
     ------
@@ -70,14 +236,4 @@ def load_case(path: str | Path) -> Case:
         For a missing or unreadable file, invalid TOML, or any invalid field.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError("case file", str(path), "", "an existing file") from None
-    except OSError as exc:
-        raise InputError("case file", str(path), "", f"a readable file ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError("case file", str(path), "", f"valid TOML ({exc})") from None
-    return parse_case(data, path.parent)
+    return parse_case(read_case_file(path), path.parent, only, overrides, source=path)

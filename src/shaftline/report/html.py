@@ -1,21 +1,17 @@
-"""HTML report: one section per capability, assembled from a jinja2 template."""
+"""The HTML report: a jinja2 template with autoescaping over the sections' blocks.
+
+Every piece of text a user wrote (case, condition and bearing names) reaches the page only
+through the template, which escapes it. Figures are drawn into matplotlib figures that
+pyplot does not manage and saved as PNG beside the page, so writing a report never changes
+the backend of the session it runs in.
+"""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Sequence
+from pathlib import Path
 
-from jinja2 import Environment, PackageLoader, select_autoescape
-from markupsafe import Markup, escape
-
-import shaftline
-
-
-@dataclass(frozen=True)
-class Section:
-    """A report section: a heading and its HTML body (already escaped where needed)."""
-
-    title: str
-    html: Markup
+from shaftline.report.blocks import Figure, Heading, Paragraph, Section, Table
 
 
 def _is_number(text: str) -> bool:
@@ -26,27 +22,52 @@ def _is_number(text: str) -> bool:
     return True
 
 
-def table(headers: list[str], rows: list[list[str]]) -> Markup:
-    """An HTML table from text cells (escaped); numbers right-aligned, text left-aligned."""
-    head = "".join(f"<th>{escape(h)}</th>" for h in headers)
-    body = "".join(
-        "<tr>" + "".join(f"<td class='{'num' if _is_number(c) else 'text'}'>{escape(c)}</td>" for c in row) + "</tr>"
-        for row in rows
+def draw_figure(figure: Figure, path: Path) -> Path:
+    """Draw ``figure`` and save it as a PNG at ``path``."""
+    from matplotlib.figure import Figure as MatplotlibFigure
+
+    plot = figure.plot
+    canvas = MatplotlibFigure(figsize=plot.size, layout="constrained")
+    axes = canvas.subplots(*plot.layout, sharex=plot.sharex)
+    plot(*figure.args, ax=axes, **figure.kwargs)
+    canvas.savefig(path, dpi=110)
+    return path
+
+
+def _kind(block: object) -> str:
+    for cls, name in ((Paragraph, "paragraph"), (Heading, "heading"), (Table, "table"), (Figure, "figure")):
+        if isinstance(block, cls):
+            return name
+    raise TypeError(f"not a report block: {block!r}")
+
+
+def render(title: str, description: str, case_file: str, sections: Sequence[Section], version: str) -> str:
+    """The report page (figures are referred to as ``figures/<file>``)."""
+    from jinja2 import Environment, PackageLoader, select_autoescape
+
+    environment = Environment(
+        loader=PackageLoader("shaftline", "report/templates"),
+        autoescape=select_autoescape(default=True, default_for_string=True),
+        trim_blocks=True,
+        lstrip_blocks=True,
     )
-    return Markup(f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>")
-
-
-def image(path: str, alt: str) -> Markup:
-    return Markup(f'<img src="{escape(path)}" alt="{escape(alt)}">')
-
-
-def render(title: str, description: str, case_file: str, sections: list[Section]) -> str:
-    environment = Environment(loader=PackageLoader("shaftline", "report/templates"), autoescape=select_autoescape())
-    template = environment.get_template("report.html")
-    return template.render(
-        title=title,
-        description=description,
-        case_file=case_file,
-        version=shaftline.__version__,
-        sections=sections,
+    environment.filters["kind"] = _kind
+    environment.tests["number"] = _is_number
+    return environment.get_template("report.html").render(
+        title=title, description=description, case_file=case_file, version=version, sections=sections
     )
+
+
+def write_report(
+    folder: Path, title: str, description: str, case_file: str, sections: Sequence[Section], version: str
+) -> Path:
+    """Draw every figure of ``sections`` into ``folder/figures`` and write ``folder/report.html``."""
+    figures = folder / "figures"
+    figures.mkdir(parents=True, exist_ok=True)
+    for section in sections:
+        for block in section.blocks:
+            if isinstance(block, Figure):
+                draw_figure(block, figures / block.file)
+    path = folder / "report.html"
+    path.write_text(render(title, description, case_file, sections, version), encoding="utf-8")
+    return path

@@ -1,27 +1,32 @@
 """Figures of a shaft alignment: elastic line with bearings, moment and shear, reactions,
-influence matrix, jack-up curve."""
+influence matrix, jack-up curve.
+
+Each function draws into the axes it is given (``ax=``) and returns them; without axes it
+makes a pyplot figure of its own (see :mod:`shaftline.report.plotting`).
+"""
 
 from __future__ import annotations
 
 import math
-from pathlib import Path
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from shaftline.report.plotting import figure_function
 
-from shaftline.shaft.alignment import AlignmentModel, ConditionResult, InfluenceMatrix  # noqa: E402
-from shaftline.shaft.jackup import JackUpCurve, JackUpFit  # noqa: E402
+if TYPE_CHECKING:
+    from shaftline.shaft.alignment import ConditionResult, InfluenceMatrix
+    from shaftline.shaft.jackup import JackUpCurve, JackUpFit
+    from shaftline.shaft.model import ShaftLine
 
 
-def elastic_line(model: AlignmentModel, results: list[ConditionResult], path: Path) -> Path:
+@figure_function(size=(11, 4.5))
+def elastic_line(line: ShaftLine, results: Sequence[ConditionResult], *, ax: Any) -> Any:
     """Vertical elastic line per condition with each bearing's position and vertical clearance."""
-    fig, ax = plt.subplots(figsize=(11, 4.5), constrained_layout=True)
     for k, result in enumerate(results):
         ax.plot(result.x, result.deflection_y * 1e3, color=f"C{k}", label=result.name)
-    for bearing in model.line.bearings:
+    for bearing in line.bearings:
         aft, fore = bearing.x - 0.5 * bearing.length, bearing.x + 0.5 * bearing.length
         bottom = bearing.offset_y * 1e3
         ax.fill_between([aft, fore], bottom - 0.05, bottom, color="0.35", step="mid")
@@ -33,13 +38,14 @@ def elastic_line(model: AlignmentModel, results: list[ConditionResult], path: Pa
     ax.set_ylabel("vertical deflection [mm]")
     ax.set_title("Elastic line (bearings at their base offsets: bottom of bore dark, top light)")
     ax.legend(fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return ax
 
 
-def moment_and_shear(results: list[ConditionResult], path: Path) -> Path:
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(11, 6), sharex=True, constrained_layout=True)
+@figure_function(layout=(2, 1), size=(11, 6), sharex=True)
+def moment_and_shear(results: Sequence[ConditionResult], *, ax: Any) -> Any:
+    """Bending moment (top) and shear force (bottom) along the line per condition; ``ax``
+    is two axes."""
+    top, bottom = ax
     for k, result in enumerate(results):
         top.plot(result.x, result.moment_y / 1e3, color=f"C{k}", label=result.name)
         bottom.plot(result.x, result.shear_y / 1e3, color=f"C{k}")
@@ -49,14 +55,13 @@ def moment_and_shear(results: list[ConditionResult], path: Path) -> Path:
     bottom.set_ylabel("shear force [kN]")
     bottom.set_xlabel("x from the aft end [m]")
     top.legend(fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return ax
 
 
-def reactions(results: list[ConditionResult], path: Path) -> Path:
+@figure_function(size=(11, 4))
+def reactions(results: Sequence[ConditionResult], *, ax: Any) -> Any:
+    """Vertical bearing reactions per condition."""
     names = [b.name for b in results[0].bearings]
-    fig, ax = plt.subplots(figsize=(11, 4), constrained_layout=True)
     width = 0.8 / len(results)
     positions = np.arange(len(names))
     for k, result in enumerate(results):
@@ -66,17 +71,16 @@ def reactions(results: list[ConditionResult], path: Path) -> Path:
     ax.set_xticks(positions, names, rotation=20, ha="right", fontsize=8)
     ax.set_ylabel("reaction [kN]")
     ax.legend(fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return ax
 
 
-def influence_heatmap(influence: InfluenceMatrix, path: Path) -> Path:
+@figure_function(size=(7.5, 6.5))
+def influence_heatmap(influence: InfluenceMatrix, *, ax: Any) -> Any:
+    """Reaction change per mm of offset of each bearing (all supports in contact)."""
     matrix = influence.matrix * 1e-3 * 1e-3  # kN per mm
-    fig, ax = plt.subplots(figsize=(7.5, 6.5), constrained_layout=True)
     limit = np.abs(matrix).max()
     image = ax.imshow(matrix, cmap="RdBu_r", vmin=-limit, vmax=limit)
-    fig.colorbar(image, ax=ax, label="reaction change [kN] per mm offset")
+    ax.figure.colorbar(image, ax=ax, label="reaction change [kN] per mm offset")
     ticks = np.arange(len(influence.names))
     ax.set_xticks(ticks, influence.names, rotation=45, ha="right", fontsize=8)
     ax.set_yticks(ticks, influence.names, fontsize=8)
@@ -85,13 +89,18 @@ def influence_heatmap(influence: InfluenceMatrix, path: Path) -> Path:
     for i in range(matrix.shape[0]):
         for j in range(matrix.shape[1]):
             ax.text(j, i, f"{matrix[i, j]:.0f}", ha="center", va="center", fontsize=6)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return ax
 
 
-def jack_curve(curve: JackUpCurve, path: Path, measured=None, fit: JackUpFit | None = None) -> Path:
-    fig, ax = plt.subplots(figsize=(7.5, 4.5), constrained_layout=True)
+@figure_function(size=(7.5, 4.5))
+def jack_curve(
+    curve: JackUpCurve,
+    measured: tuple[np.ndarray, np.ndarray] | None = None,
+    fit: JackUpFit | None = None,
+    *,
+    ax: Any,
+) -> Any:
+    """Modelled jack load against lift, with the measured curve and its knee where given."""
     ax.plot(curve.lifts * 1e3, curve.loads / 1e3, "C0-", label="model")
     ax.axhline(curve.liftoff_load / 1e3, color="C0", ls=":", label=f"lift-off {curve.liftoff_load / 1e3:.1f} kN")
     if measured is not None:
@@ -102,6 +111,4 @@ def jack_curve(curve: JackUpCurve, path: Path, measured=None, fit: JackUpFit | N
     ax.set_ylabel("jack load [kN]")
     ax.set_title(f"Jack-up of {curve.bearing} (correction factor {curve.correction_factor:.3f})")
     ax.legend(fontsize=8)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return ax

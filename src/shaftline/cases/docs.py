@@ -1,0 +1,145 @@
+"""The case-file reference, generated from the schema: Markdown tables (the README's
+case-file section) and the JSON Schema (``shaftline schema``).
+
+The README holds the tables between the markers ``<!-- case-file tables -->`` and
+``<!-- end of case-file tables -->``; a test checks that they match :func:`markdown_tables`,
+and ``python -m shaftline.cases.docs README.md`` rewrites them.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import types
+from pathlib import Path
+from typing import Annotated, Any, Literal, Union, get_args, get_origin
+
+from pydantic import BaseModel
+from pydantic_core import PydanticUndefined
+
+from shaftline.cases.loader import case_model
+from shaftline.cases.types import Quantity
+
+START = "<!-- case-file tables -->"
+END = "<!-- end of case-file tables -->"
+
+
+def _metadata(annotation: Any) -> list[Any]:
+    return list(getattr(annotation, "__metadata__", ()))
+
+
+def _type_text(annotation: Any) -> str:
+    """A short description of a field's type: ``length [m]``, ``one of a, b``, ``list of ...``."""
+    for item in _metadata(annotation):
+        if isinstance(item, Quantity):
+            bounds = item.allowed()
+            kind = "number" if item.kind == "dimensionless" else item.kind.replace("_", " ")
+            unit = f" [{item.unit}]" if item.unit else ""
+            return f"{kind}{unit}{', ' + bounds if bounds else ''}"
+    origin = get_origin(annotation)
+    args = get_args(annotation)
+    if origin is Literal:
+        return "one of " + ", ".join(f"`{a}`" for a in args)
+    if origin in (Union, types.UnionType):
+        inner = [a for a in args if a is not type(None)]
+        return " or ".join(_type_text(a) for a in inner)
+    if origin is list:
+        return f"list of {_type_text(args[0])}"
+    if origin is dict:
+        return f"table of {_type_text(args[1])}"
+    if origin is not None and args:  # Annotated[int, Field(...)] and the like
+        return _type_text(args[0])
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return "table"
+    return {int: "integer", float: "number", str: "text", bool: "true/false"}.get(annotation, str(annotation))
+
+
+def _nested(annotation: Any) -> tuple[type[BaseModel], bool] | None:
+    """The model of a sub-table and whether it is an array of tables."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation, False
+    origin = get_origin(annotation)
+    for arg in get_args(annotation):
+        found = _nested(arg)
+        if found is not None:
+            return found[0], found[1] or origin is list
+    return None
+
+
+def _default(info: Any) -> str:
+    if info.is_required():
+        return "required"
+    value = info.default
+    if value is PydanticUndefined or value is None:
+        return "-"
+    if value == "":
+        return '""'
+    if isinstance(value, BaseModel) or value == []:
+        return "-"
+    if isinstance(value, float):
+        return f"{value:g}"
+    return str(value).lower() if isinstance(value, bool) else str(value)
+
+
+def _tables(model: type[BaseModel], path: str, array: bool, out: list[str]) -> None:
+    rows = []
+    children = []
+    for name, info in model.model_fields.items():
+        nested = _nested(info.annotation)
+        if nested is not None:
+            child, child_array = nested
+            children.append((child, f"{path}.{name}" if path else name, child_array))
+            continue
+        description = " ".join((info.description or "").split())
+        annotation = info.annotation
+        if info.metadata:  # pydantic keeps Annotated metadata of a plain field apart from its type
+            annotation = Annotated[(annotation, *info.metadata)]
+        rows.append(f"| `{name}` | {_type_text(annotation)} | {_default(info)} | {description} |")
+    if path and rows:
+        heading = f"[[{path}]]" if array else f"[{path}]"
+        doc = " ".join((model.__doc__ or "").split())
+        out.append(f"#### `{heading}`\n\n{doc}\n\n| field | type | default | meaning |\n|---|---|---|---|")
+        out.append("\n".join(rows) + "\n")
+    elif path:
+        doc = " ".join((model.__doc__ or "").split())
+        out.append(f"#### `{'[[' + path + ']]' if array else '[' + path + ']'}`\n\n{doc}\n")
+    for child, child_path, child_array in children:
+        _tables(child, child_path, child_array, out)
+
+
+def markdown_tables() -> str:
+    """Every case-file table with its fields: type and unit, default and meaning."""
+    out: list[str] = []
+    _tables(case_model(), "", False, out)
+    return "\n".join(out).rstrip() + "\n"
+
+
+def json_schema() -> dict[str, Any]:
+    """The JSON Schema of a case file (quantities: a number in SI or a string with a unit;
+    ``x-unit`` gives the SI unit)."""
+    return case_model().model_json_schema()
+
+
+def json_schema_text() -> str:
+    return json.dumps(json_schema(), indent=2)
+
+
+def readme_section(readme: str) -> str:
+    """The generated part of the README (between the markers)."""
+    start, end = readme.index(START) + len(START), readme.index(END)
+    return readme[start:end].strip() + "\n"
+
+
+def update_readme(path: Path) -> bool:
+    """Rewrite the generated tables of the README at ``path``; True if they changed."""
+    text = path.read_text(encoding="utf-8")
+    start, end = text.index(START) + len(START), text.index(END)
+    new = text[:start] + "\n\n" + markdown_tables() + "\n" + text[end:]
+    if new != text:
+        path.write_text(new, encoding="utf-8")
+    return new != text
+
+
+if __name__ == "__main__":  # python -m shaftline.cases.docs README.md
+    changed = update_readme(Path(sys.argv[1] if len(sys.argv) > 1 else "README.md"))
+    print("README tables updated" if changed else "README tables up to date")

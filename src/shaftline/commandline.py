@@ -1,0 +1,88 @@
+"""What every command-line verb shares: running case files through the pipeline, printing
+the summary, writing JSON and the report folder, and the one-line error with exit 2.
+
+Kept apart from :mod:`shaftline.cli` so that a capability's own commands
+(:meth:`shaftline.registry.Capability.commands`) can use it without an import cycle.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Annotated, Any, NoReturn
+
+import typer
+from rich.console import Console
+
+from shaftline.errors import InputError
+
+console = Console()
+error_console = Console(stderr=True)
+
+JsonOption = Annotated[
+    str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
+]
+OutOption = Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")]
+CaseArgument = Annotated[Path, typer.Argument(help="Case file (TOML).")]
+
+
+def fail(error: InputError) -> NoReturn:
+    """Print ``error`` on one line of standard error and exit with status 2."""
+    error_console.print(f"error: {error}", markup=False, highlight=False, soft_wrap=True)
+    raise typer.Exit(code=2)
+
+
+@contextmanager
+def input_errors() -> Iterator[None]:
+    """Turn an :class:`InputError` of the block into the one-line message and exit 2."""
+    try:
+        yield
+    except InputError as error:
+        fail(error)
+
+
+def emit_json(document: Mapping[str, Any], json_path: str | None) -> None:
+    """Write ``document`` to ``json_path`` (``-``: standard output; None: nowhere)."""
+    from shaftline.pipeline import dumps, write_text_atomic
+
+    if json_path is None:
+        return
+    text = dumps(document) + "\n"
+    if json_path == "-":
+        sys.stdout.write(text)
+    else:
+        write_text_atomic(Path(json_path), text)
+
+
+def run_cases(
+    case_file: Path,
+    json_path: str | None,
+    out: Path | None,
+    only: Sequence[str] | None = None,
+    options: Mapping[str, Mapping[str, Any]] | None = None,
+    overrides: Mapping[str, Any] | None = None,
+) -> None:
+    """Load ``case_file``, solve what it asks for (or the capabilities in ``only``), print
+    the summaries, write JSON and the report folder."""
+    from shaftline.cases import load_case
+    from shaftline.pipeline import results_document, run_case, write_outputs
+    from shaftline.report.terminal import print_blocks
+
+    quiet = json_path == "-"
+    with input_errors():
+        case = load_case(case_file, only, overrides)
+        if only is not None and not any(key in case for key in only):
+            tables = ", ".join(f"[{key}]" for key in only)
+            raise InputError("case file", str(case_file), "", f"a {tables} table for this command")
+        with error_console.status("solving") as status:
+            result = run_case(case, only, options, progress=lambda text: status.update(text))
+    if not quiet:
+        for capability, value in result.capabilities():
+            print_blocks(console, capability.summary(value))
+    emit_json(results_document(result), json_path)
+    if out is not None:
+        write_outputs(result, out, str(case_file))
+        if not quiet:
+            console.print(f"report: {out / 'report.html'}", markup=False, highlight=False)

@@ -1,0 +1,153 @@
+"""CPP blade bearings as a capability: ``[cpp]`` in a case file, ``shaftline cpp fretting``
+and ``shaftline cpp motion``, ``cpp`` in results.json, a section of the report."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+from shaftline.cpp.case import CppSection, build_study
+from shaftline.registry import BuildContext, Capability, Comparison, Progress, Verb, no_progress
+from shaftline.report.blocks import Block, Figure, Heading, Table
+
+if TYPE_CHECKING:
+    from shaftline.cpp.study import BladeBearingResult, BladeBearingStudy
+
+
+class BladeBearings(Capability[CppSection, "BladeBearingStudy", "BladeBearingResult"]):
+    key = "cpp"
+    title = "CPP blade bearing: friction and fretting"
+    section = CppSection
+    verbs = (
+        Verb(
+            ("cpp", "fretting"),
+            "Friction torque, fretting coefficient and hydraulic pressures over a revolution; with several "
+            "case files, the propellers ranked by fretting risk.",
+            options={"motion": False},
+            many=True,
+        ),
+        Verb(
+            ("cpp", "motion"),
+            "Fretting motion of the blade carrier over revolutions (oil spring, backlash, friction law).",
+        ),
+    )
+
+    def build(self, section: CppSection, context: BuildContext) -> BladeBearingStudy:
+        return build_study(section, context)  # type: ignore[no-any-return]
+
+    def solve(
+        self, study: BladeBearingStudy, progress: Progress = no_progress, motion: bool = True, **options: Any
+    ) -> BladeBearingResult:
+        from shaftline.cpp.study import solve_blade_bearing
+
+        return solve_blade_bearing(study, motion, lambda step: progress(f"solving {step}"))
+
+    def to_json(self, result: BladeBearingResult) -> dict[str, Any]:
+        c = result.coefficient
+        out: dict[str, Any] = {
+            "units": {"torque": "N m", "angle": "deg", "pressure": "Pa", "amplitude": "m", "sliding": "m"},
+            "spindle_torque_mean": float(result.study.loads.spindle_torque.mean()),
+            "friction_torque_mean": float(result.friction.total.mean()),
+            "k_fret_max": c.maximum,
+            "k_fret_min": c.minimum,
+            "fretting_windows_positive_deg": [[math.degrees(a), math.degrees(b)] for a, b in c.windows_positive],
+            "fretting_windows_negative_deg": [[math.degrees(a), math.degrees(b)] for a, b in c.windows_negative],
+            "gross_fretting_both_ways": c.fretting,
+            "f_fret_critical_positive": result.critical[0],
+            "f_fret_critical_negative": result.critical[1],
+            "distribution_factor_min": float(result.friction.distribution_factor.min()),
+            "hydraulic_pressure": result.pressures,
+        }
+        if result.motion is not None:
+            m = result.motion
+            out["motion"] = {
+                "revolutions": m.revolutions,
+                "fretting_amplitude": float(m.amplitude[-1]),
+                "sliding_per_revolution": float(m.sliding_per_revolution[-1]),
+                "pressure_fluctuation": float(m.force_fluctuation[-1] / result.study.yoke_area),
+            }
+        if result.parameter_study is not None and result.study.study is not None:
+            out["study"] = {
+                "parameter": result.study.study.parameter,
+                "values": [v for v, _ in result.parameter_study],
+                "fretting_amplitude": [a for _, a in result.parameter_study],
+            }
+        return out
+
+    def _table(self, result: BladeBearingResult) -> Table:
+        s = self.to_json(result)
+
+        def windows(ws: list[list[float]]) -> str:
+            return ", ".join(f"{a:.0f}-{b:.0f}" for a, b in ws) or "none"
+
+        def critical(value: float | None) -> str:
+            return "-" if value is None else f"{value:.3f}"
+
+        rows = [
+            ["mean spindle torque [kN m]", f"{s['spindle_torque_mean'] / 1e3:.1f}"],
+            ["mean friction torque [kN m]", f"{s['friction_torque_mean'] / 1e3:.1f}"],
+            ["k_fret max / min [-]", f"{s['k_fret_max']:.3f} / {s['k_fret_min']:.3f}"],
+            ["gross fretting, M_sp > Q_fr [deg]", windows(s["fretting_windows_positive_deg"])],
+            ["gross fretting, M_sp < -Q_fr [deg]", windows(s["fretting_windows_negative_deg"])],
+            [
+                "critical f_fret + / - [-]",
+                f"{critical(s['f_fret_critical_positive'])} / {critical(s['f_fret_critical_negative'])}",
+            ],
+            ["smallest load distribution factor u [-]", f"{s['distribution_factor_min']:.3f}"],
+            [
+                "hydraulic pressure ahead / holding / astern [bar]",
+                " / ".join(f"{s['hydraulic_pressure'][k] / 1e5:.1f}" for k in ("ahead", "holding", "astern")),
+            ],
+        ]
+        if "motion" in s:
+            m = s["motion"]
+            rows += [
+                ["fretting amplitude at bearing radius [um]", f"{m['fretting_amplitude'] * 1e6:.1f}"],
+                ["sliding per revolution [mm]", f"{m['sliding_per_revolution'] * 1e3:.3f}"],
+                ["oil pressure fluctuation [bar]", f"{m['pressure_fluctuation'] / 1e5:.3f}"],
+            ]
+        return Table(["quantity", "value"], rows, "CPP blade bearing")
+
+    def summary(self, result: BladeBearingResult) -> list[Block]:
+        return [self._table(result)]
+
+    def report(self, result: BladeBearingResult) -> list[Block]:
+        from shaftline.cpp import figures
+
+        blocks: list[Block] = [
+            self._table(result),
+            Figure("cpp_torques.png", figures.torques, (result,), caption="spindle and friction torque"),
+        ]
+        if result.motion is not None:
+            blocks.append(Figure("cpp_motion.png", figures.motion, (result,), caption="fretting motion"))
+        if result.parameter_study is not None and result.study.study is not None:
+            parameter = result.study.study.parameter
+            blocks.append(Heading(f"Parameter study: {parameter}"))
+            blocks.append(
+                Table(
+                    [parameter, "fretting amplitude [um]"],
+                    [[str(v), f"{a * 1e6:.1f}"] for v, a in result.parameter_study],
+                )
+            )
+        return blocks
+
+    def compare(self, results: Sequence[tuple[str, BladeBearingResult]]) -> Comparison:
+        from shaftline.cpp.study import rank
+
+        ranking = rank(results)
+        document = {
+            "ranking": [
+                {"case": name, "max_abs_k_fret": value, "gross_fretting_both_ways": both}
+                for name, value, both in ranking
+            ]
+        }
+        table = Table(
+            ["case", "max |k_fret|", "fretting both ways"],
+            [[name, f"{value:.3f}", "yes" if both else "no"] for name, value, both in ranking],
+            "Fretting risk, highest first",
+        )
+        return Comparison(document, [table])
+
+
+CAPABILITY = BladeBearings()

@@ -1,0 +1,305 @@
+"""The ``[cpp]`` table of a case file: blade-bearing friction, fretting and carrier motion
+of a controllable-pitch propeller (seed 000 Ch. 3-4).
+
+Layout::
+
+    [cpp]                   blades, speed, diameter, pitch
+    [cpp.bearing]           the blade bearing
+    [cpp.loads]             blade loads: a CSV table, or mean values and harmonics
+    [[cpp.loads.harmonics]]
+    [cpp.hydraulics]        oil spring, backlash, pressures
+    [cpp.motion]            blade-carrier fretting motion
+    [cpp.study]             one parameter varied (Sect. 4.7)
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Any, Literal
+
+from pydantic import Field, model_validator
+
+from shaftline.cases.types import (
+    Angle,
+    Force,
+    Length,
+    Moment,
+    NonNegativeInertia,
+    NonNegativeLength,
+    PositiveArea,
+    PositiveInertia,
+    PositiveLength,
+    PositiveMass,
+    PositivePressure,
+    PositiveSpeed,
+    PositiveVolume,
+    Pressure,
+    Quantity,
+    Section,
+    default_of,
+    field_error,
+)
+from shaftline.cpp.loads import BladeBearing
+from shaftline.cpp.motion import CarrierModel
+from shaftline.errors import InputError, located
+from shaftline.registry import BuildContext
+
+Component = Literal["force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
+StudyParameter = Literal["holding_moment", "spindle_scale", "backlash", "friction", "oil_stiffness", "water_inertia"]
+
+#: Kind of quantity of the values of each study parameter (friction takes law names).
+STUDY_KINDS = {
+    "holding_moment": "moment",
+    "backlash": "length",
+    "oil_stiffness": "stiffness",
+    "water_inertia": "inertia",
+    "spindle_scale": "dimensionless",
+}
+
+
+class HarmonicSection(Section):
+    """A harmonic of a blade-load component over the blade angle: amplitude cos(order angle + phase)."""
+
+    component: Component
+    """Load component (blade axes: x along the shaft, z along the spindle)."""
+    order: Annotated[int, Field(ge=1)]
+    """Order (per revolution)."""
+    amplitude: float | str
+    """Amplitude: a force (N) for force components, a moment (N m) for moment components."""
+    phase: Angle = 0.0
+    """Phase."""
+
+
+class LoadsSection(Section):
+    """Loads on one blade at the blade-bearing centre over a revolution."""
+
+    table: str | None = None
+    """CSV: angle_deg, force_x, force_y, force_z (N), moment_x, moment_y, moment_z (N m), one row per
+    blade angle within one turn; path relative to the case file."""
+    mean_force: Annotated[list[Force], Field(min_length=3, max_length=3)] | None = None
+    """Mean hydrodynamic force (x, y, z), without a table."""
+    mean_moment: Annotated[list[Moment], Field(min_length=3, max_length=3)] | None = None
+    """Mean hydrodynamic moment (x, y, z), without a table."""
+    harmonics: list[HarmonicSection] = []
+    """Harmonics added to the mean values."""
+    centrifugal_force: Annotated[list[Force], Field(min_length=3, max_length=3)] | None = None
+    """Centrifugal force (x, y, z); or blade_mass and centre_of_gravity."""
+    centrifugal_moment: Annotated[list[Moment], Field(min_length=3, max_length=3)] | None = None
+    """Centrifugal moment (x, y, z)."""
+    blade_mass: PositiveMass | None = None
+    """Blade mass (centrifugal load of a point mass)."""
+    centre_of_gravity: Annotated[list[Length], Field(min_length=3, max_length=3)] | None = None
+    """Blade centre of gravity from the bearing centre (x, y, z)."""
+    points: Annotated[int, Field(ge=36)] = 720
+    """Blade angles per revolution of harmonic loads."""
+
+    @model_validator(mode="after")
+    def _sources(self) -> LoadsSection:
+        if self.table is None and (self.mean_force is None or self.mean_moment is None):
+            raise field_error("mean_force", "missing", "mean_force and mean_moment, or a load table")
+        given = self.centrifugal_force is not None and self.centrifugal_moment is not None
+        point_mass = self.blade_mass is not None and self.centre_of_gravity is not None
+        if not (given or point_mass):
+            raise field_error(
+                "centrifugal_force",
+                "missing",
+                "centrifugal_force and centrifugal_moment, or blade_mass and centre_of_gravity",
+            )
+        return self
+
+
+class BladeBearingSection(Section):
+    """The blade bearing: flange (radial part) and cylindrical seat (axial part)."""
+
+    radius: PositiveLength
+    """Mean radius of the flange (where sliding and fretting are counted)."""
+    friction_coefficient: Annotated[float, Quantity("dimensionless", gt=0, lt=1)]
+    """Coefficient of friction of the bearing."""
+    axial_radius: PositiveLength
+    """Radius of the bore of the axial part."""
+    carrier_radius: PositiveLength
+    """Radius of the blade carrier in it."""
+    thickness: PositiveLength
+    """Thickness of the axial part."""
+    youngs_modulus: PositivePressure = default_of(BladeBearing, "youngs_modulus")
+    """Young's modulus of the bearing material."""
+
+
+class HydraulicsSection(Section):
+    """The pitch-control hydraulics behind the yoke."""
+
+    bulk_modulus: PositivePressure = 1.5e9
+    """Bulk modulus of the oil."""
+    oil_volume: PositiveVolume
+    """Oil volume behind the yoke."""
+    yoke_area: PositiveArea
+    """Piston (yoke) area."""
+    pin_radius: PositiveLength
+    """Eccentricity of the crank pin."""
+    backlash: NonNegativeLength = 0.0
+    """Total free play in the pin-slot-yoke chain."""
+    other_friction: Force = 0.0
+    """Friction of the other parts of the mechanism."""
+    counterbalance_pressure: Pressure = 0.0
+    """Counterbalance pressure."""
+    column_length: PositiveLength | None = None
+    """Length of the oil column (default: volume / area)."""
+
+
+class MotionSection(Section):
+    """The blade-carrier fretting motion (Sect. 4.6): inertia, friction law and run length."""
+
+    inertia: PositiveInertia
+    """Blade and carrier inertia about the spindle axis."""
+    water_inertia: NonNegativeInertia = 0.0
+    """Entrained-water inertia."""
+    friction: Literal["lugre", "static"] = default_of(CarrierModel, "friction")
+    """LuGre (Eq. 4.13-4.15) or the finite-slope static law (Eq. 4.8)."""
+    revolutions: Annotated[int, Field(ge=1, le=10000)] = 10
+    """Shaft revolutions simulated (the last one is reported)."""
+    stiffness: Annotated[float, Quantity("rotational_stiffness", gt=0)] = default_of(CarrierModel, "stiffness")
+    """LuGre bristle stiffness sigma_0 (Table 4.2)."""
+    damping: Annotated[float, Quantity("rotational_damping", ge=0)] = default_of(CarrierModel, "damping")
+    """LuGre bristle damping sigma_1 (Table 4.2)."""
+    stribeck_velocity: PositiveSpeed = default_of(CarrierModel, "stribeck_velocity")
+    """Stribeck velocity (rotational)."""
+    threshold_velocity: PositiveSpeed = default_of(CarrierModel, "threshold_velocity")
+    """Threshold velocity of the static law (rotational)."""
+
+
+class StudySection(Section):
+    """One parameter of the carrier motion varied (seed Sect. 4.7)."""
+
+    parameter: StudyParameter
+    """The varied parameter (spindle_scale multiplies the spindle torque)."""
+    values: Annotated[list[float | str], Field(min_length=1)]
+    """Its values (quantities with units; friction law names for friction)."""
+    revolutions: Annotated[int, Field(ge=1, le=10000)] = 10
+    """Revolutions simulated per value."""
+
+
+class CppSection(Section):
+    """A CPP blade bearing: friction torque, fretting coefficient, hydraulics and carrier motion."""
+
+    blades: Annotated[int, Field(ge=2, le=8)]
+    """Number of blades."""
+    shaft_speed: PositiveSpeed
+    """Shaft speed."""
+    propeller_diameter: PositiveLength
+    """Propeller diameter (R0.7 = 0.35 D)."""
+    pitch_angle: Angle
+    """Design pitch angle."""
+    bearing: BladeBearingSection
+    """The blade bearing."""
+    loads: LoadsSection
+    """Blade loads."""
+    hydraulics: HydraulicsSection
+    """Hydraulics."""
+    motion: MotionSection | None = None
+    """Carrier motion."""
+    study: StudySection | None = None
+    """Parameter study of the carrier motion."""
+
+    @model_validator(mode="after")
+    def _study_needs_motion(self) -> CppSection:
+        if self.study is not None and self.motion is None:
+            raise field_error("study", self.study.parameter, "a [cpp.motion] table to vary")
+        return self
+
+
+def read_load_table(path: Any) -> tuple[Any, Any, Any]:
+    """Blade loads over a revolution from CSV: angle_deg, force_x, force_y, force_z (N),
+    moment_x, moment_y, moment_z (N m), one row per blade angle within one turn."""
+    import numpy as np
+
+    from shaftline.csvio import read_columns
+
+    columns = ["angle_deg", "force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
+    data = read_columns(path, columns, "table", order_matters=True)
+    table = np.column_stack([data[name] for name in columns])
+    angle = np.radians(table[:, 0])
+    if angle.size < 8 or np.any(np.diff(angle) <= 0) or angle[-1] - angle[0] >= 2 * math.pi:
+        raise InputError("table", str(path), "", "at least 8 increasing angles within one turn")
+    return angle, table[:, 1:4], table[:, 4:7]
+
+
+def build_study(section: CppSection, context: BuildContext) -> Any:
+    """The blade-bearing study in SI domain objects."""
+    import numpy as np
+
+    from shaftline.cpp.hydraulics import oil_spring_stiffness
+    from shaftline.cpp.loads import BladeLoads, centrifugal_point_mass
+    from shaftline.cpp.study import BladeBearingStudy, CarrierMotionRequest, ParameterStudy
+    from shaftline.units import to_si
+
+    speed = section.shaft_speed
+    b = section.bearing
+    with located("bearing"):
+        bearing = BladeBearing(
+            b.radius, b.friction_coefficient, b.axial_radius, b.carrier_radius, b.thickness, b.youngs_modulus
+        )
+    ld = section.loads
+    if ld.centrifugal_force is not None and ld.centrifugal_moment is not None:
+        f_ce, m_ce = np.array(ld.centrifugal_force), np.array(ld.centrifugal_moment)
+    else:
+        assert ld.blade_mass is not None and ld.centre_of_gravity is not None  # checked by the schema
+        f_ce, m_ce = centrifugal_point_mass(ld.blade_mass, np.array(ld.centre_of_gravity), speed)
+    harmonics: dict[str, list[tuple[int, float, float]]] = {}
+    for k, h in enumerate(ld.harmonics):
+        kind = "moment" if h.component.startswith("moment") else "force"
+        amplitude = to_si(h.amplitude, kind, f"loads.harmonics[{k}].amplitude")
+        harmonics.setdefault(h.component, []).append((h.order, amplitude, h.phase))
+    with located("loads"):
+        if ld.table is not None:
+            angle, force, moment = read_load_table(context.path(ld.table))
+            loads = BladeLoads(angle, force, moment, f_ce, m_ce)
+        else:
+            assert ld.mean_force is not None and ld.mean_moment is not None  # checked by the schema
+            angle = np.linspace(0.0, 2 * math.pi, ld.points, endpoint=False)
+            loads = BladeLoads.from_harmonics(
+                angle, np.array(ld.mean_force), np.array(ld.mean_moment), harmonics, f_ce, m_ce
+            )
+    hy = section.hydraulics
+    with located("hydraulics"):
+        oil_stiffness = oil_spring_stiffness(hy.bulk_modulus, hy.oil_volume, hy.yoke_area, hy.column_length)
+    motion = None
+    if section.motion is not None:
+        m = section.motion
+        motion = CarrierMotionRequest(
+            inertia=m.inertia,
+            water_inertia=m.water_inertia,
+            friction=m.friction,
+            revolutions=m.revolutions,
+            stiffness=m.stiffness,
+            damping=m.damping,
+            stribeck_velocity=m.stribeck_velocity,
+            threshold_velocity=m.threshold_velocity,
+        )
+    study = None
+    if section.study is not None:
+        st = section.study
+        values: list[Any]
+        if st.parameter == "friction":
+            values = [str(v) for v in st.values]
+            for k, value in enumerate(values):
+                if value not in ("lugre", "static"):
+                    raise InputError(f"study.values[{k}]", value, "", "lugre or static")
+        else:
+            values = [to_si(v, STUDY_KINDS[st.parameter], f"study.values[{k}]") for k, v in enumerate(st.values)]
+        study = ParameterStudy(st.parameter, tuple(values), st.revolutions)
+    return BladeBearingStudy(
+        blades=section.blades,
+        speed=speed,
+        radius_07=0.35 * section.propeller_diameter,
+        pitch_angle=section.pitch_angle,
+        bearing=bearing,
+        loads=loads,
+        oil_stiffness=oil_stiffness,
+        yoke_area=hy.yoke_area,
+        pin_radius=hy.pin_radius,
+        backlash=hy.backlash,
+        other_friction=hy.other_friction,
+        counterbalance_pressure=hy.counterbalance_pressure,
+        motion=motion,
+        study=study,
+    )

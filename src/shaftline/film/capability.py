@@ -1,0 +1,170 @@
+"""The stern-tube bearing film as a capability: ``[bearing]`` in a case file,
+``shaftline bearing solve``, ``bearing`` in results.json, a section of the report.
+
+This module is the worked example of docs/architecture.md: the schema lives in
+:mod:`shaftline.film.case`, the study and its solution in :mod:`shaftline.film.study`,
+the figures in :mod:`shaftline.film.figures`; this class ties them to the pipeline.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from shaftline.film.case import BearingSection, build_study
+from shaftline.registry import BuildContext, Capability, Progress, Verb, no_progress
+from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
+
+if TYPE_CHECKING:
+    from shaftline.film.study import BearingStudy, BearingStudyResult
+
+#: (label, JSON key, scale, digits) of the rows of the results table.
+TABLE_ROWS = [
+    ("eccentricity ratio ε [-]", "eccentricity_ratio", 1.0, 4),
+    ("attitude angle [deg]", "attitude_angle_deg", 1.0, 4),
+    ("h_min [µm]", "min_film_thickness", 1e6, 4),
+    ("h_min at θ [deg]", "min_film_theta_deg", 1.0, 4),
+    ("h_min at z [m]", "min_film_z", 1.0, 4),
+    ("p_max [MPa]", "max_pressure", 1e-6, 4),
+    ("p_max at θ [deg]", "max_pressure_theta_deg", 1.0, 4),
+    ("p_max at z [m]", "max_pressure_z", 1.0, 4),
+    ("mean pressure [MPa]", "mean_pressure", 1e-6, 4),
+    ("load centre from L/2 [m]", "load_centre_offset", 1.0, 4),
+    ("friction coefficient [-]", "friction_coefficient", 1.0, 4),
+    ("power loss [kW]", "power_loss", 1e-3, 4),
+    ("inlet flow [l/min]", "inlet_flow", 6e4, 4),
+    ("side leakage [l/min]", "side_leakage", 6e4, 4),
+    ("Sommerfeld number S [-]", "sommerfeld_number", 1.0, 4),
+]
+
+
+class BearingFilm(Capability[BearingSection, "BearingStudy", "BearingStudyResult"]):
+    key = "bearing"
+    title = "Stern-tube bearing film"
+    section = BearingSection
+    verbs = (Verb(("bearing", "solve"), "Solve the bearing film at equilibrium under the case load."),)
+    moved_tables = {
+        "operation": "bearing.operation",
+        "lubricant": "bearing.lubricant",
+        "solver": "bearing.solver",
+        "variants": "bearing.variants",
+    }
+
+    def build(self, section: BearingSection, context: BuildContext) -> BearingStudy:
+        return build_study(section, context)  # type: ignore[no-any-return]
+
+    def solve(self, study: BearingStudy, progress: Progress = no_progress, **options: Any) -> BearingStudyResult:
+        from shaftline.film.study import solve_study
+
+        return solve_study(study, lambda name: progress(f"solving {name}"))
+
+    def to_json(self, result: BearingStudyResult) -> dict[str, Any]:
+        from shaftline.film.summary import EXTRA_UNITS, equilibrium_summary, units
+
+        return {
+            "units": {**units(), **EXTRA_UNITS},
+            "cases": [
+                {"name": run.case.name, **equilibrium_summary(run.equilibrium, run.coefficients)}
+                for run in result.cases
+            ],
+        }
+
+    def _warnings(self, result: BearingStudyResult) -> list[Block]:
+        out: list[Block] = []
+        for run in result.cases:
+            if run.equilibrium.contact:
+                out.append(
+                    Paragraph(
+                        f"{run.case.name}: the film does not carry the load — the journal reaches the film floor "
+                        "(contact). Figures show the position at the floor.",
+                        "warn",
+                    )
+                )
+            elif not run.equilibrium.converged:
+                out.append(
+                    Paragraph(
+                        f"{run.case.name}: the equilibrium did not converge (force residual "
+                        f"{run.equilibrium.residual:.3g} N); the results are not a solution.",
+                        "warn",
+                    )
+                )
+        return out
+
+    def _table(self, result: BearingStudyResult) -> Table:
+        summaries = self.to_json(result)["cases"]
+        rows = [[label] + [fmt(s[key], scale, digits) for s in summaries] for label, key, scale, digits in TABLE_ROWS]
+        rows.append(["converged"] + ["yes" if s["converged"] else "NO" for s in summaries])
+        rows.append(["contact (film at floor)"] + ["YES" if s["contact"] else "no" for s in summaries])
+        return Table(["quantity"] + [s["name"] for s in summaries], rows, "Bearing film at equilibrium")
+
+    def summary(self, result: BearingStudyResult) -> list[Block]:
+        return [*self._warnings(result), self._table(result)]
+
+    def report(self, result: BearingStudyResult) -> list[Block]:
+        from shaftline.film import figures
+
+        blocks: list[Block] = [
+            *self._warnings(result),
+            Paragraph(
+                "Film equilibrium under the case load with the journal tilt held at the given misalignment. "
+                "Pressures are gauge; θ from the top of the bore in the sense of rotation; z from the aft edge."
+            ),
+            self._table(result),
+        ]
+        coefficient_rows = []
+        for run in result.cases:
+            if run.coefficients is None:
+                continue
+            k, c = run.coefficients.stiffness, run.coefficients.damping
+            coefficient_rows.append(
+                [run.case.name]
+                + [fmt(v, 1e-9) for v in (k[0, 0], k[0, 1], k[1, 0], k[1, 1])]
+                + [fmt(v, 1e-9) for v in (c[0, 0], c[0, 1], c[1, 0], c[1, 1])]
+            )
+        if coefficient_rows:
+            blocks.append(
+                Table(
+                    ["case", "Kyy", "Kyz", "Kzy", "Kzz", "Cyy", "Cyz", "Czy", "Czz"],
+                    coefficient_rows,
+                    "Film stiffness [kN/µm] and damping [kN·s/µm]",
+                )
+            )
+        if len(result.cases) > 1:
+            blocks.append(
+                Figure(
+                    "bearing_comparison.png",
+                    figures.comparison,
+                    ([r.case.name for r in result.cases], [r.equilibrium.state for r in result.cases]),
+                    caption="h_min, p_max and power loss of the base case and its variants",
+                )
+            )
+        for index, run in enumerate(result.cases):
+            state, name = run.equilibrium.state, run.case.name
+            blocks.append(Heading(name))
+            blocks.append(
+                Figure(
+                    f"bearing_{index}_maps.png",
+                    figures.film_and_pressure_maps,
+                    (state, name),
+                    caption=f"{name}: film and pressure",
+                )
+            )
+            blocks.append(
+                Figure(
+                    f"bearing_{index}_circumferential.png",
+                    figures.circumferential_profile,
+                    (state, name),
+                    caption=f"{name}: around the bore in the plane of p_max",
+                )
+            )
+            blocks.append(
+                Figure(
+                    f"bearing_{index}_axial.png",
+                    figures.axial_profiles,
+                    (state, name),
+                    caption=f"{name}: along the bearing",
+                )
+            )
+        return blocks
+
+
+CAPABILITY = BearingFilm()

@@ -1,0 +1,102 @@
+"""Figures a bearing designer expects: film and pressure maps, profiles, comparisons.
+
+Each function draws into the axes it is given (``ax=``) and returns them; without axes it
+makes a pyplot figure of its own (see :mod:`shaftline.report.plotting`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from shaftline.report.plotting import figure_function
+
+if TYPE_CHECKING:
+    from shaftline.film.bearing import BearingState
+
+
+def _unwrapped(state: BearingState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Angles in degrees sorted in [0, 360] with the periodic column repeated, and the order."""
+    theta = np.degrees(state.theta) % 360.0
+    order = np.argsort(theta)
+    theta_sorted = np.append(theta[order], theta[order][0] + 360.0)
+    order = np.append(order, order[0])
+    return theta_sorted, order, state.z
+
+
+@figure_function(layout=(1, 2), size=(11, 4.2))
+def film_and_pressure_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
+    """Unwrapped film-thickness and pressure maps over (theta, z), as seed 004 Fig. 5-1;
+    ``ax`` is a pair of axes."""
+    theta, order, z = _unwrapped(state)
+    film = state.film[:, order] * 1e6
+    pressure = state.pressure[:, order] / 1e6
+    for axes, field, label, cmap in (
+        (ax[0], film, "film thickness h [µm]", "viridis_r"),
+        (ax[1], pressure, "pressure p [MPa]", "inferno"),
+    ):
+        mesh = axes.contourf(theta, z, field, levels=30, cmap=cmap)
+        axes.figure.colorbar(mesh, ax=axes, label=label)
+        axes.set_xlabel("bearing angle θ from top, in sense of rotation [deg]")
+        axes.set_ylabel("z from aft edge [m]")
+        axes.set_xlim(0, 360)
+        axes.set_xticks(range(0, 361, 60))
+    ax[0].plot(np.degrees(state.min_film_theta), state.min_film_z, "wx", ms=9, mew=2)
+    head = f"{title}: " if title else ""
+    ax[0].set_title(f"{head}h_min = {state.min_film_thickness * 1e6:.1f} µm")
+    ax[1].plot(np.degrees(state.max_pressure_theta), state.max_pressure_z, "c+", ms=11, mew=2)
+    ax[1].set_title(f"p_max = {state.max_pressure / 1e6:.2f} MPa")
+    return ax
+
+
+@figure_function(size=(7.5, 4))
+def circumferential_profile(state: BearingState, title: str = "", *, ax: Any) -> Any:
+    """Pressure and film around the bore in the axial plane of p_max."""
+    theta, order, z = _unwrapped(state)
+    row = int(np.argmin(np.abs(z - state.max_pressure_z)))
+    ax.plot(theta, state.pressure[row, order] / 1e6, color="C3", label="pressure")
+    ax.set_xlabel("bearing angle θ [deg]")
+    ax.set_ylabel("pressure [MPa]", color="C3")
+    ax.set_xlim(0, 360)
+    ax.set_xticks(range(0, 361, 60))
+    twin = ax.twinx()
+    twin.plot(theta, state.film[row, order] * 1e6, color="C0", label="film")
+    twin.set_ylabel("film thickness [µm]", color="C0")
+    ax.set_title(f"{title + ': ' if title else ''}plane of p_max, z = {z[row]:.3f} m")
+    return ax
+
+
+@figure_function(size=(7.5, 4))
+def axial_profiles(state: BearingState, title: str = "", *, ax: Any) -> Any:
+    """Smallest film and largest pressure along the bearing, with the load centre."""
+    z = state.z
+    ax.plot(z, state.film.min(axis=1) * 1e6, color="C0", marker=".", label="h_min(z)")
+    ax.set_xlabel("z from aft edge [m]")
+    ax.set_ylabel("smallest film [µm]", color="C0")
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    twin = ax.twinx()
+    twin.plot(z, state.pressure.max(axis=1) / 1e6, color="C3", marker=".", label="p_max(z)")
+    twin.set_ylabel("largest pressure [MPa]", color="C3")
+    ax.axvline(0.5 * z[-1] + state.load_centre_offset, color="k", ls="--", lw=0.8)
+    ax.set_title(f"{title + ': ' if title else ''}along the bearing (dashed: load centre)")
+    return ax
+
+
+@figure_function(layout=(1, 3), size=(12, 3.8))
+def comparison(names: Sequence[str], states: Sequence[BearingState], *, ax: Any) -> Any:
+    """Bar charts of h_min, p_max and power loss across the variants of a study; ``ax`` is
+    three axes."""
+    positions = np.arange(len(names))
+    short = [name.split(",")[-1].strip() for name in names]
+    data = (
+        ([s.min_film_thickness * 1e6 for s in states], "h_min [µm]"),
+        ([s.max_pressure / 1e6 for s in states], "p_max [MPa]"),
+        ([s.power_loss / 1e3 for s in states], "power loss [kW]"),
+    )
+    for axes, (values, label) in zip(ax, data, strict=True):
+        axes.bar(positions, values, color=[f"C{k}" for k in range(len(names))])
+        axes.set_xticks(positions, short, rotation=15)
+        axes.set_ylabel(label)
+    return ax

@@ -1,0 +1,100 @@
+"""A bearing study: a stern-tube bearing under its load, with variants (other bores or
+tilts) solved beside it, each at equilibrium with its stiffness and damping.
+
+This is what ``[bearing]`` in a case file becomes; notebooks can build one directly::
+
+    study = BearingStudy((BearingCase("base", geometry, operating, SolverOptions(), load_y=-3e5),))
+    result = solve_study(study)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from shaftline.film.bearing import OperatingPoint, SolverOptions
+from shaftline.film.geometry import BearingGeometry
+
+if TYPE_CHECKING:
+    from shaftline.film.bearing import Equilibrium
+    from shaftline.film.dynamics import DynamicCoefficients
+    from shaftline.lubricants import Lubricant
+
+
+@dataclass(frozen=True, eq=False)
+class BearingCase:
+    """One bearing problem in SI units: the bearing, its running condition and its load.
+
+    Attributes
+    ----------
+    name : str
+        Label of the case or variant.
+    geometry, operating, options :
+        Inputs of :class:`shaftline.film.JournalBearing`.
+    load_y, load_z : float
+        Applied load on the journal, N (``load_y < 0`` downwards).
+    tilt_y, tilt_z : float
+        Journal tilt relative to the nominal bore axis, rad.
+    lubricant : Lubricant or None
+        The lubricant (for the report).
+    temperature : float or None
+        Effective film temperature, degC, where given.
+    """
+
+    name: str
+    geometry: BearingGeometry
+    operating: OperatingPoint
+    options: SolverOptions
+    load_y: float
+    load_z: float = 0.0
+    tilt_y: float = 0.0
+    tilt_z: float = 0.0
+    lubricant: Lubricant | None = None
+    temperature: float | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class BearingStudy:
+    """The base case (first) and its variants."""
+
+    cases: tuple[BearingCase, ...]
+
+
+@dataclass(frozen=True, eq=False)
+class BearingResult:
+    """Equilibrium of one case, with stiffness and damping where the film carries the load."""
+
+    case: BearingCase
+    equilibrium: Equilibrium
+    coefficients: DynamicCoefficients | None
+
+
+@dataclass(frozen=True, eq=False)
+class BearingStudyResult:
+    """The results of a study, in the order of its cases."""
+
+    cases: tuple[BearingResult, ...]
+
+
+def solve_case(case: BearingCase) -> BearingResult:
+    """Equilibrium under the case load, then stiffness and damping there (not at contact)."""
+    from shaftline.film.bearing import JournalBearing
+    from shaftline.film.dynamics import dynamic_coefficients
+
+    bearing = JournalBearing(case.geometry, case.operating, case.options)
+    equilibrium = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
+    coefficients = None
+    if equilibrium.converged and not equilibrium.contact:
+        coefficients = dynamic_coefficients(bearing, equilibrium.state)
+    return BearingResult(case, equilibrium, coefficients)
+
+
+def solve_study(study: BearingStudy, progress: Callable[[str], None] | None = None) -> BearingStudyResult:
+    """Solve the base case and every variant."""
+    results = []
+    for case in study.cases:
+        if progress is not None:
+            progress(case.name)
+        results.append(solve_case(case))
+    return BearingStudyResult(tuple(results))

@@ -1,0 +1,211 @@
+"""The capability registry: one entry per thing shaftline can analyse.
+
+A capability (the stern-tube bearing film, the shaft alignment, ...) is one small class
+that says how its case-file table looks, how the table becomes domain objects, how they
+are solved, and how the result is written as JSON, shown in the terminal and laid out in
+the report. The command line, ``shaftline run``, the JSON document and the HTML report
+iterate over the registry; none of them knows a capability by name.
+
+Adding a capability touches its own package and one line of :data:`CAPABILITY_MODULES`
+(see docs/architecture.md for the recipe). A capability module must stay cheap to
+import: the command line imports every one of them to list its verbs, so heavy modules
+(scipy, numba, matplotlib) are imported inside the methods that need them.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
+
+if TYPE_CHECKING:
+    from shaftline.cases.types import CaseInfo, Section
+    from shaftline.report.blocks import Block
+
+#: Modules holding a ``CAPABILITY`` instance, in the order of the report and the JSON.
+CAPABILITY_MODULES: tuple[str, ...] = (
+    "shaftline.film.capability",
+    "shaftline.shaft.capability",
+    "shaftline.wear.capability",
+    "shaftline.cpp.capability",
+)
+
+#: A callback that reports what is being solved (the command line shows it).
+Progress = Callable[[str], None]
+
+
+def no_progress(_: str) -> None:
+    """A :data:`Progress` that shows nothing."""
+
+
+@dataclass(frozen=True)
+class Verb:
+    """A command-line verb that runs one capability on case files.
+
+    Attributes
+    ----------
+    path : tuple of str
+        Words of the command: ``("bearing", "solve")`` is ``shaftline bearing solve``.
+    help : str
+        One line for ``--help``.
+    options : mapping
+        Keyword arguments passed to :meth:`Capability.solve`.
+    many : bool
+        The verb takes several case files and compares their results
+        (:meth:`Capability.compare`); with one file it is an ordinary run.
+    """
+
+    path: tuple[str, ...]
+    help: str
+    options: Mapping[str, Any] = field(default_factory=dict)
+    many: bool = False
+
+
+@dataclass(frozen=True)
+class Command:
+    """A command-line verb of a capability that is not a run of case files (a tool on a
+    data file, say): ``function`` is a typer command with its own annotated parameters."""
+
+    path: tuple[str, ...]
+    function: Callable[..., None]
+
+
+@dataclass(frozen=True)
+class BuildContext:
+    """What building a case section may need besides the section itself.
+
+    Attributes
+    ----------
+    case : CaseInfo
+        The case's name and description.
+    base_dir : Path
+        Folder that relative file names in the case are read from (the case file's).
+    """
+
+    case: CaseInfo
+    base_dir: Path
+
+    def path(self, name: str) -> Path:
+        """A file named in the case, relative to the case file unless absolute."""
+        path = Path(name).expanduser()
+        return path if path.is_absolute() else self.base_dir / path
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """Several cases' results set side by side (``shaftline cpp fretting A.toml B.toml``)."""
+
+    document: dict[str, Any]
+    blocks: list[Block]
+
+
+SectionT = TypeVar("SectionT", bound="Section")
+StudyT = TypeVar("StudyT")
+ResultT = TypeVar("ResultT")
+
+
+class Capability(Generic[SectionT, StudyT, ResultT]):
+    """One analysis: its case-file table, problem, solution and presentation.
+
+    Subclasses set the class attributes and implement :meth:`build`, :meth:`solve`,
+    :meth:`to_json`, :meth:`summary` and :meth:`report`; the rest is optional.
+
+    Attributes
+    ----------
+    key : str
+        Name of the case-file table (``[bearing]``) and of the result in ``results.json``.
+    title : str
+        Heading of the report section.
+    section : type of Section
+        The pydantic schema of the case-file table.
+    verbs : tuple of Verb
+        Command-line verbs that run this capability alone.
+    moved_tables : mapping
+        Top-level tables of an older case-file layout and where they live now, so that an
+        old file gets a message saying where to move them.
+    """
+
+    key: ClassVar[str]
+    title: ClassVar[str]
+    section: ClassVar[type[Section]]
+    verbs: ClassVar[tuple[Verb, ...]] = ()
+    moved_tables: ClassVar[Mapping[str, str]] = {}
+
+    def build(self, section: SectionT, context: BuildContext) -> StudyT:
+        """Turn the validated case-file table into SI domain objects (raises ``InputError``)."""
+        raise NotImplementedError
+
+    def solve(self, study: StudyT, progress: Progress = no_progress, **options: Any) -> ResultT:
+        """Solve the study. ``options`` come from the verb (:attr:`Verb.options`)."""
+        raise NotImplementedError
+
+    def to_json(self, result: ResultT) -> dict[str, Any]:
+        """The result as plain JSON types, SI units (a ``units`` map says which)."""
+        raise NotImplementedError
+
+    def summary(self, result: ResultT) -> list[Block]:
+        """What the terminal shows after a run: tables and short notes."""
+        raise NotImplementedError
+
+    def report(self, result: ResultT) -> list[Block]:
+        """The body of the report section: notes, tables and figures."""
+        raise NotImplementedError
+
+    def compare(self, results: Sequence[tuple[str, ResultT]]) -> Comparison:
+        """Several cases' results side by side (for a verb with ``many=True``)."""
+        raise NotImplementedError(f"{self.key} results cannot be compared")
+
+    def commands(self) -> Sequence[Command]:
+        """Further command-line verbs that are not runs of case files."""
+        return ()
+
+
+_loaded: dict[str, Capability[Any, Any, Any]] | None = None
+_added: dict[str, Capability[Any, Any, Any]] = {}
+_version = 0
+
+
+def capabilities() -> dict[str, Capability[Any, Any, Any]]:
+    """Every registered capability by key, in report order (built-ins first)."""
+    global _loaded
+    if _loaded is None:
+        loaded = {}
+        for name in CAPABILITY_MODULES:
+            capability = importlib.import_module(name).CAPABILITY
+            loaded[capability.key] = capability
+        _loaded = loaded
+    return {**_loaded, **_added}
+
+
+def version() -> int:
+    """A number that changes whenever the registry does (caches of the case schema key on it)."""
+    return _version
+
+
+def register(capability: Capability[Any, Any, Any]) -> None:
+    """Add a capability (after the built-in ones). Its key must be new."""
+    global _version
+    if capability.key in capabilities() or capability.key == "case":
+        raise ValueError(f"a capability named {capability.key!r} is registered already")
+    _added[capability.key] = capability
+    _version += 1
+
+
+def unregister(key: str) -> None:
+    """Remove a capability added with :func:`register`."""
+    global _version
+    del _added[key]
+    _version += 1
+
+
+@contextmanager
+def registered(capability: Capability[Any, Any, Any]) -> Iterator[Capability[Any, Any, Any]]:
+    """Register ``capability`` for the duration of a ``with`` block (tests, notebooks)."""
+    register(capability)
+    try:
+        yield capability
+    finally:
+        unregister(capability.key)

@@ -1,0 +1,49 @@
+"""What figure functions share: axes of their own when none are given.
+
+A figure function draws into the axes it is given (``ax=``) and returns them, as in
+scikit-fem and python-control, so a notebook user can place it in a figure of their own.
+Without ``ax`` it makes a new pyplot figure of its declared layout and size, shown by
+whatever backend the user has. The report passes axes of a figure that is not managed by
+pyplot and saves it itself, so nothing here switches the user's backend.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+from typing import Any
+
+
+class FigureFunction:
+    """A figure function with its layout of axes (rows, columns) and size (inches).
+
+    Calling it with ``ax=None`` makes the axes with pyplot; the report calls it with the
+    axes of its own figure.
+    """
+
+    def __init__(
+        self, function: Callable[..., Any], layout: tuple[int, int], size: tuple[float, float], sharex: bool
+    ) -> None:
+        self.function = function
+        self.layout = layout
+        self.size = size
+        self.sharex = sharex
+        functools.update_wrapper(self, function)
+
+    def __call__(self, *args: Any, ax: Any = None, **kwargs: Any) -> Any:
+        if ax is None:
+            import matplotlib.pyplot as plt
+
+            _, ax = plt.subplots(*self.layout, figsize=self.size, sharex=self.sharex, layout="constrained")
+        return self.function(*args, ax=ax, **kwargs)
+
+
+def figure_function(
+    layout: tuple[int, int] = (1, 1), size: tuple[float, float] = (8.0, 4.5), sharex: bool = False
+) -> Callable[[Callable[..., Any]], FigureFunction]:
+    """Declare a figure function's axes layout and size (decorator)."""
+
+    def wrap(function: Callable[..., Any]) -> FigureFunction:
+        return FigureFunction(function, layout, size, sharex)
+
+    return wrap

@@ -1,0 +1,279 @@
+"""Shaft alignment as a capability: ``[alignment]`` in a case file, ``shaftline align``,
+``alignment`` in results.json, a section of the report."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from shaftline.registry import BuildContext, Capability, Progress, Verb, no_progress
+from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
+from shaftline.shaft.case import AlignmentSection, build_study
+
+if TYPE_CHECKING:
+    from shaftline.shaft.rules import RuleCheck
+    from shaftline.shaft.study import AlignmentResult, AlignmentStudy
+
+#: Display unit and scale of each rule quantity.
+RULE_UNITS = {
+    "reaction": ("kN", 1e-3),
+    "reaction_share": ("-", 1.0),
+    "mean_pressure": ("MPa", 1e-6),
+    "relative_slope": ("mrad", 1e3),
+}
+RULE_HEADERS = ["result", "rule", "condition", "bearing", "value", "limit", "source", "confidence"]
+
+
+def _check_json(check: RuleCheck) -> dict[str, Any]:
+    return {
+        "rule": check.rule.id,
+        "society": check.rule.society,
+        "clause": check.rule.clause,
+        "confidence": check.rule.confidence,
+        "condition": check.condition,
+        "bearing": check.bearing,
+        "value": check.value,
+        "comparison": check.rule.comparison,
+        "limit": check.rule.limit,
+        "passed": check.passed,
+    }
+
+
+def rule_check_rows(checks: list[RuleCheck]) -> list[list[str]]:
+    """Table rows of rule checks, failures first."""
+    rows = []
+    for c in sorted(checks, key=lambda check: check.passed):
+        unit, scale = RULE_UNITS[c.rule.quantity]
+        rows.append(
+            [
+                "pass" if c.passed else "FAIL",
+                c.rule.id,
+                c.condition,
+                c.bearing,
+                f"{c.value * scale:.4g} {unit}",
+                f"{c.rule.comparison} {c.rule.limit * scale:.4g}",
+                c.rule.society,
+                c.rule.confidence,
+            ]
+        )
+    return rows
+
+
+class ShaftAlignment(Capability[AlignmentSection, "AlignmentStudy", "AlignmentResult"]):
+    key = "alignment"
+    title = "Shaft alignment"
+    section = AlignmentSection
+    verbs = (Verb(("align",), "Shaft alignment: elastic line, reactions, slopes, influence matrix and rule checks."),)
+    moved_tables = {
+        "shaft": "alignment.shaft",
+        "bearings": "alignment.bearings",
+        "propeller": "alignment.propeller",
+        "conditions": "alignment.conditions",
+        "loads": "alignment.loads",
+        "masses": "alignment.masses",
+        "distributed_loads": "alignment.distributed_loads",
+    }
+
+    def build(self, section: AlignmentSection, context: BuildContext) -> AlignmentStudy:
+        return build_study(section, context)  # type: ignore[no-any-return]
+
+    def solve(self, study: AlignmentStudy, progress: Progress = no_progress, **options: Any) -> AlignmentResult:
+        from shaftline.shaft.study import solve_alignment
+
+        return solve_alignment(study, lambda step: progress(f"solving {step}"))
+
+    def to_json(self, result: AlignmentResult) -> dict[str, Any]:
+        out: dict[str, Any] = {
+            "units": {
+                "reaction_y": "N",
+                "reaction_z": "N",
+                "mean_pressure": "Pa",
+                "shaft_slope": "rad",
+                "relative_slope": "rad",
+                "influence_matrix": "N/m",
+                "offsets": "m",
+                "sag": "m",
+                "gap": "m",
+                "max_stress": "Pa",
+                "deflection": "m",
+            },
+            "conditions": [
+                {
+                    "name": r.name,
+                    "max_stress": float(r.stress.max()),
+                    "bearings": [
+                        {
+                            "name": b.name,
+                            "reaction_y": b.reaction_y,
+                            "reaction_z": b.reaction_z,
+                            "mean_pressure": b.mean_pressure,
+                            "contact": b.contact,
+                            "shaft_slope": b.shaft_slope,
+                            "relative_slope": b.relative_slope,
+                        }
+                        for b in r.bearings
+                    ],
+                    "elastic_line": {
+                        "x": r.x.tolist(),
+                        "deflection_y": r.deflection_y.tolist(),
+                        "deflection_z": r.deflection_z.tolist(),
+                        "rotation_y": r.rotation_y.tolist(),
+                        "rotation_z": r.rotation_z.tolist(),
+                        "moment_y": r.moment_y.tolist(),
+                        "moment_z": r.moment_z.tolist(),
+                        "shear_y": r.shear_y.tolist(),
+                        "stress": r.stress.tolist(),
+                    },
+                }
+                for r in result.conditions
+            ],
+            "influence_matrix": {"bearings": result.influence.names, "matrix": result.influence.matrix.tolist()},
+            "rule_checks": [_check_json(c) for c in result.checks],
+            "slope_boring_angle": result.slope_boring_angle(),
+        }
+        if result.plan is not None:
+            out["optimised_offsets"] = {
+                "offsets": result.plan.offsets,
+                "objective": result.plan.objective,
+                "rule_checks": [_check_json(c) for c in result.plan_checks or []],
+            }
+        if result.sag_gap is not None:
+            sg = result.sag_gap
+            out["sag_gap"] = {"flange_x": sg.flange_x, "sag": sg.sag, "gap": sg.gap}
+        if result.jack is not None:
+            jack = result.jack
+            out["jack_up"] = {
+                "bearing": jack.bearing,
+                "jack_x": jack.jack_x,
+                "reaction_before": jack.reaction_before,
+                "liftoff_load": jack.liftoff_load,
+                "correction_factor": jack.correction_factor,
+                "curve": {"load": jack.loads.tolist(), "lift": jack.lifts.tolist()},
+            }
+            if result.jack_fit is not None:
+                out["jack_up"]["measured"] = {
+                    "knee_load": result.jack_fit.knee_load,
+                    "reaction": result.jack_fit.reaction,
+                    "residual": result.jack_fit.residual,
+                }
+        if result.reverse is not None:
+            out["offsets_from_reactions"] = {"offsets": result.reverse[0], "rms_misfit": result.reverse[1]}
+        return out
+
+    def _reactions(self, result: AlignmentResult) -> Table:
+        headers = [
+            "condition",
+            "bearing",
+            "reaction [kN]",
+            "mean pressure [MPa]",
+            "contact",
+            "shaft slope [mrad]",
+            "relative slope [mrad]",
+        ]
+        rows = [
+            [
+                r.name,
+                b.name,
+                fmt(b.reaction_y, 1e-3),
+                fmt(b.mean_pressure, 1e-6),
+                b.contact,
+                fmt(b.shaft_slope, 1e3),
+                fmt(b.relative_slope, 1e3),
+            ]
+            for r in result.conditions
+            for b in r.bearings
+        ]
+        return Table(headers, rows, "Shaft alignment")
+
+    def _verdict(self, result: AlignmentResult) -> Paragraph:
+        failed = [c for c in result.checks if not c.passed]
+        if failed:
+            return Paragraph(f"Class-rule checks: {len(failed)} of {len(result.checks)} fail.", "warn")
+        return Paragraph(f"Class-rule checks: all {len(result.checks)} pass.")
+
+    def summary(self, result: AlignmentResult) -> list[Block]:
+        blocks: list[Block] = [self._reactions(result), self._verdict(result)]
+        failed = [c for c in result.checks if not c.passed]
+        if failed:
+            blocks.append(Table(RULE_HEADERS, rule_check_rows(failed), "Failed class-rule checks"))
+        return blocks
+
+    def report(self, result: AlignmentResult) -> list[Block]:
+        from shaftline.shaft import figures
+
+        line = result.model.line
+        blocks: list[Block] = [
+            self._verdict(result),
+            Paragraph(
+                f"{len(result.conditions)} condition(s), {len(line.bearings)} bearings, "
+                f"{result.model.mesh.nodes - 1} {line.beam_theory.replace('_', '-')} elements. Reactions + up; "
+                "slopes dy/dx; the relative slope is the shaft's across the bearing less the bearing's own."
+            ),
+            self._reactions(result),
+            Heading("Class-rule checks"),
+            Table(RULE_HEADERS, rule_check_rows(result.checks)),
+            Paragraph(
+                "Slope-boring angle that would make the aft stern-tube bearing parallel to the shaft: "
+                + ", ".join(f"{name}: {value * 1e3:.3f} mrad" for name, value in result.slope_boring_angle().items())
+                + "."
+            ),
+            Figure(
+                "alignment_elastic_line.png", figures.elastic_line, (line, result.conditions), caption="elastic line"
+            ),
+            Figure(
+                "alignment_moment_shear.png", figures.moment_and_shear, (result.conditions,), caption="moment and shear"
+            ),
+            Figure("alignment_reactions.png", figures.reactions, (result.conditions,), caption="reactions"),
+            Figure(
+                "alignment_influence.png", figures.influence_heatmap, (result.influence,), caption="influence matrix"
+            ),
+        ]
+        study = result.study
+        if result.plan is not None and study.optimise is not None:
+            blocks.append(Heading(f"Optimised offsets ({study.optimise.objective})"))
+            blocks.append(
+                Table(["bearing", "added offset [mm]"], [[k, fmt(v, 1e3)] for k, v in result.plan.offsets.items()])
+            )
+            plan_failed = [c for c in result.plan_checks or [] if not c.passed]
+            blocks.append(
+                Paragraph(
+                    f"With these offsets {len(plan_failed)} rule checks fail; objective {result.plan.objective:.4g}.",
+                    "warn" if plan_failed else "text",
+                )
+            )
+        if result.sag_gap is not None:
+            sg = result.sag_gap
+            blocks.append(Heading(f"Sag and gap at the flange at x = {sg.flange_x:.3f} m"))
+            blocks.append(
+                Paragraph(
+                    f"sag {sg.sag * 1e3:.3f} mm (forward face higher +), gap {sg.gap * 1e3:.3f} mm (open at the top +)."
+                )
+            )
+        if result.jack is not None:
+            jack = result.jack
+            measured = study.jack_up.measured if study.jack_up is not None else None
+            text = (
+                f"Bearing {jack.bearing}, jack at x = {jack.jack_x:.3f} m: modelled reaction "
+                f"{jack.reaction_before / 1e3:.1f} kN, lift-off at {jack.liftoff_load / 1e3:.1f} kN, "
+                f"correction factor {jack.correction_factor:.4f}."
+            )
+            if result.jack_fit is not None:
+                text += (
+                    f" Measured curve: knee at {result.jack_fit.knee_load / 1e3:.1f} kN, reaction "
+                    f"{result.jack_fit.reaction / 1e3:.1f} kN."
+                )
+            blocks += [
+                Heading("Jack-up"),
+                Paragraph(text),
+                Figure("alignment_jack.png", figures.jack_curve, (jack, measured, result.jack_fit), caption="jack-up"),
+            ]
+        if result.reverse is not None:
+            offsets, misfit = result.reverse
+            blocks += [
+                Heading("Offsets from measured reactions"),
+                Table(["bearing", "offset [mm]"], [[k, fmt(v, 1e3)] for k, v in offsets.items()]),
+                Paragraph(f"RMS reaction misfit {misfit / 1e3:.3f} kN."),
+            ]
+        return blocks
+
+
+CAPABILITY = ShaftAlignment()

@@ -1,0 +1,160 @@
+"""An alignment study: the shaft line in all its conditions, the class-rule checks and
+the procedures asked for (offset optimisation, sag and gap, jack-up, offsets from
+measured reactions).
+
+This is what ``[alignment]`` in a case file becomes; notebooks can build one directly
+from a :class:`~shaftline.shaft.model.ShaftLine` and :func:`solve_alignment` it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from shaftline.shaft.model import Bearing, Condition, ShaftLine
+
+if TYPE_CHECKING:
+    from shaftline.shaft.alignment import AlignmentModel, ConditionResult, InfluenceMatrix
+    from shaftline.shaft.jackup import JackUpCurve, JackUpFit
+    from shaftline.shaft.offsets import OffsetPlan
+    from shaftline.shaft.rules import Rule, RuleCheck
+    from shaftline.shaft.sag_gap import SagGap
+
+
+@dataclass(frozen=True)
+class OffsetOptimisation:
+    """Offsets of the ``adjustable`` bearings (None: all but the end ones) that meet the
+    rules in every condition, minimising ``objective`` within +/- ``bound`` (m)."""
+
+    objective: str = "aft_slope"
+    adjustable: tuple[str, ...] | None = None
+    bound: float = 5e-3
+
+
+@dataclass(frozen=True)
+class SagGapRequest:
+    """Sag and gap at the flange at ``flange_x`` (m) in ``condition``, with temporary supports."""
+
+    flange_x: float
+    condition: Condition
+    flange_diameter: float | None = None
+    temporary_supports: tuple[Bearing, ...] = ()
+
+
+@dataclass(frozen=True, eq=False)
+class JackUpRequest:
+    """A jack-up test of ``bearing`` with the jack at ``jack_x`` (m); ``measured`` is the
+    test's (loads N, lifts m) where there is one."""
+
+    bearing: str
+    jack_x: float
+    condition: Condition
+    measured: tuple[np.ndarray, np.ndarray] | None = None
+
+
+@dataclass(frozen=True)
+class MeasuredReactions:
+    """Measured reactions (N per bearing) in ``condition``; ``reference`` holds two bearings
+    whose offsets stay as they are."""
+
+    values: dict[str, float]
+    condition: Condition
+    reference: tuple[str, str] | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class AlignmentStudy:
+    """An alignment problem in SI units and the procedures asked for."""
+
+    line: ShaftLine
+    rules: tuple[Rule, ...]
+    optimise: OffsetOptimisation | None = None
+    sag_gap: SagGapRequest | None = None
+    jack_up: JackUpRequest | None = None
+    measured_reactions: MeasuredReactions | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class AlignmentResult:
+    """Everything an alignment study asked for.
+
+    Attributes
+    ----------
+    study : AlignmentStudy
+    model : AlignmentModel
+    conditions : list of ConditionResult
+        One per condition, in the order of the study.
+    influence : InfluenceMatrix
+    checks : list of RuleCheck
+    plan, plan_checks :
+        Optimised offsets and the rule checks with them (when asked).
+    sag_gap : SagGap or None
+    jack, jack_fit :
+        Modelled jack-up curve and the fit of the measured one (when asked).
+    reverse : (dict, float) or None
+        Offsets from measured reactions (m per bearing) and the RMS reaction misfit (N).
+    """
+
+    study: AlignmentStudy
+    model: AlignmentModel
+    conditions: list[ConditionResult]
+    influence: InfluenceMatrix
+    checks: list[RuleCheck]
+    plan: OffsetPlan | None = None
+    plan_checks: list[RuleCheck] | None = None
+    sag_gap: SagGap | None = None
+    jack: JackUpCurve | None = None
+    jack_fit: JackUpFit | None = None
+    reverse: tuple[dict[str, float], float] | None = None
+
+    def slope_boring_angle(self) -> dict[str, float]:
+        """Per condition, the bore slope that would make the aft stern-tube bearing parallel
+        to the shaft, rad."""
+        aft = min(self.model.line.bearings, key=lambda b: b.x).name
+        return {r.name: r.bearing(aft).shaft_slope for r in self.conditions}
+
+
+def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | None = None) -> AlignmentResult:
+    """All conditions, the influence matrix, rule checks and the procedures the study asks for."""
+    from shaftline.errors import located
+    from shaftline.shaft.alignment import AlignmentModel
+    from shaftline.shaft.jackup import jack_up, reaction_from_jack_curve
+    from shaftline.shaft.offsets import offsets_from_reactions, optimise_offsets
+    from shaftline.shaft.rules import check_rules
+    from shaftline.shaft.sag_gap import sag_and_gap
+
+    step = progress or (lambda _: None)
+    step("alignment conditions")
+    model = AlignmentModel(study.line)
+    results = model.solve()
+    influence = model.influence_matrix()
+    rules = list(study.rules)
+    checks = check_rules(model, results, rules)
+    plan = plan_checks = sag = jack = fit = reverse = None
+    if study.optimise is not None:
+        step("offset optimisation")
+        o = study.optimise
+        with located("optimise"):
+            plan = optimise_offsets(model, rules, list(o.adjustable) if o.adjustable else None, o.objective, o.bound)
+        plan_checks = check_rules(model, plan.results, rules)
+    if study.sag_gap is not None:
+        step("sag and gap")
+        sg = study.sag_gap
+        with located("sag_gap"):
+            sag = sag_and_gap(study.line, sg.flange_x, sg.temporary_supports, sg.condition, sg.flange_diameter)
+    if study.jack_up is not None:
+        step("jack-up")
+        ju = study.jack_up
+        with located("jack_up"):
+            jack = jack_up(study.line, ju.bearing, ju.jack_x, ju.condition)
+        if ju.measured is not None:
+            with located("jack_up.measured_curve"):
+                fit = reaction_from_jack_curve(*ju.measured, jack.correction_factor)
+    if study.measured_reactions is not None:
+        mr = study.measured_reactions
+        with located("measured_reactions"):
+            reverse = offsets_from_reactions(model, mr.values, mr.condition, mr.reference)
+    return AlignmentResult(study, model, results, influence, checks, plan, plan_checks, sag, jack, fit, reverse)

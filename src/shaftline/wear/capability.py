@@ -1,0 +1,232 @@
+"""Service wear of CPP blade bearings as a capability: ``[wear]`` in a case file,
+``shaftline wear pitchlog`` and ``shaftline wear weibull``, ``wear`` in results.json, a
+section of the report."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+
+from shaftline.registry import BuildContext, Capability, Command, Progress, no_progress
+from shaftline.report.blocks import Block, Figure, Paragraph, Table
+from shaftline.wear.case import WearSection, build_study
+
+if TYPE_CHECKING:
+    from shaftline.wear.reliability import WeibullFit
+    from shaftline.wear.study import WearResult, WearStudy
+
+MM3_PER_NM = 1e-9  # m^3/(N m) per mm^3/(N m)
+
+
+def weibull_json(fit: WeibullFit) -> dict[str, Any]:
+    return {
+        "shape": fit.shape,
+        "scale": fit.scale,
+        "shape_interval": fit.interval("shape"),
+        "scale_interval": fit.interval("scale"),
+        "confidence": fit.confidence,
+    }
+
+
+def weibull_text(fit: WeibullFit, scale: float = 1.0, unit: str = "") -> str:
+    low, high = fit.interval("shape")
+    scale_low, scale_high = fit.interval("scale")
+    return (
+        f"Weibull fit of {fit.samples.size} samples: shape {fit.shape:.4g} ({low:.4g}-{high:.4g}), scale "
+        f"{fit.scale * scale:.4g} ({scale_low * scale:.4g}-{scale_high * scale:.4g}){' ' + unit if unit else ''}; "
+        f"{fit.confidence:.0%} intervals."
+    )
+
+
+class ServiceWear(Capability[WearSection, "WearStudy", "WearResult"]):
+    key = "wear"
+    title = "Blade-bearing wear in service"
+    section = WearSection
+
+    def build(self, section: WearSection, context: BuildContext) -> WearStudy:
+        return build_study(section, context)  # type: ignore[no-any-return]
+
+    def solve(self, study: WearStudy, progress: Progress = no_progress, **options: Any) -> WearResult:
+        from shaftline.wear.study import solve_wear
+
+        return solve_wear(study, lambda step: progress(f"solving {step}"))
+
+    def to_json(self, result: WearResult) -> dict[str, Any]:
+        from shaftline.wear.archard import wear_class
+
+        out: dict[str, Any] = {
+            "units": {"distance": "m", "depth": "m", "rate": "m^3/(N m)", "travel": "design pitches"},
+            "wear_rate": result.study.wear_rate,
+            "wear_class": wear_class(result.study.wear_rate),
+            "pitch_travel_raw": result.travel_raw,
+            "pitch_travel_corrected": result.travel_corrected,
+            "scenarios": [
+                {
+                    "name": s.name,
+                    "distance_per_voyage": s.distance_per_voyage,
+                    "distance_total": s.distance_total,
+                    "depth_total": s.depth_total,
+                    "allowable_rate": s.allowable_rate,
+                    "years_to_limit": s.years_to_limit,
+                    "exceedance": None
+                    if s.exceedance is None
+                    else dict(zip(("lower", "estimate", "upper"), s.exceedance, strict=True)),
+                }
+                for s in result.scenarios
+            ],
+        }
+        if result.weibull is not None:
+            out["weibull"] = weibull_json(result.weibull)
+        return out
+
+    def _table(self, result: WearResult) -> Table:
+        headers = [
+            "scenario",
+            "sliding per voyage [m]",
+            f"sliding in {result.study.service.years:g} years [km]",
+            "wear depth [um]",
+            "allowable rate [mm3/Nm]",
+            "years to limit",
+            "P(rate > allowable)",
+        ]
+        rows = []
+        for s in result.scenarios:
+            probability = "-"
+            if s.exceedance is not None:
+                low, mid, high = s.exceedance
+                probability = f"{mid:.3g} ({low:.3g} - {high:.3g})"
+            rows.append(
+                [
+                    s.name,
+                    f"{s.distance_per_voyage:.3f}",
+                    f"{s.distance_total / 1e3:.1f}",
+                    f"{s.depth_total * 1e6:.0f}",
+                    f"{s.allowable_rate / MM3_PER_NM:.3g}",
+                    f"{s.years_to_limit:.1f}",
+                    probability,
+                ]
+            )
+        return Table(headers, rows, "Blade-bearing wear")
+
+    def _warnings(self, result: WearResult) -> list[Block]:
+        study = result.study
+        return [
+            Paragraph(
+                f"{s.name}: the wear depth after {study.service.years:g} years, {s.depth_total * 1e6:.0f} µm, "
+                f"exceeds the allowable {study.allowable_depth * 1e6:.0f} µm "
+                f"(reached after {s.years_to_limit:.1f} years).",
+                "warn",
+            )
+            for s in result.scenarios
+            if s.depth_total > study.allowable_depth
+        ]
+
+    def summary(self, result: WearResult) -> list[Block]:
+        blocks: list[Block] = [*self._warnings(result), self._table(result)]
+        if result.weibull is not None:
+            blocks.append(Paragraph("Tested wear rates: " + weibull_text(result.weibull, 1 / MM3_PER_NM, "mm3/Nm")))
+        return blocks
+
+    def report(self, result: WearResult) -> list[Block]:
+        from shaftline.wear import figures
+        from shaftline.wear.archard import wear_class
+
+        study = result.study
+        blocks: list[Block] = [
+            *self._warnings(result),
+            Paragraph(
+                f"Blade bearing radius {study.bearing_radius:.3f} m, design pitch "
+                f"{study.design_pitch_angle * 180 / 3.141592653589793:.1f} deg, contact pressure "
+                f"{study.contact_pressure / 1e6:.1f} N/mm², specific wear rate {study.wear_rate / MM3_PER_NM:.3g} "
+                f"mm³/Nm (wear class {wear_class(study.wear_rate)}), allowable depth "
+                f"{study.allowable_depth * 1e6:.0f} µm; {study.service.voyages_per_day:g} voyages a day, "
+                f"{study.service.days_per_year:g} days a year, {study.service.years:g} years."
+            ),
+            self._table(result),
+        ]
+        if result.weibull is not None:
+            blocks.append(Paragraph("Tested wear rates: " + weibull_text(result.weibull, 1 / MM3_PER_NM, "mm³/Nm")))
+            marks = {f"allowable: {s.name}": s.allowable_rate for s in result.scenarios}
+            blocks.append(
+                Figure(
+                    "wear_weibull.png",
+                    figures.weibull,
+                    (result.weibull, 1 / MM3_PER_NM, "wear rate [mm³/Nm]", marks),
+                    caption="Weibull distribution of the tested wear rates and the allowable rates",
+                )
+            )
+        if study.pitch_log is not None:
+            blocks.append(Figure("wear_pitch_log.png", figures.pitch_log, (result,), caption="pitch log"))
+        blocks.append(
+            Figure("wear_depth.png", figures.depth_over_years, (result,), caption="wear depth over the years")
+        )
+        return blocks
+
+    def commands(self) -> Sequence[Command]:
+        return (Command(("wear", "pitchlog"), pitchlog), Command(("wear", "weibull"), weibull))
+
+
+def pitchlog(
+    log_file: Annotated[Path, typer.Argument(help="Pitch log CSV: time (s), pitch (% of design pitch).")],
+    case_file: Annotated[Path, typer.Option("--case", help="Case file with a [wear] table.")],
+    json_path: Annotated[
+        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
+    ] = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
+) -> None:
+    """Sliding distance and wear from a pitch log: standard control, active control, fretting."""
+    from shaftline.commandline import run_cases
+
+    run_cases(case_file, json_path, out, only=["wear"], overrides={"wear.pitch_log": str(log_file.resolve())})
+
+
+def weibull(
+    data_file: Annotated[Path, typer.Argument(help="CSV with one column of wear depths or rates.")],
+    threshold: Annotated[
+        float | None, typer.Option("--threshold", help="Report P(value > threshold), same unit as the data.")
+    ] = None,
+    confidence: Annotated[float, typer.Option("--confidence", help="Level of the bounds.")] = 0.95,
+    json_path: Annotated[
+        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
+    ] = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
+) -> None:
+    """Weibull fit (maximum likelihood) of wear samples with confidence bounds."""
+    import shaftline
+    from shaftline.commandline import console, emit_json, input_errors
+    from shaftline.pipeline import atomic_folder, dumps
+    from shaftline.report.blocks import Section
+    from shaftline.report.html import write_report
+    from shaftline.wear import figures
+    from shaftline.wear.reliability import fit_weibull, read_samples
+
+    with input_errors():
+        fit = fit_weibull(read_samples(data_file), confidence)
+    document: dict[str, Any] = {**weibull_json(fit), "samples": fit.samples.tolist()}
+    lines = [weibull_text(fit)]
+    if threshold is not None:
+        low, mid, high = fit.exceedance(threshold)
+        document["exceedance"] = {"threshold": threshold, "lower": low, "estimate": mid, "upper": high}
+        lines.append(f"P(value > {threshold:g}) = {mid:.4g} ({low:.4g} - {high:.4g})")
+    if json_path != "-":
+        for line in lines:
+            console.print(line, markup=False, highlight=False)
+    emit_json(document, json_path)
+    if out is not None:
+        marks = {"threshold": threshold} if threshold is not None else None
+        section = Section(
+            "weibull",
+            "Weibull fit",
+            [*(Paragraph(line) for line in lines), Figure("weibull.png", figures.weibull, (fit, 1.0, "value", marks))],
+        )
+        with atomic_folder(out) as folder:
+            (folder / "results.json").write_text(dumps(document) + "\n", encoding="utf-8")
+            write_report(
+                folder, f"Weibull fit of {data_file.name}", "", str(data_file), [section], shaftline.__version__
+            )
+
+
+CAPABILITY = ServiceWear()

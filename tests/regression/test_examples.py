@@ -1,0 +1,118 @@
+"""Every example gives the numbers it gave before the pipeline refactor (issue 8).
+
+Reference: ``baseline/*.json``, written by shaftline at commit b95902c (see README.md here).
+The case files have since moved to the one-table-per-capability layout and the bearing
+film's results moved from the top level of the JSON to ``bearing.cases``; the comparison
+maps the old layout onto the new one and then compares every number.
+
+Tolerance: relative 1e-7, or 1e-9 of the largest magnitude in the same list for entries
+near zero. The film and wear numerics are unchanged and agree to the last digit; the
+tolerance leaves room for the alignment's contact QP and the carrier integrator's Newton
+loop, whose converged results may differ in the last digits if their linear algebra is
+reorganised — far below any engineering meaning (1e-7 of a reaction of 1 MN is 0.1 N).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import pytest
+from typer.testing import CliRunner
+
+from shaftline.cases import load_case
+from shaftline.cli import app
+from shaftline.pipeline import dumps, results_document, run_case
+
+HERE = Path(__file__).parent
+EXAMPLES = HERE.parents[1] / "examples"
+RTOL = 1e-7
+ATOL_SHARE = 1e-9
+
+
+def baseline(name: str) -> dict[str, Any]:
+    return json.loads((HERE / "baseline" / f"{name}.json").read_text())
+
+
+def new_layout(old: dict[str, Any]) -> dict[str, Any]:
+    """The version-0.1 document in today's layout: the film's base case and variants under
+    ``bearing.cases``, its units under ``bearing.units``."""
+    if "case" not in old:  # a tool's document (the Weibull verb), not a case's
+        return old
+    capability_keys = {"alignment", "wear", "cpp"}
+    head = {"shaftline_version", "case"}
+    out = {key: value for key, value in old.items() if key in capability_keys | head}
+    if "variants" in old:
+        base = {k: v for k, v in old.items() if k not in capability_keys | head | {"variants", "units"}}
+        out["bearing"] = {"units": old["units"], "cases": [base, *old["variants"]]}
+    return out
+
+
+def compare(actual: Any, expected: Any, path: str = "", scale: float = 0.0) -> list[str]:
+    """Differences between two JSON values beyond the tolerance, as readable lines."""
+    if isinstance(expected, dict):
+        if not isinstance(actual, dict) or set(actual) != set(expected):
+            return [f"{path}: keys {sorted(actual) if isinstance(actual, dict) else actual} != {sorted(expected)}"]
+        return [
+            line for key in expected for line in compare(actual[key], expected[key], f"{path}.{key}" if path else key)
+        ]
+    if isinstance(expected, list):
+        if not isinstance(actual, list) or len(actual) != len(expected):
+            return [f"{path}: length {len(actual) if isinstance(actual, list) else actual} != {len(expected)}"]
+        numbers = [abs(v) for v in expected if isinstance(v, (int, float)) and not isinstance(v, bool)]
+        scale = max(numbers, default=0.0)
+        return [
+            line
+            for k, (a, e) in enumerate(zip(actual, expected, strict=True))
+            for line in compare(a, e, f"{path}[{k}]", scale)
+        ]
+    if isinstance(expected, bool) or expected is None or isinstance(expected, str):
+        return [] if actual == expected else [f"{path}: {actual!r} != {expected!r}"]
+    close = math.isclose(actual, expected, rel_tol=RTOL, abs_tol=ATOL_SHARE * scale)
+    return [] if close else [f"{path}: {actual!r} != {expected!r}"]
+
+
+def test_compare_sees_a_change():
+    """The comparison itself: a relative change of 1e-6 in one number of a list is caught."""
+    reference = {"a": [1.0, 2.0, {"b": 3.0}]}
+    assert compare({"a": [1.0, 2.0, {"b": 3.0}]}, reference) == []
+    assert compare({"a": [1.0, 2.000002, {"b": 3.0}]}, reference) == ["a[1]: 2.000002 != 2.0"]
+    assert compare({"a": [1.0, 2.0, {"b": 3.0, "c": 1}]}, reference) != []
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "ntua_stern_tube",
+        "single_screw_alignment",
+        "ferry_wear",
+        pytest.param("cpp_blade_bearing", marks=pytest.mark.slow),
+    ],
+)
+def test_run_matches_baseline(name):
+    result = run_case(load_case(EXAMPLES / f"{name}.toml"))
+    expected = new_layout(baseline(name))
+    actual = json.loads(dumps(results_document(result)))
+    actual["shaftline_version"] = expected["shaftline_version"]
+    assert compare(actual, expected) == []
+
+
+@pytest.mark.parametrize(
+    "name, args",
+    [
+        ("ferry_wear_pitchlog", ["wear", "pitchlog", "ferry_pitch_log.csv", "--case", "ferry_wear.toml"]),
+        ("cpp_blade_bearing_fretting", ["cpp", "fretting", "cpp_blade_bearing.toml"]),
+        ("wear_test_6_weibull", ["wear", "weibull", "wear_test_6_depths.csv", "--threshold", "0.12"]),
+    ],
+)
+def test_verbs_match_baseline(name, args, monkeypatch):
+    monkeypatch.chdir(EXAMPLES)
+    outcome = CliRunner().invoke(app, [*args, "--json", "-"])
+    assert outcome.exit_code == 0, outcome.output
+    expected = new_layout(baseline(name))
+    actual = json.loads(outcome.stdout)
+    if "shaftline_version" in expected:
+        actual["shaftline_version"] = expected["shaftline_version"]
+    assert compare(actual, expected) == []
