@@ -50,6 +50,6 @@ circumferential_nodes = 72
 
 def invoke(*args: str) -> Result:
     """Run the command line in this process (standard output and error kept apart)."""
-    from shaftline.cli import app
+    from shaftline.cli import make_app
 
-    return CliRunner().invoke(app, list(args))
+    return CliRunner().invoke(make_app(), list(args))

@@ -20,14 +20,6 @@ from shaftline import registry
 from shaftline.commandline import CaseArgument, JsonOption, OutOption, console, input_errors, run_cases
 from shaftline.registry import Capability, Verb
 
-app = typer.Typer(
-    add_completion=False,
-    no_args_is_help=True,
-    help="Tribology of a ship's propulsion shaft line.",
-    pretty_exceptions_enable=False,
-    rich_markup_mode=None,
-)
-
 
 def _version(value: bool) -> None:
     if value:
@@ -35,7 +27,6 @@ def _version(value: bool) -> None:
         raise typer.Exit()
 
 
-@app.callback()
 def main_callback(
     version: Annotated[
         bool, typer.Option("--version", callback=_version, is_eager=True, help="Print the version and exit.")
@@ -44,7 +35,6 @@ def main_callback(
     """shaftline: stern-tube bearings, shaft alignment, CPP blade bearings and more."""
 
 
-@app.command("run")
 def run(
     case_file: CaseArgument,
     out: Annotated[Path | None, typer.Option("--out", help="Output folder (default results/<case file name>).")] = None,
@@ -54,7 +44,6 @@ def run(
     run_cases(case_file, json_path, out or Path("results") / case_file.stem)
 
 
-@app.command("schema")
 def schema(
     format: Annotated[
         Literal["json", "markdown"], typer.Option("--format", help="JSON Schema, or the Markdown tables of the README.")
@@ -112,30 +101,40 @@ def _compare(
     emit_json(comparison.document, json_path)
 
 
-def _group(path: tuple[str, ...], groups: dict[str, typer.Typer], title: str) -> typer.Typer:
-    if len(path) == 1:
-        return app
-    if path[0] not in groups:
-        groups[path[0]] = typer.Typer(no_args_is_help=True, help=title, rich_markup_mode=None)
-        app.add_typer(groups[path[0]], name=path[0])
-    return groups[path[0]]
-
-
-def _add_verbs() -> None:
+def make_app() -> typer.Typer:
+    """The command line of the capabilities registered now: ``run``, ``schema`` and each
+    capability's verbs (built afresh, so a capability registered later has its verbs)."""
+    app = typer.Typer(
+        add_completion=False,
+        no_args_is_help=True,
+        help="Tribology of a ship's propulsion shaft line.",
+        pretty_exceptions_enable=False,
+        rich_markup_mode=None,
+    )
+    app.callback()(main_callback)
+    app.command("run")(run)
+    app.command("schema")(schema)
     groups: dict[str, typer.Typer] = {}
+
+    def group(path: tuple[str, ...], title: str) -> typer.Typer:
+        if len(path) == 1:
+            return app
+        if path[0] not in groups:
+            groups[path[0]] = typer.Typer(no_args_is_help=True, help=title, rich_markup_mode=None)
+            app.add_typer(groups[path[0]], name=path[0])
+        return groups[path[0]]
+
     for capability in registry.capabilities().values():
         for verb in capability.verbs:
-            _group(verb.path, groups, capability.title).command(verb.path[-1])(_case_verb(capability, verb))
+            group(verb.path, capability.title).command(verb.path[-1])(_case_verb(capability, verb))
         for command in capability.commands():
-            _group(command.path, groups, capability.title).command(command.path[-1])(command.function)
-
-
-_add_verbs()
+            group(command.path, capability.title).command(command.path[-1])(command.function)
+    return app
 
 
 def main() -> None:
     """Console entry point."""
-    app()
+    make_app()()
 
 
 if __name__ == "__main__":

@@ -110,8 +110,8 @@ ResultT = TypeVar("ResultT")
 class Capability(Generic[SectionT, StudyT, ResultT]):
     """One analysis: its case-file table, problem, solution and presentation.
 
-    Subclasses set the class attributes and implement :meth:`build`, :meth:`solve`,
-    :meth:`to_json`, :meth:`summary` and :meth:`report`; the rest is optional.
+    Subclasses set the class attributes and implement :meth:`schema`, :meth:`build`,
+    :meth:`solve`, :meth:`to_json`, :meth:`summary` and :meth:`report`; the rest is optional.
 
     Attributes
     ----------
@@ -119,8 +119,6 @@ class Capability(Generic[SectionT, StudyT, ResultT]):
         Name of the case-file table (``[bearing]``) and of the result in ``results.json``.
     title : str
         Heading of the report section.
-    section : type of Section
-        The pydantic schema of the case-file table.
     verbs : tuple of Verb
         Command-line verbs that run this capability alone.
     moved_tables : mapping
@@ -130,9 +128,13 @@ class Capability(Generic[SectionT, StudyT, ResultT]):
 
     key: ClassVar[str]
     title: ClassVar[str]
-    section: ClassVar[type[Section]]
     verbs: ClassVar[tuple[Verb, ...]] = ()
     moved_tables: ClassVar[Mapping[str, str]] = {}
+
+    def schema(self) -> type[SectionT]:
+        """The pydantic model of the case-file table (imported when first asked for, so
+        that listing the verbs stays cheap)."""
+        raise NotImplementedError
 
     def build(self, section: SectionT, context: BuildContext) -> StudyT:
         """Turn the validated case-file table into SI domain objects (raises ``InputError``)."""

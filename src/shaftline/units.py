@@ -79,6 +79,7 @@ def registry() -> pint.UnitRegistry:
     """
     import pint
 
+    ureg: pint.UnitRegistry
     try:
         ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
     except OSError:
@@ -137,7 +138,7 @@ def _parse_with_unit(text: str, kind: str, field: str) -> float:
 
     ureg = registry()
     try:
-        parsed = ureg.Quantity(text)
+        parsed: Any = ureg.Quantity(text)
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError) as exc:
         raise InputError(field, text, "", f"a number with a known unit ({exc})") from None
     except Exception:  # pint raises a variety of parser errors for garbage text

@@ -20,11 +20,10 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from typer.testing import CliRunner
 
 from shaftline.cases import load_case
-from shaftline.cli import app
 from shaftline.pipeline import dumps, results_document, run_case
+from tests.conftest import invoke
 
 HERE = Path(__file__).parent
 EXAMPLES = HERE.parents[1] / "examples"
@@ -109,7 +108,7 @@ def test_run_matches_baseline(name):
 )
 def test_verbs_match_baseline(name, args, monkeypatch):
     monkeypatch.chdir(EXAMPLES)
-    outcome = CliRunner().invoke(app, [*args, "--json", "-"])
+    outcome = invoke(*args, "--json", "-")
     assert outcome.exit_code == 0, outcome.output
     expected = new_layout(baseline(name))
     actual = json.loads(outcome.stdout)

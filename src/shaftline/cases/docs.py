@@ -91,7 +91,7 @@ def _tables(model: type[BaseModel], path: str, array: bool, out: list[str]) -> N
             children.append((child, f"{path}.{name}" if path else name, child_array))
             continue
         description = " ".join((info.description or "").split())
-        annotation = info.annotation
+        annotation: Any = info.annotation
         if info.metadata:  # pydantic keeps Annotated metadata of a plain field apart from its type
             annotation = Annotated[(annotation, *info.metadata)]
         rows.append(f"| `{name}` | {_type_text(annotation)} | {_default(info)} | {description} |")

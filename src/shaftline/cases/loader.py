@@ -30,7 +30,7 @@ from shaftline.registry import BuildContext
 def _case_model(version: int) -> type[BaseModel]:
     fields: dict[str, Any] = {"case": (CaseInfo, CaseInfo())}
     for key, capability in registry.capabilities().items():
-        fields[key] = (capability.section | None, None)
+        fields[key] = (capability.schema() | None, None)
     model: type[BaseModel] = create_model("CaseFile", __base__=Section, __doc__="A shaftline case file.", **fields)
     return model
 
@@ -93,6 +93,21 @@ def _inner_model(annotation: Any) -> Any:
     return None
 
 
+#: What pydantic's type errors ask for, in the words of the one-line message.
+_EXPECTED = {
+    "float_parsing": "a number",
+    "float_type": "a number",
+    "int_parsing": "a whole number",
+    "int_type": "a whole number",
+    "int_from_float": "a whole number",
+    "bool_parsing": "true or false",
+    "bool_type": "true or false",
+    "string_type": "text in quotes",
+    "list_type": "a list [...]",
+    "too_short": "at least {min_length} entries",
+    "too_long": "at most {max_length} entries",
+}
+
 _ALLOWED = {
     "greater_than": ("> {gt}", "gt"),
     "greater_than_equal": (">= {ge}", "ge"),
@@ -124,6 +139,9 @@ def _input_error(error: Mapping[str, Any]) -> InputError:
             if close:
                 allowed = f"no such field; did you mean {close[0]!r}?"
         return InputError(field, value if not isinstance(value, (dict, list)) else "{...}", "", allowed)
+    if kind in _EXPECTED:
+        shown = "{...}" if isinstance(value, dict) else "[...]" if isinstance(value, list) else value
+        return InputError(field, shown, "", _EXPECTED[kind].format(**context))
     if kind == "literal_error":
         return InputError(field, value, "", f"one of {context['expected']}")
     if kind in _ALLOWED:

@@ -7,18 +7,17 @@ import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
-from shaftline.cpp.case import CppSection, build_study
 from shaftline.registry import BuildContext, Capability, Comparison, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Heading, Table
 
 if TYPE_CHECKING:
+    from shaftline.cpp.case import CppSection
     from shaftline.cpp.study import BladeBearingResult, BladeBearingStudy
 
 
-class BladeBearings(Capability[CppSection, "BladeBearingStudy", "BladeBearingResult"]):
+class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingResult"]):
     key = "cpp"
     title = "CPP blade bearing: friction and fretting"
-    section = CppSection
     verbs = (
         Verb(
             ("cpp", "fretting"),
@@ -33,8 +32,15 @@ class BladeBearings(Capability[CppSection, "BladeBearingStudy", "BladeBearingRes
         ),
     )
 
+    def schema(self) -> type[CppSection]:
+        from shaftline.cpp.case import CppSection
+
+        return CppSection
+
     def build(self, section: CppSection, context: BuildContext) -> BladeBearingStudy:
-        return build_study(section, context)  # type: ignore[no-any-return]
+        from shaftline.cpp.case import build_study
+
+        return build_study(section, context)
 
     def solve(
         self, study: BladeBearingStudy, progress: Progress = no_progress, motion: bool = True, **options: Any

@@ -15,7 +15,7 @@ Layout::
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
@@ -43,6 +43,9 @@ from shaftline.cpp.loads import BladeBearing
 from shaftline.cpp.motion import CarrierModel
 from shaftline.errors import InputError, located
 from shaftline.registry import BuildContext
+
+if TYPE_CHECKING:
+    from shaftline.cpp.study import BladeBearingStudy
 
 Component = Literal["force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
 StudyParameter = Literal["holding_moment", "spindle_scale", "backlash", "friction", "oil_stiffness", "water_inertia"]
@@ -223,7 +226,7 @@ def read_load_table(path: Any) -> tuple[Any, Any, Any]:
     return angle, table[:, 1:4], table[:, 4:7]
 
 
-def build_study(section: CppSection, context: BuildContext) -> Any:
+def build_study(section: CppSection, context: BuildContext) -> BladeBearingStudy:
     """The blade-bearing study in SI domain objects."""
     import numpy as np
 

@@ -10,11 +10,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from shaftline.film.case import BearingSection, build_study
 from shaftline.registry import BuildContext, Capability, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
+    from shaftline.film.case import BearingSection
     from shaftline.film.study import BearingStudy, BearingStudyResult
 
 #: (label, JSON key, scale, digits) of the rows of the results table.
@@ -37,10 +37,9 @@ TABLE_ROWS = [
 ]
 
 
-class BearingFilm(Capability[BearingSection, "BearingStudy", "BearingStudyResult"]):
+class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResult"]):
     key = "bearing"
     title = "Stern-tube bearing film"
-    section = BearingSection
     verbs = (Verb(("bearing", "solve"), "Solve the bearing film at equilibrium under the case load."),)
     moved_tables = {
         "operation": "bearing.operation",
@@ -49,8 +48,15 @@ class BearingFilm(Capability[BearingSection, "BearingStudy", "BearingStudyResult
         "variants": "bearing.variants",
     }
 
+    def schema(self) -> type[BearingSection]:
+        from shaftline.film.case import BearingSection
+
+        return BearingSection
+
     def build(self, section: BearingSection, context: BuildContext) -> BearingStudy:
-        return build_study(section, context)  # type: ignore[no-any-return]
+        from shaftline.film.case import build_study
+
+        return build_study(section, context)
 
     def solve(self, study: BearingStudy, progress: Progress = no_progress, **options: Any) -> BearingStudyResult:
         from shaftline.film.study import solve_study

@@ -15,7 +15,7 @@ Layout::
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import numpy as np
 from pydantic import BeforeValidator, Field, model_validator
@@ -41,6 +41,9 @@ from shaftline.errors import InputError, located
 from shaftline.film.bearing import OperatingPoint, SolverOptions, SupplyGroove
 from shaftline.film.geometry import BearingGeometry, BentJournal, BoreSegment, FilmProfile
 from shaftline.registry import BuildContext
+
+if TYPE_CHECKING:
+    from shaftline.film.study import BearingStudy
 
 ROTATION_ALIASES = {
     "clockwise_from_aft": "clockwise",
@@ -328,7 +331,7 @@ def _tilt(angle: float | None, ratio: float | None, length: float, clearance: fl
     return 0.0 if angle is None else angle
 
 
-def build_study(section: BearingSection, context: BuildContext) -> Any:
+def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
     """The base case and its variants in SI domain objects (raises :class:`InputError` with
     the field's path inside ``[bearing]``)."""
     from shaftline.film.study import BearingCase, BearingStudy
@@ -416,16 +419,22 @@ def build_study(section: BearingSection, context: BuildContext) -> Any:
     _check_problem(base_geometry, operating, options)
     tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)
     tilt_z = _tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, length, clearance)
-    common = {
-        "operating": operating,
-        "options": options,
-        "load_y": -op.load,
-        "load_z": op.load_horizontal,
-        "tilt_z": tilt_z,
-        "lubricant": lubricant,
-        "temperature": lube.temperature,
-    }
-    cases = [BearingCase(name=context.case.name, geometry=base_geometry, tilt_y=tilt_y, **common)]
+
+    def case(name: str, geometry: BearingGeometry, tilt: float) -> BearingCase:
+        return BearingCase(
+            name=name,
+            geometry=geometry,
+            operating=operating,
+            options=options,
+            load_y=-op.load,
+            load_z=op.load_horizontal,
+            tilt_y=tilt,
+            tilt_z=tilt_z,
+            lubricant=lubricant,
+            temperature=lube.temperature,
+        )
+
+    cases = [case(context.case.name, base_geometry, tilt_y)]
     for k, variant in enumerate(section.variants):
         if variant.name == context.case.name:
             raise InputError(f"variants[{k}].name", variant.name, "", "a name other than the case's ([case] name)")
@@ -435,7 +444,7 @@ def build_study(section: BearingSection, context: BuildContext) -> Any:
         variant_tilt = tilt_y
         if variant.misalignment_ratio_vertical is not None or variant.tilt_vertical is not None:
             variant_tilt = _tilt(variant.tilt_vertical, variant.misalignment_ratio_vertical, length, clearance)
-        cases.append(BearingCase(name=variant.name, geometry=variant_geometry, tilt_y=variant_tilt, **common))
+        cases.append(case(variant.name, variant_geometry, variant_tilt))
     return BearingStudy(tuple(cases))
 
 

@@ -7,9 +7,9 @@ from typing import TYPE_CHECKING, Any
 
 from shaftline.registry import BuildContext, Capability, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
-from shaftline.shaft.case import AlignmentSection, build_study
 
 if TYPE_CHECKING:
+    from shaftline.shaft.case import AlignmentSection
     from shaftline.shaft.rules import RuleCheck
     from shaftline.shaft.study import AlignmentResult, AlignmentStudy
 
@@ -58,10 +58,9 @@ def rule_check_rows(checks: list[RuleCheck]) -> list[list[str]]:
     return rows
 
 
-class ShaftAlignment(Capability[AlignmentSection, "AlignmentStudy", "AlignmentResult"]):
+class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "AlignmentResult"]):
     key = "alignment"
     title = "Shaft alignment"
-    section = AlignmentSection
     verbs = (Verb(("align",), "Shaft alignment: elastic line, reactions, slopes, influence matrix and rule checks."),)
     moved_tables = {
         "shaft": "alignment.shaft",
@@ -73,8 +72,15 @@ class ShaftAlignment(Capability[AlignmentSection, "AlignmentStudy", "AlignmentRe
         "distributed_loads": "alignment.distributed_loads",
     }
 
+    def schema(self) -> type[AlignmentSection]:
+        from shaftline.shaft.case import AlignmentSection
+
+        return AlignmentSection
+
     def build(self, section: AlignmentSection, context: BuildContext) -> AlignmentStudy:
-        return build_study(section, context)  # type: ignore[no-any-return]
+        from shaftline.shaft.case import build_study
+
+        return build_study(section, context)
 
     def solve(self, study: AlignmentStudy, progress: Progress = no_progress, **options: Any) -> AlignmentResult:
         from shaftline.shaft.study import solve_alignment

@@ -17,7 +17,7 @@ Layout (x runs from the aft end of the shaft model forward; offsets + up)::
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
@@ -43,6 +43,9 @@ from shaftline.cases.types import (
 )
 from shaftline.errors import located
 from shaftline.registry import BuildContext
+
+if TYPE_CHECKING:
+    from shaftline.shaft.study import AlignmentStudy
 from shaftline.shaft.model import (
     Bearing,
     Condition,
@@ -354,13 +357,13 @@ class AlignmentSection(Section):
             for name in [*self.measured_reactions.values, *(self.measured_reactions.reference or [])]:
                 if name not in bearings:
                     raise field_error("measured_reactions.values", name, known)
-        for where, name in (
+        for where, asked in (
             ("sag_gap.condition", self.sag_gap.condition if self.sag_gap else None),
             ("jack_up.condition", self.jack_up.condition if self.jack_up else None),
             ("measured_reactions.condition", self.measured_reactions.condition if self.measured_reactions else None),
         ):
-            if name is not None and name not in (conditions or ["base"]):
-                raise field_error(where, name, "the name of a condition: " + ", ".join(conditions or ["base"]))
+            if asked is not None and asked not in (conditions or ["base"]):
+                raise field_error(where, asked, "the name of a condition: " + ", ".join(conditions or ["base"]))
         return self
 
 
@@ -470,10 +473,10 @@ def build_line(section: AlignmentSection) -> ShaftLine:
 
 def _condition(line: ShaftLine, name: str | None) -> Condition:
     conditions = line.all_conditions()
-    return conditions[0] if name is None else next(c for c in conditions if c.name == name)
+    return conditions[0] if name is None else next(c for c in conditions if c.name == name)  # names checked
 
 
-def build_study(section: AlignmentSection, context: BuildContext) -> Any:
+def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentStudy:
     """The alignment study in SI domain objects."""
     from shaftline.shaft.rules import Rule, load_rules
     from shaftline.shaft.study import (

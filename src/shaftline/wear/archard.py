@@ -22,25 +22,25 @@ MM3_PER_NM = 1e-9  # m^3/(N m) in one mm^3/(N m)
 
 def wear_depth(rate: float, pressure: float, distance: float | np.ndarray) -> float | np.ndarray:
     """Archard wear depth h = w sigma S, m (rate in m^3/(N m), pressure Pa, distance m)."""
-    require_positive("wear.rate", rate, "m^3/(N m)")
-    require_positive("wear.pressure", pressure, "Pa")
+    require_positive("rate", rate, "m^3/(N m)")
+    require_positive("pressure", pressure, "Pa")
     return rate * pressure * np.asarray(distance, dtype=float)
 
 
 def allowable_rate(depth_limit: float, pressure: float, distance: float) -> float:
     """Largest specific wear rate that keeps the depth within ``depth_limit`` (seed Eq. 6.5), m^3/(N m)."""
-    require_positive("wear.allowable_depth", depth_limit, "m")
-    require_positive("wear.pressure", pressure, "Pa")
-    require_positive("wear.distance", distance, "m")
+    require_positive("depth_limit", depth_limit, "m")
+    require_positive("pressure", pressure, "Pa")
+    require_positive("distance", distance, "m")
     return depth_limit / (pressure * distance)
 
 
 def wear_class(rate: float) -> int:
     """Wear class of a specific wear rate (van Beek 2004, seed 000 Table 5.5): class k for
     1e-(10-k) <= w < 1e-(9-k) mm^3/(N m); classes 0-7."""
-    value = require_finite("wear.rate", rate, "m^3/(N m)") / MM3_PER_NM
+    value = require_finite("rate", rate, "m^3/(N m)") / MM3_PER_NM
     if not 1e-10 <= value < 1e-2:
-        raise InputError("wear.rate", rate, "m^3/(N m)", "within the classified range 1e-19 to 1e-11 (0 to 7)")
+        raise InputError("rate", rate, "m^3/(N m)", "within the classified range 1e-19 to 1e-11 (0 to 7)")
     return int(math.floor(math.log10(value))) + 10
 
 
@@ -72,7 +72,7 @@ def material_pairs(extra: list[dict] | None = None) -> list[MaterialPair]:
     entries = tomllib.loads(text)["pair"] + list(extra or [])
     pairs = []
     for k, entry in enumerate(entries):
-        rate = require_positive(f"wear.pairs[{k}].rate", entry.get("rate", float("nan")), "mm^3/(N m)")
+        rate = require_positive(f"pairs[{k}].rate", entry.get("rate", float("nan")), "mm^3/(N m)")
         pairs.append(
             MaterialPair(
                 str(entry.get("name", "")),

@@ -12,9 +12,9 @@ import typer
 
 from shaftline.registry import BuildContext, Capability, Command, Progress, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
-from shaftline.wear.case import WearSection, build_study
 
 if TYPE_CHECKING:
+    from shaftline.wear.case import WearSection
     from shaftline.wear.reliability import WeibullFit
     from shaftline.wear.study import WearResult, WearStudy
 
@@ -41,13 +41,19 @@ def weibull_text(fit: WeibullFit, scale: float = 1.0, unit: str = "") -> str:
     )
 
 
-class ServiceWear(Capability[WearSection, "WearStudy", "WearResult"]):
+class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
     key = "wear"
     title = "Blade-bearing wear in service"
-    section = WearSection
+
+    def schema(self) -> type[WearSection]:
+        from shaftline.wear.case import WearSection
+
+        return WearSection
 
     def build(self, section: WearSection, context: BuildContext) -> WearStudy:
-        return build_study(section, context)  # type: ignore[no-any-return]
+        from shaftline.wear.case import build_study
+
+        return build_study(section, context)
 
     def solve(self, study: WearStudy, progress: Progress = no_progress, **options: Any) -> WearResult:
         from shaftline.wear.study import solve_wear

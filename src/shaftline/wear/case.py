@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated
 
 from pydantic import Field, model_validator
 
@@ -21,6 +21,9 @@ from shaftline.cases.types import (
 )
 from shaftline.errors import InputError, located
 from shaftline.registry import BuildContext
+
+if TYPE_CHECKING:
+    from shaftline.wear.study import WearStudy
 
 
 class ServiceSection(Section):
@@ -122,7 +125,7 @@ class WearSection(Section):
         return self
 
 
-def build_study(section: WearSection, context: BuildContext) -> Any:
+def build_study(section: WearSection, context: BuildContext) -> WearStudy:
     """The wear study in SI domain objects."""
     from shaftline.wear.archard import material_pairs
     from shaftline.wear.service import ServiceProfile, read_pitch_log

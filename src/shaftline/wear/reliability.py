@@ -19,7 +19,7 @@ from scipy import stats
 from shaftline.errors import InputError
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class WeibullFit:
     """Maximum-likelihood Weibull fit.
 
@@ -52,7 +52,7 @@ class WeibullFit:
         spread = self._z * np.sqrt(self.covariance[index, index])
         return float(value * np.exp(-spread)), float(value * np.exp(spread))
 
-    def cdf(self, x: np.ndarray) -> np.ndarray:
+    def cdf(self, x: float | np.ndarray) -> np.ndarray:
         return 1.0 - np.exp(-((np.asarray(x, dtype=float) / self.scale) ** self.shape))
 
     def cdf_bounds(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -71,8 +71,8 @@ class WeibullFit:
         return float(1.0 - high), float(1.0 - self.cdf(x)), float(1.0 - low)
 
 
-def _log_likelihood(log_scale: float, log_shape: float, x: np.ndarray) -> float:
-    scale, shape = np.exp(log_scale), np.exp(log_shape)
+def _log_likelihood(log_parameters: np.ndarray, x: np.ndarray) -> float:
+    scale, shape = np.exp(log_parameters)
     z = x / scale
     return float(np.sum(np.log(shape / scale) + (shape - 1) * np.log(z) - z**shape))
 
@@ -81,15 +81,15 @@ def fit_weibull(samples: np.ndarray, confidence: float = 0.95) -> WeibullFit:
     """Fit a two-parameter Weibull distribution to positive samples (at least 3)."""
     x = np.asarray(samples, dtype=float)
     if x.ndim != 1 or x.size < 3:
-        raise InputError("weibull.samples", x.size, "samples", "at least 3 for a Weibull fit")
+        raise InputError("samples", x.size, "samples", "at least 3 for a Weibull fit")
     if not np.all(np.isfinite(x)):
-        raise InputError("weibull.samples", "NaN", "", "finite values")
+        raise InputError("samples", "NaN", "", "finite values")
     if np.any(x <= 0):
-        raise InputError("weibull.samples", float(x[x <= 0][0]), "", "positive values (wear depths or rates)")
+        raise InputError("samples", float(x[x <= 0][0]), "", "positive values (wear depths or rates)")
     if np.ptp(x) == 0:
-        raise InputError("weibull.samples", float(x[0]), "", "samples that are not all equal")
+        raise InputError("samples", float(x[0]), "", "samples that are not all equal")
     if not 0.5 < confidence < 1.0:
-        raise InputError("weibull.confidence", confidence, "", "in (0.5, 1)")
+        raise InputError("confidence", confidence, "", "in (0.5, 1)")
     shape, _, scale = stats.weibull_min.fit(x, floc=0)
     theta = np.array([np.log(scale), np.log(shape)])
     step = 1e-4
@@ -98,10 +98,10 @@ def fit_weibull(samples: np.ndarray, confidence: float = 0.95) -> WeibullFit:
         for j in range(2):
             e_i, e_j = np.eye(2)[i] * step, np.eye(2)[j] * step
             hessian[i, j] = (
-                _log_likelihood(*(theta + e_i + e_j), x)
-                - _log_likelihood(*(theta + e_i - e_j), x)
-                - _log_likelihood(*(theta - e_i + e_j), x)
-                + _log_likelihood(*(theta - e_i - e_j), x)
+                _log_likelihood(theta + e_i + e_j, x)
+                - _log_likelihood(theta + e_i - e_j, x)
+                - _log_likelihood(theta - e_i + e_j, x)
+                + _log_likelihood(theta - e_i - e_j, x)
             ) / (4 * step**2)
     covariance = np.linalg.inv(-hessian)
     return WeibullFit(float(shape), float(scale), covariance, x, confidence)
@@ -115,7 +115,7 @@ def read_samples(path) -> np.ndarray:
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
     except OSError:
-        raise InputError("weibull.data", str(path), "", "an existing CSV file") from None
+        raise InputError("data file", str(path), "", "an existing CSV file") from None
     values = []
     for number, line in enumerate(lines, start=1):
         text = line.split(",")[0].strip()

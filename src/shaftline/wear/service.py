@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -26,7 +27,7 @@ from shaftline.csvio import read_columns
 from shaftline.errors import InputError, require_finite, require_positive
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class PitchLog:
     """Time (s) and pitch (% of design pitch)."""
 
@@ -71,10 +72,10 @@ def read_pitch_log(path: str | Path) -> PitchLog:
 
 def stepwise_constant(signal: np.ndarray, dead_band: float) -> np.ndarray:
     """Hold a level until the signal leaves ``level +- dead_band``, then jump to the signal."""
-    require_positive("wear.dead_band", dead_band, "%")
+    require_positive("dead_band", dead_band, "%")
     values = np.asarray(signal, dtype=float).tolist()
     # itertools.accumulate runs the recursion in C; the function is one comparison.
-    levels = itertools.accumulate(values, lambda level, x: x if abs(x - level) > dead_band else level)
+    levels: Iterator[float] = itertools.accumulate(values, lambda level, x: x if abs(x - level) > dead_band else level)
     return np.fromiter(levels, dtype=float, count=len(values))
 
 
@@ -85,8 +86,8 @@ def pitch_travel(signal: np.ndarray) -> float:
 
 def sliding_distance(travel: float, design_pitch_angle: float, radius: float) -> float:
     """Sliding distance at the bearing radius for a pitch travel in design pitches, m (Eq. 6.3)."""
-    require_positive("wear.design_pitch_angle", design_pitch_angle, "rad")
-    require_positive("wear.bearing_radius", radius, "m")
+    require_positive("design_pitch_angle", design_pitch_angle, "rad")
+    require_positive("radius", radius, "m")
     return travel * design_pitch_angle * radius
 
 
@@ -94,10 +95,10 @@ def superimpose_oscillation(
     log: PitchLog, signal: np.ndarray, amplitude: float, frequency: float, start: float, end: float
 ) -> np.ndarray:
     """Signal with a sine of ``amplitude`` % and ``frequency`` Hz added between ``start`` and ``end`` s."""
-    require_positive("wear.mimo.amplitude", amplitude, "%")
-    require_positive("wear.mimo.frequency", frequency, "Hz")
+    require_positive("amplitude", amplitude, "%")
+    require_positive("frequency", frequency, "Hz")
     if not log.time[0] <= start < end <= log.time[-1]:
-        raise InputError("wear.mimo.end", end, "s", f"start < end within the log [{log.time[0]}, {log.time[-1]}]")
+        raise InputError("end", end, "s", f"start < end within the log [{log.time[0]}, {log.time[-1]}]")
     window = (log.time >= start) & (log.time <= end)
     out = np.array(signal, dtype=float, copy=True)
     out[window] += amplitude * np.sin(2 * np.pi * frequency * (log.time[window] - start))
@@ -106,8 +107,8 @@ def superimpose_oscillation(
 
 def fretting_distance(amplitude: float, speed: float, duration: float) -> float:
     """Sliding from fretting, 2 d per shaft revolution (Eq. 6.8), m (speed in rad/s, duration s)."""
-    require_finite("wear.fretting.amplitude", amplitude, "m")
-    require_positive("wear.fretting.speed", speed, "rad/s")
+    require_finite("amplitude", amplitude, "m")
+    require_positive("speed", speed, "rad/s")
     return 2.0 * amplitude * speed / (2.0 * math.pi) * duration
 
 
@@ -120,10 +121,10 @@ class ServiceProfile:
     years: float
 
     def __post_init__(self) -> None:
-        require_positive("wear.service.voyages_per_day", self.voyages_per_day)
+        require_positive("voyages_per_day", self.voyages_per_day)
         if not 0 < self.days_per_year <= 366:
-            raise InputError("wear.service.days_per_year", self.days_per_year, "days", "in (0, 366]")
-        require_positive("wear.service.years", self.years, "years")
+            raise InputError("days_per_year", self.days_per_year, "days", "in (0, 366]")
+        require_positive("years", self.years, "years")
 
     def voyages(self, years: float | None = None) -> float:
         return self.voyages_per_day * self.days_per_year * (self.years if years is None else years)

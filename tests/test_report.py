@@ -1,0 +1,92 @@
+"""The report layer: user text is escaped, figures go into the axes they are given, and
+writing a report leaves the session's matplotlib state alone."""
+
+from __future__ import annotations
+
+import matplotlib
+import pytest
+from matplotlib.figure import Figure
+
+from shaftline.cases import parse_case
+from shaftline.pipeline import run_case, write_outputs
+from shaftline.report.blocks import Figure as FigureBlock
+from shaftline.report.blocks import Paragraph, Section, Table
+from shaftline.report.html import render
+
+CASE = {
+    "case": {"name": "<script>alert('case')</script>", "description": "a & b <i>"},
+    "bearing": {
+        "length": 0.1,
+        "diameter": 0.1,
+        "radial_clearance": 1e-4,
+        "operation": {"speed": 60.0, "load": 5e3},
+        "lubricant": {"viscosity": 0.02},
+        "solver": {"axial_nodes": 15, "circumferential_nodes": 48},
+        "variants": [{"name": "<img src=x onerror=alert(1)>", "misalignment_ratio_vertical": 0.2}],
+    },
+}
+
+
+@pytest.fixture(scope="module")
+def solved():
+    return run_case(parse_case(CASE))
+
+
+def test_user_text_is_escaped_everywhere(solved, tmp_path):
+    import matplotlib.pyplot as plt
+
+    backend = matplotlib.get_backend()
+    figures_before = plt.get_fignums()
+    write_outputs(solved, tmp_path / "out", "case <file>.toml")
+    html = (tmp_path / "out" / "report.html").read_text()
+    assert "<script>" not in html and "<img src=x" not in html and "<i>" not in html
+    assert "&lt;script&gt;" in html and "&lt;img src=x onerror=alert(1)&gt;" in html
+    assert "case &lt;file&gt;.toml" in html
+    # the report drew its figures without pyplot and without switching the backend
+    assert matplotlib.get_backend() == backend
+    assert plt.get_fignums() == figures_before
+
+
+def test_blocks_render_as_html():
+    section = Section("k", "T & c", [Paragraph("careful", "warn"), Table(["a", "b"], [["x", "1.5 m"]], "t")])
+    html = render("title", "", "case.toml", [section], "0")
+    assert '<p class="warn">careful</p>' in html
+    cells = html.replace('"', "'")
+    assert "<td class='text'>x</td>" in cells and "<td class='num'>1.5 m</td>" in cells
+    assert "T &amp; c" in html
+
+
+def test_figure_functions_draw_into_the_given_axes(solved):
+    from shaftline.film import figures
+
+    state = solved["bearing"].cases[0].equilibrium.state
+    figure = Figure()
+    ax = figure.subplots()
+    assert figures.axial_profiles(state, "base", ax=ax) is ax
+    assert ax.lines[0].get_ydata() == pytest.approx(state.film.min(axis=1) * 1e6)
+    assert ax.get_title().startswith("base")
+    pair = Figure().subplots(1, 2)
+    figures.film_and_pressure_maps(state, ax=pair)
+    assert all(axes.collections for axes in pair)
+
+
+def test_figure_function_without_axes_makes_its_own(solved):
+    import matplotlib.pyplot as plt
+
+    from shaftline.film import figures
+
+    state = solved["bearing"].cases[0].equilibrium.state
+    ax = figures.circumferential_profile(state)
+    try:
+        assert ax.figure.get_size_inches().tolist() == list(figures.circumferential_profile.size)
+    finally:
+        plt.close(ax.figure)
+
+
+def test_figure_block_is_drawn(tmp_path, solved):
+    from shaftline.film import figures
+    from shaftline.report.html import draw_figure
+
+    state = solved["bearing"].cases[0].equilibrium.state
+    path = draw_figure(FigureBlock("maps.png", figures.film_and_pressure_maps, (state, "x")), tmp_path / "maps.png")
+    assert path.stat().st_size > 10_000
