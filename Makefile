@@ -1,4 +1,4 @@
-# Two commands set up a fresh machine: `make demo` and `make test`.
+# Two commands set up a fresh machine: `make demo` and `make test` (ruff, mypy, tests with doctests).
 # Both create a local virtual environment (.venv) and install everything into it.
 PYTHON ?= python3
 VENV := .venv
@@ -19,10 +19,12 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/mypy
 	$(BIN)/python -m pytest -q
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/mypy
 
 # Benchmarks run in their own environment, which also holds ROSS for the comparison.
 bench:

@@ -158,10 +158,11 @@ def report_sections(result: CaseResult) -> list[Any]:
     ]
 
 
-def write_outputs(result: CaseResult, out: Path, case_file: str = "") -> Path:
+def write_outputs(result: CaseResult, out: str | Path, case_file: str = "") -> Path:
     """Write ``results.json``, the figures and ``report.html`` into ``out`` (atomically)."""
     from shaftline.report.html import write_report
 
+    out = Path(out)
     case = result.case
     with atomic_folder(out) as folder:
         (folder / "results.json").write_text(dumps(results_document(result)) + "\n", encoding="utf-8")

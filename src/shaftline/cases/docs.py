@@ -1,9 +1,9 @@
 """The case-file reference, generated from the schema: Markdown tables (the README's
 case-file section) and the JSON Schema (``shaftline schema``).
 
-The README holds the tables between the markers ``<!-- case-file tables -->`` and
-``<!-- end of case-file tables -->``; a test checks that they match :func:`markdown_tables`,
-and ``python -m shaftline.cases.docs README.md`` rewrites them.
+The README holds generated parts between markers (``<!-- case-file tables -->`` ...
+``<!-- end of case-file tables -->`` and the like, see :data:`GENERATED`); a test checks
+that they match, and ``python -m shaftline.cases.docs README.md`` rewrites them.
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import sys
 import types
+from collections.abc import Callable
 from pathlib import Path
 from typing import Annotated, Any, Literal, Union, get_args, get_origin
 
@@ -19,9 +20,6 @@ from pydantic_core import PydanticUndefined
 
 from shaftline.cases.loader import case_model
 from shaftline.cases.types import Quantity
-
-START = "<!-- case-file tables -->"
-END = "<!-- end of case-file tables -->"
 
 
 def _metadata(annotation: Any) -> list[Any]:
@@ -124,22 +122,41 @@ def json_schema_text() -> str:
     return json.dumps(json_schema(), indent=2)
 
 
-def readme_section(readme: str) -> str:
-    """The generated part of the README (between the markers)."""
-    start, end = readme.index(START) + len(START), readme.index(END)
-    return readme[start:end].strip() + "\n"
+def _bearing_json_fields() -> str:
+    from shaftline.film.summary import field_table
+
+    return field_table()
+
+
+#: Generated parts of the README: the name in their markers and what makes them.
+GENERATED: dict[str, Callable[[], str]] = {
+    "case-file tables": markdown_tables,
+    "bearing JSON fields": _bearing_json_fields,
+}
+
+
+def _markers(name: str) -> tuple[str, str]:
+    return f"<!-- {name} -->", f"<!-- end of {name} -->"
+
+
+def readme_part(readme: str, name: str) -> str:
+    """A generated part of the README (between its markers)."""
+    start, end = _markers(name)
+    return readme[readme.index(start) + len(start) : readme.index(end)].strip() + "\n"
 
 
 def update_readme(path: Path) -> bool:
-    """Rewrite the generated tables of the README at ``path``; True if they changed."""
-    text = path.read_text(encoding="utf-8")
-    start, end = text.index(START) + len(START), text.index(END)
-    new = text[:start] + "\n\n" + markdown_tables() + "\n" + text[end:]
-    if new != text:
-        path.write_text(new, encoding="utf-8")
-    return new != text
+    """Rewrite the generated parts of the README at ``path``; True if any changed."""
+    text = original = path.read_text(encoding="utf-8")
+    for name, make in GENERATED.items():
+        start, end = _markers(name)
+        head, tail = text.index(start) + len(start), text.index(end)
+        text = text[:head] + "\n\n" + make() + "\n" + text[tail:]
+    if text != original:
+        path.write_text(text, encoding="utf-8")
+    return text != original
 
 
 if __name__ == "__main__":  # python -m shaftline.cases.docs README.md
     changed = update_readme(Path(sys.argv[1] if len(sys.argv) > 1 else "README.md"))
-    print("README tables updated" if changed else "README tables up to date")
+    print("README updated" if changed else "README up to date")

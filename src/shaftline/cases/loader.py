@@ -17,7 +17,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from pydantic import BaseModel, ValidationError, create_model
+from pydantic import BaseModel, Field, ValidationError, create_model
 
 from shaftline import registry
 from shaftline.cases.types import CaseInfo, Section
@@ -28,9 +28,9 @@ from shaftline.registry import BuildContext
 
 @lru_cache(maxsize=4)
 def _case_model(version: int) -> type[BaseModel]:
-    fields: dict[str, Any] = {"case": (CaseInfo, CaseInfo())}
+    fields: dict[str, Any] = {"case": (CaseInfo, Field(CaseInfo(), description="Name and description of the case."))}
     for key, capability in registry.capabilities().items():
-        fields[key] = (capability.schema() | None, None)
+        fields[key] = (capability.schema() | None, Field(None, description=capability.title))
     model: type[BaseModel] = create_model("CaseFile", __base__=Section, __doc__="A shaftline case file.", **fields)
     return model
 

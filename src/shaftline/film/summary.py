@@ -112,12 +112,24 @@ def equilibrium_summary(equilibrium: Equilibrium, coefficients: DynamicCoefficie
     return {k: _clean(v) for k, v in out.items()}
 
 
-EXTRA_UNITS = {
-    "load_y": "N",
-    "load_z": "N",
-    "converged": "-",
-    "iterations": "-",
-    "force_residual": "N",
-    "stiffness": "N/m, [[Kyy, Kyz], [Kzy, Kzz]]",
-    "damping": "N s/m, [[Cyy, Cyz], [Czy, Czz]]",
-}
+#: (key, unit, description) of the equilibrium's own fields in JSON.
+EXTRA_FIELDS: list[tuple[str, str, str]] = [
+    ("load_y", "N", "applied vertical load on the journal (− downward)"),
+    ("load_z", "N", "applied horizontal load (+ starboard)"),
+    ("converged", "-", "equilibrium reached within the tolerance"),
+    ("iterations", "-", "Newton iterations"),
+    ("force_residual", "N", "magnitude of film force + load at the end"),
+    ("stiffness", "N/m, [[Kyy, Kyz], [Kzy, Kzz]]", "film stiffness matrix in (y, z)"),
+    ("damping", "N s/m, [[Cyy, Cyz], [Czy, Czz]]", "film damping matrix in (y, z)"),
+]
+EXTRA_UNITS = {key: unit for key, unit, _ in EXTRA_FIELDS}
+
+
+def field_table() -> str:
+    """The Markdown table of every JSON field of a bearing case (the README's)."""
+    rows = [(key, unit, text) for key, unit, text, _ in FIELDS] + EXTRA_FIELDS
+    return (
+        "| key | unit | meaning |\n|---|---|---|\n"
+        + "\n".join(f"| `{key}` | {unit} | {text} |" for key, unit, text in rows)
+        + "\n"
+    )
