@@ -14,10 +14,17 @@ from typing import Any
 class InputError(ValueError):
     """A value given by the user is outside what the model accepts.
 
+    Domain code names the field relative to the object or function that checks
+    it, because it cannot know where a value came from: the dataclass attribute
+    path (``"radial_clearance"``, ``"bore[1].slope"``, ``"grooves[0].angle"``) or
+    the parameter (``"load_y"``). A reader of case files puts its own path in
+    front with :meth:`within` (``"bearing.radial_clearance"``).
+
     Parameters
     ----------
     field : str
-        Dotted name of the input field, e.g. ``"bearing.radial_clearance"``.
+        Name of the input field, e.g. ``"radial_clearance"`` in the domain or
+        ``"bearing.radial_clearance"`` once a case reader has placed it.
     value : Any
         The value that was given.
     unit : str
@@ -38,6 +45,16 @@ class InputError(ValueError):
         if allowed:
             message += f": allowed {allowed}"
         super().__init__(message)
+
+    def within(self, prefix: str) -> InputError:
+        """The same error with its field placed under ``prefix``.
+
+        ``InputError("radial_clearance", ...).within("bearing")`` names
+        ``"bearing.radial_clearance"``; an indexed field joins without a dot
+        (``"[1].slope"`` under ``"bearing.bore"`` is ``"bearing.bore[1].slope"``).
+        """
+        separator = "" if self.field.startswith("[") else "."
+        return InputError(f"{prefix}{separator}{self.field}", self.value, self.unit, self.allowed)
 
 
 def require_finite(field: str, value: float, unit: str = "") -> float:

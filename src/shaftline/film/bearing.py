@@ -77,24 +77,24 @@ class OperatingPoint:
     grooves: tuple[SupplyGroove, ...] = ()
 
     def __post_init__(self) -> None:
-        require_positive("operation.speed", self.speed, "rad/s")
-        require_positive("lubricant.viscosity", self.viscosity, "Pa*s")
-        require_positive("lubricant.density", self.density, "kg/m^3")
+        require_positive("speed", self.speed, "rad/s")
+        require_positive("viscosity", self.viscosity, "Pa*s")
+        require_positive("density", self.density, "kg/m^3")
         for name in ("aft_pressure", "fore_pressure", "cavitation_pressure"):
-            require_finite(f"operation.{name}", getattr(self, name), "Pa")
+            require_finite(name, getattr(self, name), "Pa")
         lowest = min(self.aft_pressure, self.fore_pressure, *(g.pressure for g in self.grooves))
         if self.cavitation_pressure > lowest:
             raise InputError(
-                "operation.cavitation_pressure",
+                "cavitation_pressure",
                 self.cavitation_pressure,
                 "Pa",
                 f"<= the lowest supply pressure {lowest}",
             )
         for k, groove in enumerate(self.grooves):
-            require_finite(f"operation.grooves[{k}].angle", groove.angle, "rad")
-            require_finite(f"operation.grooves[{k}].pressure", groove.pressure, "Pa")
+            require_finite(f"grooves[{k}].angle", groove.angle, "rad")
+            require_finite(f"grooves[{k}].pressure", groove.pressure, "Pa")
             if not 0.0 < groove.length_fraction <= 1.0:
-                raise InputError(f"operation.grooves[{k}].length_fraction", groove.length_fraction, "", "in (0, 1]")
+                raise InputError(f"grooves[{k}].length_fraction", groove.length_fraction, "", "in (0, 1]")
 
 
 @dataclass(frozen=True)
@@ -137,15 +137,15 @@ class SolverOptions:
 
     def __post_init__(self) -> None:
         if self.cavitation not in CAVITATION_MODELS:
-            raise InputError("solver.cavitation", self.cavitation, "", "one of " + ", ".join(CAVITATION_MODELS))
+            raise InputError("cavitation", self.cavitation, "", "one of " + ", ".join(CAVITATION_MODELS))
         if self.film_start not in FILM_STARTS:
-            raise InputError("solver.film_start", self.film_start, "", "one of " + ", ".join(FILM_STARTS))
+            raise InputError("film_start", self.film_start, "", "one of " + ", ".join(FILM_STARTS))
         if self.cavitated_shear not in ("film_fraction", "full_film"):
-            raise InputError("solver.cavitated_shear", self.cavitated_shear, "", "film_fraction or full_film")
+            raise InputError("cavitated_shear", self.cavitated_shear, "", "film_fraction or full_film")
         if not 0.0 < self.min_film_floor < 0.5:
-            raise InputError("solver.min_film_floor", self.min_film_floor, "", "in (0, 0.5) of the clearance")
+            raise InputError("min_film_floor", self.min_film_floor, "", "in (0, 0.5) of the clearance")
         if not 0.0 < self.tolerance < 1e-2:
-            raise InputError("solver.tolerance", self.tolerance, "", "in (0, 0.01)")
+            raise InputError("tolerance", self.tolerance, "", "in (0, 0.01)")
 
 
 @dataclass(frozen=True)
@@ -322,7 +322,7 @@ class JournalBearing:
             feed = max(operating.aft_pressure, operating.fore_pressure, *(g.pressure for g in operating.grooves))
             if feed <= operating.cavitation_pressure:
                 raise InputError(
-                    "operation.cavitation_pressure",
+                    "operating.cavitation_pressure",
                     operating.cavitation_pressure,
                     "Pa",
                     f"below the highest edge or groove pressure ({feed} Pa) for the mass-conserving "
@@ -503,14 +503,14 @@ class JournalBearing:
         initial : JournalPosition, optional
             Starting position (warm start from a previous equilibrium).
         """
-        load_y = require_finite("operation.load_y", load_y, "N")
-        load_z = require_finite("operation.load_z", load_z, "N")
-        require_finite("operation.tilt_y", tilt_y, "rad")
-        require_finite("operation.tilt_z", tilt_z, "rad")
+        load_y = require_finite("load_y", load_y, "N")
+        load_z = require_finite("load_z", load_z, "N")
+        require_finite("tilt_y", tilt_y, "rad")
+        require_finite("tilt_z", tilt_z, "rad")
         load = np.array([load_y, load_z])
         magnitude = float(np.hypot(*load))
         if magnitude == 0.0:
-            raise InputError("operation.load", 0.0, "N", "> 0 (a loaded bearing)")
+            raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
         c = self.geometry.radial_clearance
         floor = self.options.min_film_floor * c
         position = initial or self._initial_position(load, tilt_y, tilt_z)
@@ -604,11 +604,14 @@ class JournalBearing:
             if self.min_film(position) > 2.0 * floor + 0.05 * self.geometry.radial_clearance:
                 return position
             position = replace(position, ey=0.8 * position.ey, ez=0.8 * position.ez)
+        # Both tilts together do not fit; name the larger, which is the one to reduce first.
+        name = "tilt_y" if abs(position.tilt_y) >= abs(position.tilt_z) else "tilt_z"
         raise InputError(
-            "operation.tilt",
-            f"({position.tilt_y:.4g}, {position.tilt_z:.4g})",
+            name,
+            getattr(position, name),
             "rad",
-            "a misalignment that fits in the clearance with the journal centred",
+            "a misalignment that fits in the clearance with the journal centred "
+            f"(tilt_y, tilt_z = {position.tilt_y:.4g}, {position.tilt_z:.4g} rad)",
         )
 
     def _initial_position(self, load: np.ndarray, tilt_y: float, tilt_z: float) -> JournalPosition:

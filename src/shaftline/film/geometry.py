@@ -77,11 +77,11 @@ class BentJournal:
         dz = np.asarray(self.dz, dtype=float) if self.dz is not None else np.zeros_like(z)
         for name, values in (("z", z), ("dy", dy), ("dz", dz)):
             if values.ndim != 1 or values.size != z.size:
-                raise InputError(f"bearing.bent_journal.{name}", values.size, "", f"{z.size} values")
+                raise InputError(name, values.size, "", f"{z.size} values")
             if not np.all(np.isfinite(values)):
-                raise InputError(f"bearing.bent_journal.{name}", "NaN", "m", "finite numbers")
+                raise InputError(name, "NaN", "m", "finite numbers")
         if z.size < 2 or np.any(np.diff(z) <= 0.0):
-            raise InputError("bearing.bent_journal.z", z.tolist(), "m", "at least 2 increasing stations")
+            raise InputError("z", z.tolist(), "m", "at least 2 increasing stations")
         object.__setattr__(self, "z", z)
         object.__setattr__(self, "dy", dy)
         object.__setattr__(self, "dz", dz)
@@ -113,13 +113,13 @@ class FilmProfile:
         z = np.asarray(self.z, dtype=float)
         delta = np.asarray(self.delta, dtype=float)
         if theta.ndim != 1 or theta.size < 2 or np.any(np.diff(theta) <= 0) or theta[-1] - theta[0] >= 2 * np.pi:
-            raise InputError("bearing.film_profile.theta", theta.size, "rad", "increasing angles within one turn")
+            raise InputError("theta", theta.size, "rad", "increasing angles within one turn")
         if z.ndim != 1 or z.size < 1 or np.any(np.diff(z) <= 0):
-            raise InputError("bearing.film_profile.z", z.size, "m", "increasing stations")
+            raise InputError("z", z.size, "m", "increasing stations")
         if delta.shape != (z.size, theta.size):
-            raise InputError("bearing.film_profile.delta", str(delta.shape), "m", f"shape {(z.size, theta.size)}")
+            raise InputError("delta", str(delta.shape), "m", f"shape {(z.size, theta.size)}")
         if not np.all(np.isfinite(delta)):
-            raise InputError("bearing.film_profile.delta", "NaN", "m", "finite values")
+            raise InputError("delta", "NaN", "m", "finite values")
         object.__setattr__(self, "theta", theta)
         object.__setattr__(self, "z", z)
         object.__setattr__(self, "delta", delta)
@@ -177,33 +177,32 @@ class BearingGeometry:
     rotation: int = 1
 
     def __post_init__(self) -> None:
-        require_positive("bearing.length", self.length, "m")
-        require_positive("bearing.diameter", self.diameter, "m")
-        require_positive("bearing.radial_clearance", self.radial_clearance, "m")
+        require_positive("length", self.length, "m")
+        require_positive("diameter", self.diameter, "m")
+        require_positive("radial_clearance", self.radial_clearance, "m")
         if self.radial_clearance >= 0.5 * self.diameter:
-            raise InputError(
-                "bearing.radial_clearance", self.radial_clearance, "m", f"< diameter/2 = {0.5 * self.diameter}"
-            )
+            raise InputError("radial_clearance", self.radial_clearance, "m", f"< diameter/2 = {0.5 * self.diameter}")
         if self.rotation not in (1, -1):
-            raise InputError("bearing.rotation", self.rotation, "", "+1 (clockwise from aft) or -1")
+            raise InputError("rotation", self.rotation, "", "+1 (clockwise from aft) or -1")
         if self.bore_anchor not in ("fore", "aft", "mid"):
-            raise InputError("bearing.bore_anchor", self.bore_anchor, "", "fore, aft or mid")
+            raise InputError("bore_anchor", self.bore_anchor, "", "fore, aft or mid")
         if self.bore:
             total = 0.0
             for k, segment in enumerate(self.bore):
-                frac = require_finite(f"bearing.bore[{k}].length_fraction", segment.length_fraction)
+                frac = require_finite(f"bore[{k}].length_fraction", segment.length_fraction)
                 if not 0.0 < frac <= 1.0:
-                    raise InputError(f"bearing.bore[{k}].length_fraction", frac, "", "in (0, 1]")
-                require_finite(f"bearing.bore[{k}].slope", segment.slope, "rad")
-                require_finite(f"bearing.bore[{k}].slope_horizontal", segment.slope_horizontal, "rad")
+                    raise InputError(f"bore[{k}].length_fraction", frac, "", "in (0, 1]")
+                require_finite(f"bore[{k}].slope", segment.slope, "rad")
+                require_finite(f"bore[{k}].slope_horizontal", segment.slope_horizontal, "rad")
                 total += frac
             if abs(total - 1.0) > 1e-6:
-                raise InputError("bearing.bore.length_fraction", round(total, 9), "", "segments summing to 1")
+                # The sum over all segments, not one of them: no index.
+                raise InputError("bore.length_fraction", round(total, 9), "", "segments summing to 1")
         if self.bent_journal is not None and (
             self.bent_journal.z[0] < -1e-9 * self.length or self.bent_journal.z[-1] > self.length * (1 + 1e-9)
         ):
             raise InputError(
-                "bearing.bent_journal.z",
+                "bent_journal.z",
                 [float(self.bent_journal.z[0]), float(self.bent_journal.z[-1])],
                 "m",
                 f"stations within the bearing, [0, {self.length}]",
@@ -253,13 +252,13 @@ class Grid:
     def __post_init__(self) -> None:
         if int(self.axial_nodes) != self.axial_nodes or self.axial_nodes < MIN_AXIAL_NODES:
             raise InputError(
-                "solver.axial_nodes", self.axial_nodes, "", f"an integer >= {MIN_AXIAL_NODES} to resolve the film"
+                "axial_nodes", self.axial_nodes, "", f"an integer >= {MIN_AXIAL_NODES} to resolve the film"
             )
         if int(self.circumferential_nodes) != self.circumferential_nodes or (
             self.circumferential_nodes < MIN_CIRCUMFERENTIAL_NODES
         ):
             raise InputError(
-                "solver.circumferential_nodes",
+                "circumferential_nodes",
                 self.circumferential_nodes,
                 "",
                 f"an integer >= {MIN_CIRCUMFERENTIAL_NODES} to resolve the film",
