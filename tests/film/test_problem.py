@@ -1,4 +1,4 @@
-"""The problem data: light to import, Literal choices defined once."""
+"""The problem data: light to import, Literal choices defined once, results compare by identity."""
 
 from __future__ import annotations
 
@@ -18,6 +18,8 @@ import shaftline.film
 from shaftline.errors import InputError
 from shaftline.film import (
     BearingGeometry,
+    BentJournal,
+    FilmProfile,
     JournalPosition,
     SolverOptions,
     dynamic_coefficients,
@@ -104,6 +106,25 @@ def test_solver_options_check_the_grid_themselves(kwargs, field):
     with pytest.raises(InputError) as error:
         SolverOptions(**kwargs)
     assert error.value.field == field
+
+
+def test_results_holding_arrays_compare_by_identity(square_bearing):
+    """== on a dataclass of arrays would raise ("truth value of an array is ambiguous")."""
+    position = JournalPosition.from_polar(0.5 * CLEARANCE, 2.0)
+    first, second = square_bearing.solve_at(position), square_bearing.solve_at(position)
+    assert first == first and first != second
+    assert len({first, second}) == 2
+    linearisation = square_bearing.linearise(position)
+    coefficients = dynamic_coefficients(square_bearing, first)
+    assert linearisation == linearisation and coefficients == coefficients
+    assert len({linearisation, coefficients}) == 2
+    bent = BentJournal(z=[0.0, 0.1], dy=[0.0, 1e-6], dz=[0.0, 0.0])
+    profile = FilmProfile(theta=[0.0, np.pi], z=[0.0], delta=[[0.0, 1e-6]])
+    assert bent != BentJournal(z=[0.0, 0.1], dy=[0.0, 1e-6], dz=[0.0, 0.0])
+    # a geometry compares its parts: equal when they are the same objects
+    one = BearingGeometry(0.1, 0.1, 1e-4, bent_journal=bent, film_profile=profile)
+    assert one == BearingGeometry(0.1, 0.1, 1e-4, bent_journal=bent, film_profile=profile)
+    assert hash(one) == hash(BearingGeometry(0.1, 0.1, 1e-4, bent_journal=bent, film_profile=profile))
 
 
 def test_linearisation_is_the_negated_dynamic_coefficients(square_bearing):

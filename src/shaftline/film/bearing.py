@@ -58,7 +58,7 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BearingState:
     """Film solution at one journal position. Fields are SI unless noted.
 
@@ -128,6 +128,8 @@ class BearingState:
     iterations : int
         Active-set iterations (factorisations) of this solution; a warm start
         (``solve_at(..., warm_start=True)``) needs fewer for the same result.
+
+    Equality is identity: the fields hold arrays, which have no single truth value.
     """
 
     position: JournalPosition
@@ -241,7 +243,7 @@ class FilmLinearisation:
         return -self.velocity_derivative
 
 
-@dataclass
+@dataclass(eq=False)
 class _Evaluation:
     position: JournalPosition
     grid: Grid

@@ -17,7 +17,7 @@ import numpy as np
 from shaftline.film.bearing import BearingState, JournalBearing
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class DynamicCoefficients:
     """Film stiffness (N/m) and damping (N*s/m) matrices, rows/columns (y, z).
 
@@ -27,6 +27,8 @@ class DynamicCoefficients:
         ``[[K_yy, K_yz], [K_zy, K_zz]]``, N/m.
     damping : ndarray (2, 2)
         ``[[C_yy, C_yz], [C_zy, C_zz]]``, N*s/m.
+
+    Equality is identity: the fields hold arrays, which have no single truth value.
     """
 
     stiffness: np.ndarray

@@ -73,7 +73,7 @@ class BoreSegment:
     slope_horizontal: float = 0.0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BentJournal:
     """Offsets of the journal centre line from a straight line, along the bearing.
 
@@ -85,6 +85,8 @@ class BentJournal:
         Vertical and horizontal offsets of the journal centre at those stations, m.
         They are interpolated linearly onto the grid (seed 004 Sect. 4.5.1) and
         held constant beyond the first and last station.
+
+    Equality is identity (the arrays have no single truth value).
 
     Raises
     ------
@@ -112,7 +114,7 @@ class BentJournal:
         object.__setattr__(self, "dz", dz)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FilmProfile:
     """An additive film change delta(theta, z) given on its own table (wear, bore errors).
 
@@ -127,6 +129,7 @@ class FilmProfile:
 
     It is interpolated linearly, periodically in theta and held constant beyond the
     end stations in z, so it follows the grid wherever the grid's angles start.
+    Equality is identity (the arrays have no single truth value).
 
     Raises
     ------

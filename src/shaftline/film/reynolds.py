@@ -66,7 +66,7 @@ class ReynoldsConvergenceError(RuntimeError):
     """The active-set iteration did not settle (never seen on M-matrices; kept as a guard)."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class _Pattern:
     """Sparsity pattern of the 5-point periodic stencil on an (nz, nt) grid."""
 
@@ -106,7 +106,7 @@ def _pattern(nz: int, nt: int) -> _Pattern:
     )
 
 
-@dataclass
+@dataclass(eq=False)
 class Stencil:
     """Conductances and right-hand side of the discrete Reynolds equation for one film.
 
@@ -173,7 +173,7 @@ def stencil_derivative(
     return dc_theta, dc_z, np.roll(d_couette, 1, axis=1) - d_couette
 
 
-@dataclass
+@dataclass(eq=False)
 class ReynoldsSolution:
     """Dimensionless solution of the Reynolds equation on the grid.
 
