@@ -87,12 +87,22 @@ def test_jfo_starvation_with_feed_pressure():
     assert loads[0] < 0.3 * loads[1] < loads[1] < loads[2]
 
 
-@pytest.mark.parametrize("supply", [2e3, 2e5])
-def test_jfo_well_fed_groove_matches_reynolds_load(supply):
-    """With an axial groove at the thickest film the JFO film is well fed and, for a feed near
-    ambient, its load is within 3 % of the Reynolds condition (the models differ at
-    reformation, which a groove at h_max removes); supply = side leakage holds exactly
-    whatever the feed."""
+@pytest.mark.parametrize(
+    "supply, tolerance",
+    [
+        # Feed near ambient: the models differ only where the film reforms, which a groove at
+        # h_max removes; the loads agree to 0.05 % here (0.07 % on 61 x 240 nodes).
+        (2e3, 0.01),
+        # 2 bar feed: the feed also pressurises the upper half differently in the two models.
+        # JFO carries 4.07 % more here and 4.06 % on 61 x 240 nodes, so this is the models'
+        # difference, not the grid's; the bound is 5 %.
+        (2e5, 0.05),
+    ],
+)
+def test_jfo_well_fed_groove_matches_reynolds_load(supply, tolerance):
+    """With an axial groove at the thickest film the JFO film is well fed: its load stays close
+    to the Reynolds condition (1 % for a feed near ambient, 5 % at 2 bar), and supply = side
+    leakage holds exactly whatever the feed."""
     from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions, SupplyGroove
 
     loads = {}
@@ -106,10 +116,7 @@ def test_jfo_well_fed_groove_matches_reynolds_load(supply):
         loads[cavitation] = state.load_capacity
         if cavitation == "jfo":
             assert state.inlet_flow == pytest.approx(state.side_leakage, rel=1e-9)
-    if supply < 1e4:
-        # A feed near ambient changes only where the film reforms; a strong feed also
-        # pressurises the upper half differently in the two models (4 % at 2 bar).
-        assert loads["jfo"] == pytest.approx(loads["reynolds"], rel=0.03)
+    assert loads["jfo"] == pytest.approx(loads["reynolds"], rel=tolerance)
 
 
 def _force(bearing, position: JournalPosition) -> np.ndarray:

@@ -338,8 +338,11 @@ class JournalBearing:
     ...     OperatingPoint(speed=100.0, viscosity=0.02),
     ... )
     >>> eq = bearing.equilibrium(load_y=-5e3, load_z=0.0)
-    >>> round(eq.state.eccentricity_ratio, 2)
-    0.52
+    >>> round(eq.state.sommerfeld_number, 3), round(eq.state.eccentricity_ratio, 2)
+    (0.159, 0.53)
+    >>> stiffness = bearing.linearise(eq.state.position).stiffness  # N/m
+    >>> bool(stiffness[0, 0] > 0)
+    True
     """
 
     def __init__(
