@@ -74,6 +74,7 @@ def test_a_solved_bearing_pickles_as_its_problem_only():
     solved = JournalBearing.from_problem(problem)
     _solve(solved)
     assert pickle.dumps(solved) == pickle.dumps(fresh)
+    assert solved.problem is problem
     restored = pickle.loads(pickle.dumps(solved))
     assert restored.problem == problem
 

@@ -353,8 +353,10 @@ class JournalBearing:
 
     @classmethod
     def from_problem(cls, problem: BearingProblem) -> JournalBearing:
-        """The bearing of ``problem`` (its solver state is built on first use)."""
-        return cls(problem.geometry, problem.operating, problem.options)
+        """The bearing of ``problem``, which it keeps as it is (already checked when made)."""
+        bearing = cls.__new__(cls)
+        bearing.__setstate__({"problem": problem})
+        return bearing
 
     # -- the problem: read-only, since the solver state is built from it ------------------
     @property
@@ -364,14 +366,17 @@ class JournalBearing:
 
     @property
     def geometry(self) -> BearingGeometry:
+        """``problem.geometry``."""
         return self._problem.geometry
 
     @property
     def operating(self) -> OperatingPoint:
+        """``problem.operating``."""
         return self._problem.operating
 
     @property
     def options(self) -> SolverOptions:
+        """``problem.options``."""
         return self._problem.options
 
     @property
