@@ -38,9 +38,27 @@ def test_presets_by_name(name):
 def test_unknown_preset():
     with pytest.raises(InputError) as error:
         Lubricant.preset("olive oil")
-    assert error.value.field == "lubricant.preset"
+    assert error.value.field == "name"
 
 
 def test_viscosity_must_fall_with_temperature():
     with pytest.raises(InputError):
         Lubricant.from_two_points("bad", 40.0, 10e-6, 100.0, 20e-6)
+
+
+@pytest.mark.parametrize(
+    "call, field",
+    [
+        (lambda: Lubricant.constant(0.0), "viscosity"),
+        (lambda: Lubricant.constant(0.02, density=-1.0), "density"),
+        (lambda: Lubricant.from_two_points("x", 40.0, 68e-6, 40.0, 8.7e-6), "temperature_2"),
+        (lambda: Lubricant.from_two_points("x", 40.0, -68e-6, 100.0, 8.7e-6), "kinematic_viscosity_1"),
+        (lambda: Lubricant.from_two_points("x", 40.0, 10e-6, 100.0, 20e-6), "kinematic_viscosity_2"),
+        (lambda: Lubricant.from_two_points("x", 40.0, 68e-6, 100.0, 8.7e-6, density_15=0.0), "density_15"),
+    ],
+)
+def test_bad_lubricant_input_names_the_parameter(call, field):
+    """Errors name the parameter of the call that checks it; a case reader adds its own path."""
+    with pytest.raises(InputError) as error:
+        call()
+    assert error.value.field == field

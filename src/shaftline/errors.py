@@ -16,10 +16,17 @@ from typing import Any
 class InputError(ValueError):
     """A value given by the user is outside what the model accepts.
 
+    Domain code names the field relative to the object or function that checks
+    it, because it cannot know where a value came from: the dataclass attribute
+    path (``"radial_clearance"``, ``"bore[1].slope"``, ``"grooves[0].angle"``) or
+    the parameter (``"load_y"``). A reader of case files puts its own path in
+    front with :meth:`within` (``"bearing.radial_clearance"``).
+
     Parameters
     ----------
     field : str
-        Dotted name of the input field, e.g. ``"bearing.radial_clearance"``.
+        Name of the input field, e.g. ``"radial_clearance"`` in the domain or
+        ``"bearing.radial_clearance"`` once a case reader has placed it.
     value : Any
         The value that was given.
     unit : str
@@ -46,16 +53,19 @@ class InputError(ValueError):
 
         Domain objects name fields relative to themselves (``"radial_clearance"``,
         ``"grooves[0].angle"``); the case layer, which knows where each object came from,
-        prefixes the path of its case-file table. ``renames`` maps the first part of the
-        field to its case-file name where the two differ (``{"point_loads": "loads"}``).
+        prefixes the path of its case-file table: ``within("operation")`` turns ``"speed"``
+        into ``"operation.speed"``, and an index joins without a dot (``"[1].slope"`` under
+        ``"bore"`` is ``"bore[1].slope"``). ``renames`` gives the path, in place of
+        ``prefix`` and the name, of fields whose first part is named differently in the
+        case file (``{"point_loads": "loads", "viscosity": "lubricant.viscosity"}``).
         """
         head, sep, rest = self.field.partition(".")
         name, bracket, index = head.partition("[")
         if renames and name in renames:
-            head = renames[name] + bracket + index
-        field = f"{head}{sep}{rest}"
+            return InputError(f"{renames[name]}{bracket}{index}{sep}{rest}", self.value, self.unit, self.allowed)
+        field = self.field
         if prefix:
-            field = f"{prefix}.{field}" if field else prefix
+            field = f"{prefix}{'' if field.startswith('[') else '.'}{field}" if field else prefix
         return InputError(field, self.value, self.unit, self.allowed)
 
 

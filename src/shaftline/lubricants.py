@@ -68,16 +68,16 @@ class Lubricant:
         density_15: float = 880.0,
     ) -> Lubricant:
         """Fit the ASTM D341 relation through two (degC, m^2/s) points."""
-        t1 = require_finite("lubricant.temperature_1", temperature_1, "degC")
-        t2 = require_finite("lubricant.temperature_2", temperature_2, "degC")
-        nu1 = require_positive("lubricant.kinematic_viscosity_1", kinematic_viscosity_1, "m^2/s")
-        nu2 = require_positive("lubricant.kinematic_viscosity_2", kinematic_viscosity_2, "m^2/s")
-        require_positive("lubricant.density", density_15, "kg/m^3")
+        t1 = require_finite("temperature_1", temperature_1, "degC")
+        t2 = require_finite("temperature_2", temperature_2, "degC")
+        nu1 = require_positive("kinematic_viscosity_1", kinematic_viscosity_1, "m^2/s")
+        nu2 = require_positive("kinematic_viscosity_2", kinematic_viscosity_2, "m^2/s")
+        require_positive("density_15", density_15, "kg/m^3")
         if t1 == t2:
-            raise InputError("lubricant.temperature_2", t2, "degC", f"different from temperature_1 ({t1})")
+            raise InputError("temperature_2", t2, "degC", f"different from temperature_1 ({t1})")
         if (t2 - t1) * (nu2 - nu1) >= 0.0:
             raise InputError(
-                "lubricant.kinematic_viscosity_2",
+                "kinematic_viscosity_2",
                 nu2,
                 "m^2/s",
                 "a viscosity that falls as temperature rises",
@@ -93,8 +93,8 @@ class Lubricant:
     @classmethod
     def constant(cls, viscosity: float, density: float = 880.0, name: str = "constant") -> Lubricant:
         """A lubricant of fixed dynamic viscosity (Pa*s), as at an effective temperature."""
-        require_positive("lubricant.viscosity", viscosity, "Pa*s")
-        require_positive("lubricant.density", density, "kg/m^3")
+        require_positive("viscosity", viscosity, "Pa*s")
+        require_positive("density", density, "kg/m^3")
         return cls(name=name, model="constant", constant_viscosity=viscosity, density_15=density)
 
     @classmethod
@@ -103,7 +103,7 @@ class Lubricant:
         key = name.strip().lower().replace("_", " ").replace("-", " ")
         key = " ".join(key.split())
         if key not in PRESETS:
-            raise InputError("lubricant.preset", name, "", "one of " + ", ".join(sorted(PRESETS)))
+            raise InputError("name", name, "", "one of " + ", ".join(sorted(PRESETS)))
         return PRESETS[key]
 
     def kinematic_viscosity(self, temperature: float | np.ndarray) -> float | np.ndarray:
@@ -124,7 +124,7 @@ class Lubricant:
             if self.model == "seawater":
                 value = value * _sea_water_factor(t, SEA_SALINITY)
         else:  # pragma: no cover - guarded by constructors
-            raise InputError("lubricant.model", self.model, "", "walther, water, seawater or constant")
+            raise InputError("model", self.model, "", "walther, water, seawater or constant")
         return float(value) if value.ndim == 0 else value
 
     def density(self, temperature: float | np.ndarray) -> float | np.ndarray:

@@ -91,12 +91,16 @@ def run_case(
     progress : callable, optional
         Called with a short text as the work goes on.
     """
+    from shaftline.errors import located
+
     wanted = set(case.studies if only is None else only)
     registry = capabilities()
     results = {}
     for key, study in case.studies.items():
         if key in wanted:
-            results[key] = registry[key].solve(study, progress, **(options or {}).get(key, {}))
+            # an input found wrong only while solving is named under its table
+            with located(key):
+                results[key] = registry[key].solve(study, progress, **(options or {}).get(key, {}))
     return CaseResult(case, results)
 
 

@@ -96,12 +96,12 @@ def test_additive_profile_interpolates_in_z():
 @pytest.mark.parametrize(
     "kwargs, field",
     [
-        ({"radial_clearance": 0.0}, "bearing.radial_clearance"),
-        ({"radial_clearance": -1e-4}, "bearing.radial_clearance"),
-        ({"length": 0.0}, "bearing.length"),
-        ({"diameter": -0.5}, "bearing.diameter"),
-        ({"radial_clearance": float("nan")}, "bearing.radial_clearance"),
-        ({"bore": (BoreSegment(0.5, 1e-4), BoreSegment(0.4, 0.0))}, "bearing.bore.length_fraction"),
+        ({"radial_clearance": 0.0}, "radial_clearance"),
+        ({"radial_clearance": -1e-4}, "radial_clearance"),
+        ({"length": 0.0}, "length"),
+        ({"diameter": -0.5}, "diameter"),
+        ({"radial_clearance": float("nan")}, "radial_clearance"),
+        ({"bore": (BoreSegment(0.5, 1e-4), BoreSegment(0.4, 0.0))}, "bore.length_fraction"),
     ],
 )
 def test_bad_geometry_names_the_field(kwargs, field):
@@ -114,7 +114,35 @@ def test_bad_geometry_names_the_field(kwargs, field):
 def test_coarse_grid_is_rejected():
     with pytest.raises(InputError) as error:
         Grid(1.0, 3, 60)
-    assert error.value.field == "solver.axial_nodes"
+    assert error.value.field == "axial_nodes"
     with pytest.raises(InputError) as error:
         Grid(1.0, 20, 8)
-    assert error.value.field == "solver.circumferential_nodes"
+    assert error.value.field == "circumferential_nodes"
+
+
+@pytest.mark.parametrize(
+    "kwargs, field",
+    [
+        ({"bore": (BoreSegment(0.5, 1e-4), BoreSegment(0.5, float("nan")))}, "bore[1].slope"),
+        ({"bore": (BoreSegment(1.5),)}, "bore[0].length_fraction"),
+        ({"bore": (BoreSegment(1.0, 0.0, float("inf")),)}, "bore[0].slope_horizontal"),
+        ({"bent_journal": BentJournal(z=[0.0, 2.0], dy=[0.0, 0.0], dz=[0.0, 0.0])}, "bent_journal.z"),
+        ({"rotation": 2}, "rotation"),
+        ({"bore_anchor": "middle"}, "bore_anchor"),
+    ],
+)
+def test_bad_geometry_names_the_attribute_path(kwargs, field):
+    """Fields are named from the geometry down (never from a case file): the case layer adds its own path."""
+    values = {"length": 1.0, "diameter": 0.5, "radial_clearance": 5e-4} | kwargs
+    with pytest.raises(InputError) as error:
+        BearingGeometry(**values)
+    assert error.value.field == field
+
+
+def test_bad_bent_journal_and_profile_name_their_own_attributes():
+    with pytest.raises(InputError) as error:
+        BentJournal(z=[0.0, 1.0], dy=[0.0, float("nan")], dz=[0.0, 0.0])
+    assert error.value.field == "dy"
+    with pytest.raises(InputError) as error:
+        FilmProfile(theta=[0.0, 1.0], z=[0.0], delta=[[0.0, 0.0, 0.0]])
+    assert error.value.field == "delta"

@@ -61,8 +61,7 @@ def test_jfo_mass_balance():
 
 def test_jfo_groove_supply_equals_side_leakage():
     """With a supply groove the steady film takes from the groove exactly what leaks out."""
-    from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
-    from shaftline.film.bearing import SupplyGroove
+    from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions, SupplyGroove
 
     bearing = JournalBearing(
         BearingGeometry(length=0.1, diameter=0.1, radial_clearance=1e-4),
@@ -88,14 +87,23 @@ def test_jfo_starvation_with_feed_pressure():
     assert loads[0] < 0.3 * loads[1] < loads[1] < loads[2]
 
 
-@pytest.mark.parametrize("supply", [2e3, 2e5])
-def test_jfo_well_fed_groove_matches_reynolds_load(supply):
-    """With an axial groove at the thickest film the JFO film is well fed and, for a feed near
-    ambient, its load is within 3 % of the Reynolds condition (the models differ at
-    reformation, which a groove at h_max removes); supply = side leakage holds exactly
-    whatever the feed."""
-    from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
-    from shaftline.film.bearing import SupplyGroove
+@pytest.mark.parametrize(
+    "supply, tolerance",
+    [
+        # Feed near ambient: the models differ only where the film reforms, which a groove at
+        # h_max removes; the loads agree to 0.05 % here (0.07 % on 61 x 240 nodes).
+        (2e3, 0.01),
+        # 2 bar feed: the feed also pressurises the upper half differently in the two models.
+        # JFO carries 4.07 % more here and 4.06 % on 61 x 240 nodes, so this is the models'
+        # difference, not the grid's; the bound is 5 %.
+        (2e5, 0.05),
+    ],
+)
+def test_jfo_well_fed_groove_matches_reynolds_load(supply, tolerance):
+    """With an axial groove at the thickest film the JFO film is well fed: its load stays close
+    to the Reynolds condition (1 % for a feed near ambient, 5 % at 2 bar), and supply = side
+    leakage holds exactly whatever the feed."""
+    from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions, SupplyGroove
 
     loads = {}
     for cavitation in ("reynolds", "jfo"):
@@ -108,25 +116,29 @@ def test_jfo_well_fed_groove_matches_reynolds_load(supply):
         loads[cavitation] = state.load_capacity
         if cavitation == "jfo":
             assert state.inlet_flow == pytest.approx(state.side_leakage, rel=1e-9)
-    if supply < 1e4:
-        # A feed near ambient changes only where the film reforms; a strong feed also
-        # pressurises the upper half differently in the two models (4 % at 2 bar).
-        assert loads["jfo"] == pytest.approx(loads["reynolds"], rel=0.03)
+    assert loads["jfo"] == pytest.approx(loads["reynolds"], rel=tolerance)
+
+
+def _force(bearing, position: JournalPosition) -> np.ndarray:
+    """Film force (N) of the full cavitation solution at ``position``, started cold."""
+    state = bearing.solve_at(position, warm_start=False)
+    return np.array([state.force_y, state.force_z])
 
 
 def test_position_jacobian_matches_finite_differences(square_bearing):
     """Frozen-active-set Jacobian against central differences of the full LCP solution.
     Exact to first order for the Reynolds condition: 0.5 % with a 1e-4 c step."""
     position = JournalPosition.from_polar(0.6 * CLEARANCE, 2.5)
-    evaluation = square_bearing._evaluate(position, warm=False)
-    jacobian = square_bearing._position_jacobian(evaluation)
+    linearisation = square_bearing.linearise(position)
     step = 1e-4 * CLEARANCE
     numeric = np.zeros((2, 2))
     for k, (dy, dz) in enumerate(((step, 0.0), (0.0, step))):
-        plus = square_bearing._evaluate(JournalPosition(position.ey + dy, position.ez + dz), warm=False).force
-        minus = square_bearing._evaluate(JournalPosition(position.ey - dy, position.ez - dz), warm=False).force
+        plus = _force(square_bearing, JournalPosition(position.ey + dy, position.ez + dz))
+        minus = _force(square_bearing, JournalPosition(position.ey - dy, position.ez - dz))
         numeric[:, k] = (plus - minus) / (2 * step)
-    assert np.allclose(jacobian, numeric, rtol=5e-3, atol=5e-3 * np.abs(numeric).max())
+    assert np.allclose(linearisation.offset_derivative, numeric, rtol=5e-3, atol=5e-3 * np.abs(numeric).max())
+    # The force it is linearised about is the film force of the solution there.
+    assert np.array_equal(linearisation.force, _force(square_bearing, position))
 
 
 def test_damping_matches_squeeze_finite_differences(square_bearing):
@@ -137,8 +149,8 @@ def test_damping_matches_squeeze_finite_differences(square_bearing):
     speed = 1e-4 * CLEARANCE * square_bearing.operating.speed
     numeric = np.zeros((2, 2))
     for k, (vy, vz) in enumerate(((speed, 0.0), (0.0, speed))):
-        plus = square_bearing._evaluate(JournalPosition(position.ey, position.ez, vy=vy, vz=vz), warm=False).force
-        minus = square_bearing._evaluate(JournalPosition(position.ey, position.ez, vy=-vy, vz=-vz), warm=False).force
+        plus = _force(square_bearing, JournalPosition(position.ey, position.ez, vy=vy, vz=vz))
+        minus = _force(square_bearing, JournalPosition(position.ey, position.ez, vy=-vy, vz=-vz))
         numeric[:, k] = -(plus - minus) / (2 * speed)
     assert np.allclose(coefficients.damping, numeric, rtol=1e-2, atol=1e-2 * np.abs(numeric).max())
 

@@ -1,30 +1,94 @@
-"""Hydrodynamic film of a journal bearing: geometry, Reynolds equation, bearing results."""
+"""Hydrodynamic film of a journal bearing: geometry, Reynolds equation, bearing results.
 
-from shaftline.film.bearing import BearingState, Equilibrium, JournalBearing, OperatingPoint, SolverOptions
-from shaftline.film.dynamics import DynamicCoefficients, dynamic_coefficients
-from shaftline.film.geometry import (
-    BearingGeometry,
-    BentJournal,
-    BoreSegment,
-    FilmProfile,
-    Grid,
-    JournalPosition,
-    film_thickness,
-)
+The names below are imported on first use (PEP 562), so that
+``import shaftline.film.problem`` or ``from shaftline.film import BearingGeometry``
+loads numpy only: the solver modules (scipy, qdldl) load with the first name that
+needs them, e.g. ``JournalBearing``.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from shaftline.film.bearing import BearingState, Equilibrium, FilmLinearisation, JournalBearing
+    from shaftline.film.dynamics import DynamicCoefficients, dynamic_coefficients
+    from shaftline.film.geometry import (
+        BearingGeometry,
+        BentJournal,
+        BoreSegment,
+        FilmProfile,
+        Grid,
+        JournalPosition,
+        film_thickness,
+    )
+    from shaftline.film.problem import (
+        BearingProblem,
+        CavitatedShear,
+        Cavitation,
+        FilmStart,
+        OperatingPoint,
+        SolverOptions,
+        SupplyGroove,
+    )
+
+#: Public name -> module that defines it.
+_WHERE = {
+    "BearingGeometry": "geometry",
+    "BentJournal": "geometry",
+    "BoreSegment": "geometry",
+    "FilmProfile": "geometry",
+    "Grid": "geometry",
+    "JournalPosition": "geometry",
+    "film_thickness": "geometry",
+    "BearingProblem": "problem",
+    "CavitatedShear": "problem",
+    "Cavitation": "problem",
+    "FilmStart": "problem",
+    "OperatingPoint": "problem",
+    "SolverOptions": "problem",
+    "SupplyGroove": "problem",
+    "BearingState": "bearing",
+    "Equilibrium": "bearing",
+    "FilmLinearisation": "bearing",
+    "JournalBearing": "bearing",
+    "DynamicCoefficients": "dynamics",
+    "dynamic_coefficients": "dynamics",
+}
 
 __all__ = [
     "BearingGeometry",
+    "BearingProblem",
     "BearingState",
     "BentJournal",
     "BoreSegment",
+    "CavitatedShear",
+    "Cavitation",
     "DynamicCoefficients",
-    "FilmProfile",
     "Equilibrium",
+    "FilmLinearisation",
+    "FilmProfile",
+    "FilmStart",
     "Grid",
     "JournalBearing",
     "JournalPosition",
     "OperatingPoint",
     "SolverOptions",
+    "SupplyGroove",
     "dynamic_coefficients",
     "film_thickness",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    module = _WHERE.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    globals()[name] = value  # later look-ups skip this function
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

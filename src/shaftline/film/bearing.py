@@ -4,20 +4,36 @@ Forces are those of the film on the journal, in the shaft axes (y up, z
 starboard), N. Pressures are gauge pressures above the ambient pressure, Pa.
 An applied load ``(load_y, load_z)`` is carried when the film force balances it:
 ``force + load = 0``.
+
+A :class:`JournalBearing` is a :class:`~shaftline.film.problem.BearingProblem`
+(pure data) plus solver state that belongs to one process: the Reynolds solver
+with its sparse factorisation, the coarse-grid solver that predicts the
+cavitated set, and the last active set (the warm start). Pickling or deep-copying
+a bearing carries only the problem; the solver state is rebuilt on first use.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 
-from shaftline.errors import InputError, require_finite, require_positive
+from shaftline.errors import InputError, require_finite
 from shaftline.film.analytic import eccentricity_guess
 from shaftline.film.geometry import BearingGeometry, Grid, JournalPosition, film_thickness, squeeze_velocity
-from shaftline.film.reynolds import (
+from shaftline.film.problem import (
     CAVITATION_MODELS,
+    FILM_STARTS,
+    BearingProblem,
+    Cavitation,
+    OperatingPoint,
+    SolverOptions,
+    SupplyGroove,
+)
+from shaftline.film.reynolds import (
     ReynoldsSolution,
     ReynoldsSolver,
     Stencil,
@@ -26,129 +42,23 @@ from shaftline.film.reynolds import (
     stencil_derivative,
 )
 
-FILM_STARTS = ("periodic", "max_film")
+__all__ = [
+    # Problem data, defined in shaftline.film.problem and re-exported here for compatibility.
+    "CAVITATION_MODELS",
+    "FILM_STARTS",
+    "BearingProblem",
+    "OperatingPoint",
+    "SolverOptions",
+    "SupplyGroove",
+    # Results and the solver.
+    "BearingState",
+    "Equilibrium",
+    "FilmLinearisation",
+    "JournalBearing",
+]
 
 
-@dataclass(frozen=True)
-class SupplyGroove:
-    """An axial supply groove at a fixed bearing angle.
-
-    Attributes
-    ----------
-    angle : float
-        Bearing angle of the groove centre, rad (from the top, in the direction of rotation).
-    pressure : float
-        Supply pressure above ambient, Pa.
-    length_fraction : float
-        Axial length of the groove as a share of the bearing length, centred, (0, 1].
-    """
-
-    angle: float
-    pressure: float = 0.0
-    length_fraction: float = 1.0
-
-
-@dataclass(frozen=True)
-class OperatingPoint:
-    """Running condition of a bearing.
-
-    Attributes
-    ----------
-    speed : float
-        Shaft angular speed, rad/s (> 0; the sense of rotation is a geometry input).
-    viscosity : float
-        Effective dynamic viscosity of the lubricant, Pa*s.
-    density : float
-        Lubricant density, kg/m^3 (reported flows by mass; no effect on pressures).
-    aft_pressure, fore_pressure : float
-        Pressures at the aft and forward bearing edges above ambient, Pa.
-    cavitation_pressure : float
-        Pressure at which the film ruptures, above ambient, Pa (<= edge pressures).
-    grooves : tuple of SupplyGroove
-        Axial supply grooves.
-    """
-
-    speed: float
-    viscosity: float
-    density: float = 880.0
-    aft_pressure: float = 0.0
-    fore_pressure: float = 0.0
-    cavitation_pressure: float = 0.0
-    grooves: tuple[SupplyGroove, ...] = ()
-
-    def __post_init__(self) -> None:
-        require_positive("operation.speed", self.speed, "rad/s")
-        require_positive("lubricant.viscosity", self.viscosity, "Pa*s")
-        require_positive("lubricant.density", self.density, "kg/m^3")
-        for name in ("aft_pressure", "fore_pressure", "cavitation_pressure"):
-            require_finite(f"operation.{name}", getattr(self, name), "Pa")
-        lowest = min(self.aft_pressure, self.fore_pressure, *(g.pressure for g in self.grooves))
-        if self.cavitation_pressure > lowest:
-            raise InputError(
-                "operation.cavitation_pressure",
-                self.cavitation_pressure,
-                "Pa",
-                f"<= the lowest supply pressure {lowest}",
-            )
-        for k, groove in enumerate(self.grooves):
-            require_finite(f"operation.grooves[{k}].angle", groove.angle, "rad")
-            require_finite(f"operation.grooves[{k}].pressure", groove.pressure, "Pa")
-            if not 0.0 < groove.length_fraction <= 1.0:
-                raise InputError(f"operation.grooves[{k}].length_fraction", groove.length_fraction, "", "in (0, 1]")
-
-
-@dataclass(frozen=True)
-class SolverOptions:
-    """Numerical options of the film solution.
-
-    Attributes
-    ----------
-    axial_nodes, circumferential_nodes : int
-        Grid nodes along the bearing (edges included) and around the bore.
-    cavitation : str
-        ``"reynolds"`` (Swift-Stieber, default), ``"jfo"`` (mass-conserving) or
-        ``"half_sommerfeld"`` (comparison only).
-    film_start : str
-        ``"periodic"`` (default: the film is continuous all round) or ``"max_film"``
-        (the classical design-chart assumption of Raimondi & Boyd: ambient pressure
-        along the line of maximum film thickness, where the oil enters).
-    cavitated_shear : str
-        Shear in the cavitated zone: ``"film_fraction"`` (default: only the liquid
-        streamers shear, share ``h_rupture / h`` or the JFO film fraction) or
-        ``"full_film"`` (the whole clearance shears, the convention behind the
-        Raimondi & Boyd friction variable).
-    min_film_floor : float
-        Smallest film, as a share of the radial clearance, that the equilibrium search
-        may approach; below it the load is reported as not carried (contact).
-    tolerance : float
-        Relative force residual at which the equilibrium is accepted.
-    max_iterations : int
-        Newton iterations allowed for the equilibrium.
-    """
-
-    axial_nodes: int = 41
-    circumferential_nodes: int = 120
-    cavitation: str = "reynolds"
-    film_start: str = "periodic"
-    cavitated_shear: str = "film_fraction"
-    min_film_floor: float = 1e-3
-    tolerance: float = 1e-8
-    max_iterations: int = 60
-
-    def __post_init__(self) -> None:
-        if self.cavitation not in CAVITATION_MODELS:
-            raise InputError("solver.cavitation", self.cavitation, "", "one of " + ", ".join(CAVITATION_MODELS))
-        if self.film_start not in FILM_STARTS:
-            raise InputError("solver.film_start", self.film_start, "", "one of " + ", ".join(FILM_STARTS))
-        if self.cavitated_shear not in ("film_fraction", "full_film"):
-            raise InputError("solver.cavitated_shear", self.cavitated_shear, "", "film_fraction or full_film")
-        if not 0.0 < self.min_film_floor < 0.5:
-            raise InputError("solver.min_film_floor", self.min_film_floor, "", "in (0, 0.5) of the clearance")
-        if not 0.0 < self.tolerance < 1e-2:
-            raise InputError("solver.tolerance", self.tolerance, "", "in (0, 0.01)")
-
-
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BearingState:
     """Film solution at one journal position. Fields are SI unless noted.
 
@@ -213,10 +123,13 @@ class BearingState:
     contact : bool
         True when the film reaches ``min_film_floor`` or less (the load is not carried
         by a film this grid can resolve).
-    cavitation : str
+    cavitation : Cavitation
         Cavitation model used.
     iterations : int
-        Active-set iterations (factorisations) of this solution.
+        Active-set iterations (factorisations) of this solution; a warm start
+        (``solve_at(..., warm_start=True)``) needs fewer for the same result.
+
+    Equality is identity: the fields hold arrays, which have no single truth value.
     """
 
     position: JournalPosition
@@ -251,7 +164,7 @@ class BearingState:
     edge_leakage: np.ndarray = field(repr=False)
     sommerfeld_number: float
     contact: bool
-    cavitation: str
+    cavitation: Cavitation
     iterations: int
 
 
@@ -285,7 +198,52 @@ class Equilibrium:
     residual: float
 
 
-@dataclass
+@dataclass(frozen=True, eq=False)
+class FilmLinearisation:
+    """Film force at one journal position and its first derivatives.
+
+    The derivatives are those of the discrete film force with the cavitated set
+    frozen at that of the solution at ``position``: exact for the Reynolds
+    (Swift-Stieber) condition, where ``p = dp/dn = 0`` on the free boundary so that
+    moving the boundary changes the force only to second order; an approximation
+    for the ``"jfo"`` model (reformation) and for ``"half_sommerfeld"`` (whose
+    clipped pressure changes with the full-film linear solution, which this
+    holds at zero on the clipped nodes).
+
+    Axes are the shaft axes (y up, z starboard); ``q = (ey, ez)`` are the
+    journal centre offsets at the mid-plane and ``v = (vy, vz)`` their velocities.
+
+    Attributes
+    ----------
+    position : JournalPosition
+        Where the film was linearised.
+    force : ndarray (2,)
+        Film force on the journal ``(F_y, F_z)``, N (as ``BearingState.force_y``, ``force_z``).
+    offset_derivative : ndarray (2, 2)
+        ``[i, j] = dF_i / dq_j``, N/m: rows ``(F_y, F_z)``, columns ``(ey, ez)``.
+    velocity_derivative : ndarray (2, 2)
+        ``[i, j] = dF_i / dv_j``, N*s/m: rows ``(F_y, F_z)``, columns ``(vy, vz)``.
+
+    Equality is identity: the fields hold arrays, which have no single truth value.
+    """
+
+    position: JournalPosition
+    force: np.ndarray = field(repr=False)
+    offset_derivative: np.ndarray
+    velocity_derivative: np.ndarray
+
+    @property
+    def stiffness(self) -> np.ndarray:
+        """``K = -dF/dq``, N/m, ``[[K_yy, K_yz], [K_zy, K_zz]]`` (positive when the film pushes back)."""
+        return -self.offset_derivative
+
+    @property
+    def damping(self) -> np.ndarray:
+        """``C = -dF/dv``, N*s/m, ``[[C_yy, C_yz], [C_zy, C_zz]]``."""
+        return -self.velocity_derivative
+
+
+@dataclass(eq=False)
 class _Evaluation:
     position: JournalPosition
     grid: Grid
@@ -296,8 +254,81 @@ class _Evaluation:
     force: np.ndarray  # (2,) N
 
 
+class _SolverState:
+    """What a bearing builds from its problem to solve it, in one process.
+
+    Never pickled: :class:`JournalBearing` drops it when pickled or copied and
+    builds it again on first use, so a problem sent to another process carries no
+    factorisation (qdldl objects do not pickle) and no stale warm start.
+
+    Attributes
+    ----------
+    grid : Grid
+        Grid with its first angle at 0; rotated per position by ``JournalBearing.grid``.
+    d_theta, d_z : float
+        Dimensionless mesh steps: rad, and axial step over the radius.
+    area_weights : ndarray (nz, 1)
+        Bore area per node, m^2 (trapezoid in z, periodic in theta).
+    reynolds : ReynoldsSolver
+        Solver for the grid and the fixed-pressure nodes, with its factorisation and coarse grid.
+    last_cavitated : ndarray of bool or None
+        Cavitated set of the last solution (the warm start of the next one).
+    """
+
+    def __init__(self, problem: BearingProblem) -> None:
+        geometry, op, options = problem.geometry, problem.operating, problem.options
+        grid = Grid(geometry.length, options.axial_nodes, options.circumferential_nodes)
+        radius = geometry.radius
+        self.grid = grid
+        self.d_theta = grid.d_theta
+        self.d_z = grid.dz / radius
+        wz = np.full(grid.axial_nodes, grid.dz)
+        wz[[0, -1]] *= 0.5
+        self.area_weights = wz[:, None] * (radius * grid.d_theta)
+        self.last_cavitated: np.ndarray | None = None
+        nz, nt = grid.shape
+        fixed = np.zeros(grid.shape, dtype=bool)
+        value = np.zeros(grid.shape)
+        fixed[0], value[0] = True, op.aft_pressure
+        fixed[-1], value[-1] = True, op.fore_pressure
+        if op.grooves:
+            first = op.grooves[0].angle
+            for groove in op.grooves:
+                column = int(round(((groove.angle - first) % (2 * math.pi)) / grid.d_theta)) % nt
+                half = 0.5 * groove.length_fraction * grid.length
+                rows = np.abs(grid.z - 0.5 * grid.length) <= half + 1e-12 * grid.length
+                fixed[rows, column] = True
+                value[rows & ~np.isin(np.arange(nz), (0, nz - 1)), column] = groove.pressure
+        elif options.film_start == "max_film":
+            fixed[:, 0] = True
+            value[1:-1, 0] = 0.0
+        relative = (value - op.cavitation_pressure) / problem.pressure_scale
+        self.reynolds = ReynoldsSolver(grid.shape, self.d_theta, self.d_z, fixed, relative)
+
+
 class JournalBearing:
     """A finite journal bearing: geometry, operating point and solver options.
+
+    The inputs form a :class:`~shaftline.film.problem.BearingProblem` (``.problem``),
+    checked when the bearing is made. The solver state (Reynolds solver, sparse
+    factorisation, coarse grid, last active set) is built on first use in each
+    process: pickling, ``copy.copy`` or ``copy.deepcopy`` carry only the problem, so
+    a bearing, solved or not, can be sent to a process pool. The first
+    ``solve_at(..., warm_start=True)`` after that starts cold; :meth:`equilibrium`,
+    :meth:`linearise` and ``solve_at(..., warm_start=False)`` never depend on
+    earlier calls.
+
+    Parameters
+    ----------
+    geometry : BearingGeometry
+    operating : OperatingPoint
+    options : SolverOptions, optional
+        Defaults to ``SolverOptions()``.
+
+    Raises
+    ------
+    InputError
+        ``"operating.cavitation_pressure"`` for a ``"jfo"`` film without feed pressure.
 
     Examples
     --------
@@ -307,42 +338,72 @@ class JournalBearing:
     ...     OperatingPoint(speed=100.0, viscosity=0.02),
     ... )
     >>> eq = bearing.equilibrium(load_y=-5e3, load_z=0.0)
-    >>> round(eq.state.eccentricity_ratio, 2)
-    0.52
+    >>> round(eq.state.sommerfeld_number, 3), round(eq.state.eccentricity_ratio, 2)
+    (0.159, 0.53)
+    >>> stiffness = bearing.linearise(eq.state.position).stiffness  # N/m
+    >>> bool(stiffness[0, 0] > 0)
+    True
     """
 
     def __init__(
         self, geometry: BearingGeometry, operating: OperatingPoint, options: SolverOptions | None = None
     ) -> None:
-        self.geometry = geometry
-        self.operating = operating
-        self.options = options or SolverOptions()
-        grid = Grid(geometry.length, self.options.axial_nodes, self.options.circumferential_nodes)
-        if self.options.cavitation == "jfo":
-            feed = max(operating.aft_pressure, operating.fore_pressure, *(g.pressure for g in operating.grooves))
-            if feed <= operating.cavitation_pressure:
-                raise InputError(
-                    "operation.cavitation_pressure",
-                    operating.cavitation_pressure,
-                    "Pa",
-                    f"below the highest edge or groove pressure ({feed} Pa) for the mass-conserving "
-                    "(jfo) model: without a pressure difference to feed it the film runs dry",
-                )
-        self._base_grid = grid
-        radius = geometry.radius
-        c = geometry.radial_clearance
-        #: Pressure scale p_ref = 6 eta omega (R/c)^2, Pa.
-        self.pressure_scale = 6.0 * operating.viscosity * operating.speed * (radius / c) ** 2
-        #: Flow scale omega R^2 c / 2, m^3/s.
-        self.flow_scale = 0.5 * operating.speed * radius**2 * c
-        self._d_theta = grid.d_theta
-        self._d_z = grid.dz / radius
-        self._reynolds_solver: ReynoldsSolver | None = None
-        # Integration weights per node over the bore area, m^2 (trapezoid in z, periodic in theta).
-        wz = np.full(grid.axial_nodes, grid.dz)
-        wz[[0, -1]] *= 0.5
-        self._area_weights = wz[:, None] * (geometry.radius * grid.d_theta)
-        self._last_cavitated: np.ndarray | None = None
+        self._problem = BearingProblem(geometry, operating, SolverOptions() if options is None else options)
+        self._cache: _SolverState | None = None
+
+    @classmethod
+    def from_problem(cls, problem: BearingProblem) -> JournalBearing:
+        """The bearing of ``problem``, which it keeps as it is (already checked when made)."""
+        bearing = cls.__new__(cls)
+        bearing.__setstate__({"problem": problem})
+        return bearing
+
+    # -- the problem: read-only, since the solver state is built from it ------------------
+    @property
+    def problem(self) -> BearingProblem:
+        """Geometry, operating point and solver options (pure data)."""
+        return self._problem
+
+    @property
+    def geometry(self) -> BearingGeometry:
+        """``problem.geometry``."""
+        return self._problem.geometry
+
+    @property
+    def operating(self) -> OperatingPoint:
+        """``problem.operating``."""
+        return self._problem.operating
+
+    @property
+    def options(self) -> SolverOptions:
+        """``problem.options``."""
+        return self._problem.options
+
+    @property
+    def pressure_scale(self) -> float:
+        """Pressure scale p_ref = 6 eta omega (R/c)^2, Pa."""
+        return self._problem.pressure_scale
+
+    @property
+    def flow_scale(self) -> float:
+        """Flow scale omega R^2 c / 2, m^3/s."""
+        return self._problem.flow_scale
+
+    def __repr__(self) -> str:
+        return f"JournalBearing({self._problem!r})"
+
+    # -- pickling and copying carry the problem only ------------------------------------
+    def __getstate__(self) -> dict[str, Any]:
+        return {"problem": self._problem}
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        self._problem = state["problem"]
+        self._cache = None
+
+    def _solver_state(self) -> _SolverState:
+        if self._cache is None:
+            self._cache = _SolverState(self._problem)
+        return self._cache
 
     # -- grid and fixed nodes ----------------------------------------------------------
     def _local_polar(self, position: JournalPosition) -> tuple[float, float]:
@@ -351,48 +412,31 @@ class JournalBearing:
         local = JournalPosition(ey=position.ey - float(bore_y[0]), ez=position.ez - float(bore_z[0]))
         return local.polar(self.geometry.rotation)
 
-    def _grid_for(self, position: JournalPosition) -> Grid:
+    def grid(self, position: JournalPosition) -> Grid:
+        """The grid on which the film is solved with the journal at ``position``.
+
+        Its first angle sits on the first supply groove, or with ``film_start="max_film"``
+        on the line of maximum film at ``position``; otherwise at 0 (then the grid does
+        not depend on the position).
+        """
+        base = self._solver_state().grid
         if self.operating.grooves:
             start = self.operating.grooves[0].angle
         elif self.options.film_start == "max_film":
             e, angle = self._local_polar(position)
             start = angle + math.pi if e > 0 else 0.0
         else:
-            return self._base_grid
-        return replace(self._base_grid, theta_start=float(start))
-
-    def _solver(self) -> ReynoldsSolver:
-        """The Reynolds solver of this bearing's grid and fixed-pressure nodes (built once)."""
-        if self._reynolds_solver is None:
-            grid = self._base_grid
-            nz, nt = grid.shape
-            fixed = np.zeros(grid.shape, dtype=bool)
-            value = np.zeros(grid.shape)
-            op = self.operating
-            fixed[0], value[0] = True, op.aft_pressure
-            fixed[-1], value[-1] = True, op.fore_pressure
-            if op.grooves:
-                first = op.grooves[0].angle
-                for groove in op.grooves:
-                    column = int(round(((groove.angle - first) % (2 * math.pi)) / grid.d_theta)) % nt
-                    half = 0.5 * groove.length_fraction * grid.length
-                    rows = np.abs(grid.z - 0.5 * grid.length) <= half + 1e-12 * grid.length
-                    fixed[rows, column] = True
-                    value[rows & ~np.isin(np.arange(nz), (0, nz - 1)), column] = groove.pressure
-            elif self.options.film_start == "max_film":
-                fixed[:, 0] = True
-                value[1:-1, 0] = 0.0
-            relative = (value - op.cavitation_pressure) / self.pressure_scale
-            self._reynolds_solver = ReynoldsSolver(grid.shape, self._d_theta, self._d_z, fixed, relative)
-        return self._reynolds_solver
+            return base
+        return replace(base, theta_start=float(start))
 
     # -- core evaluation -------------------------------------------------------------
     def film(self, position: JournalPosition) -> np.ndarray:
-        """Film thickness on the grid for ``position``, m (no clipping)."""
-        return film_thickness(self.geometry, self._grid_for(position), position)
+        """Film thickness on :meth:`grid` for ``position``, m, shape (nz, nt) (no clipping)."""
+        return film_thickness(self.geometry, self.grid(position), position)
 
     def _evaluate(self, position: JournalPosition, warm: bool = True) -> _Evaluation:
-        grid = self._grid_for(position)
+        cache = self._solver_state()
+        grid = self.grid(position)
         film = film_thickness(self.geometry, grid, position)
         if film.min() <= 0.0:
             raise _NegativeFilm(float(film.min()))
@@ -401,14 +445,26 @@ class JournalBearing:
         rate = None
         if position.vy or position.vz:
             rate = (2.0 / self.operating.speed) * squeeze_velocity(self.geometry, grid, position) / c
-        stencil = build_stencil(film_nd, self._d_theta, self._d_z, rate)
-        solver = self._solver()
-        start = self._last_cavitated if warm else None
+        stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate)
+        solver = cache.reynolds
+        start = cache.last_cavitated if warm else None
         solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
-        self._last_cavitated = solution.cavitated
+        cache.last_cavitated = solution.cavitated
         relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
         force = self._integrate_force(grid, relative)
         return _Evaluation(position, grid, film, stencil, solution, relative, force)
+
+    def _evaluate_inside(self, position: JournalPosition, warm: bool) -> _Evaluation:
+        """:meth:`_evaluate`, with a journal cutting the bore reported as bad input."""
+        try:
+            return self._evaluate(position, warm=warm)
+        except _NegativeFilm as exc:
+            raise InputError(
+                "position",
+                f"e=({position.ey:.4g}, {position.ez:.4g}) m",
+                "",
+                f"a journal position inside the clearance (film would be {exc.value:.3g} m)",
+            ) from None
 
     def _gauge(self, relative: np.ndarray) -> np.ndarray:
         return relative * self.pressure_scale + self.operating.cavitation_pressure
@@ -417,38 +473,45 @@ class JournalBearing:
         """Film force on the journal, N, from dimensionless pressures (a change of them when
         ``gauge`` is False, which leaves out the constant cavitation-pressure offset)."""
         pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
-        weighted = pressure * self._area_weights
+        weighted = pressure * self._solver_state().area_weights
         theta = grid.theta
         fy = -np.sum(weighted * np.cos(theta)[None, :])
         fz = -self.geometry.rotation * np.sum(weighted * np.sin(theta)[None, :])
         return np.array([fy, fz])
 
-    def _force_derivatives(self, evaluation: _Evaluation, directions: list[tuple[np.ndarray, np.ndarray | None]]):
+    def _force_derivatives(
+        self, evaluation: _Evaluation, directions: list[tuple[np.ndarray, np.ndarray | None]]
+    ) -> list[np.ndarray]:
         """Film force changes for film changes ``dH`` and film-rate changes, frozen active set.
 
         Each direction is ``(dH, dRate)`` with ``dH`` the change of H = h/c and
         ``dRate`` the change of ``(2/omega) dH/dt`` per unit of the parameter.
         """
-        solver = self._solver()
+        cache = self._solver_state()
         changes = []
         for d_film, d_rate in directions:
             dc_theta, dc_z, d_couette = stencil_derivative(
-                evaluation.film / self.geometry.radial_clearance, d_film, self._d_theta, self._d_z
+                evaluation.film / self.geometry.radial_clearance, d_film, cache.d_theta, cache.d_z
             )
             d_residual = apply_operator(dc_theta, dc_z, evaluation.relative_pressure) - d_couette
             if d_rate is not None:
-                d_residual = d_residual + self._d_theta * self._d_z * d_rate
+                d_residual = d_residual + cache.d_theta * cache.d_z * d_rate
             changes.append(d_residual)
-        d_pressure = solver.linear_response(evaluation.stencil, evaluation.solution, np.array(changes))
+        d_pressure = cache.reynolds.linear_response(evaluation.stencil, evaluation.solution, np.array(changes))
         return [self._integrate_force(evaluation.grid, dp, gauge=False) for dp in d_pressure]
 
-    def _position_jacobian(self, evaluation: _Evaluation) -> np.ndarray:
-        """d(force)/d(ey, ez), N/m, with the active set frozen (exact for the Reynolds condition)."""
+    def _offset_directions(self, evaluation: _Evaluation) -> tuple[np.ndarray, np.ndarray]:
+        """Changes of H = h/c per metre of journal offset ey and ez, shape (nz, nt)."""
         theta = evaluation.grid.theta
         c = self.geometry.radial_clearance
         shape = evaluation.film.shape
         d_ey = np.broadcast_to(-np.cos(theta) / c, shape)
         d_ez = np.broadcast_to(-self.geometry.rotation * np.sin(theta) / c, shape)
+        return d_ey, d_ez
+
+    def _position_jacobian(self, evaluation: _Evaluation) -> np.ndarray:
+        """d(force)/d(ey, ez), N/m, with the active set frozen (exact for the Reynolds condition)."""
+        d_ey, d_ez = self._offset_directions(evaluation)
         dfy, dfz = self._force_derivatives(evaluation, [(d_ey, None), (d_ez, None)])
         return np.column_stack([dfy, dfz])
 
@@ -457,23 +520,54 @@ class JournalBearing:
         """Film solution with the journal held at ``position``.
 
         ``warm_start`` starts the cavitation active set from the previous solution of this
-        bearing (a sweep over nearby positions); otherwise from the nested coarse-grid guess.
+        bearing in this process (a sweep over nearby positions); otherwise from the nested
+        coarse-grid guess. Both settle on the same active set; only ``iterations`` differs.
 
         Raises
         ------
         InputError
-            When the journal at that position would cut into the bore (h <= 0).
+            ``"position"`` when the journal at that position would cut into the bore (h <= 0).
         """
-        try:
-            evaluation = self._evaluate(position, warm=warm_start)
-        except _NegativeFilm as exc:
-            raise InputError(
-                "position",
-                f"e=({position.ey:.4g}, {position.ez:.4g}) m",
-                "",
-                f"a journal position inside the clearance (film would be {exc.value:.3g} m)",
-            ) from None
-        return self._state(evaluation)
+        return self._state(self._evaluate_inside(position, warm=warm_start))
+
+    def linearise(self, position: JournalPosition) -> FilmLinearisation:
+        """Film force at ``position`` and its derivatives by journal offset and velocity.
+
+        Solved from the coarse-grid guess (no warm start), so the result depends only on
+        the problem and ``position``; the four derivatives reuse the factorisation of the
+        converged active set (one triangular solve each). ``position`` may carry
+        velocities ``vy, vz``; the derivatives are taken about them. The stiffness and
+        damping of :func:`shaftline.film.dynamics.dynamic_coefficients` are
+        ``-offset_derivative`` and ``-velocity_derivative``.
+
+        Parameters
+        ----------
+        position : JournalPosition
+            Journal offsets (m), tilts (rad) and velocities (m/s).
+
+        Returns
+        -------
+        FilmLinearisation
+            Force (N), ``dF/dq`` (N/m) and ``dF/dv`` (N*s/m) with the cavitated set frozen.
+
+        Raises
+        ------
+        InputError
+            ``"position"`` when the journal at that position would cut into the bore (h <= 0).
+        """
+        evaluation = self._evaluate_inside(position, warm=False)
+        d_ey, d_ez = self._offset_directions(evaluation)
+        # A velocity changes the squeeze term (2/omega) dH/dt, not the film itself.
+        rate = 2.0 / self.operating.speed
+        zero = np.zeros(evaluation.film.shape)
+        directions = [(d_ey, None), (d_ez, None), (zero, rate * d_ey), (zero, rate * d_ez)]
+        dfy, dfz, dfvy, dfvz = self._force_derivatives(evaluation, directions)
+        return FilmLinearisation(
+            position=evaluation.position,
+            force=evaluation.force,
+            offset_derivative=np.column_stack([dfy, dfz]),
+            velocity_derivative=np.column_stack([dfvy, dfvz]),
+        )
 
     def min_film(self, position: JournalPosition) -> float:
         """Smallest film thickness at ``position``, m (negative when the journal cuts the bore)."""
@@ -502,15 +596,22 @@ class JournalBearing:
             Journal tilt relative to the bore in the vertical and horizontal planes, rad.
         initial : JournalPosition, optional
             Starting position (warm start from a previous equilibrium).
+
+        Raises
+        ------
+        InputError
+            Naming the parameter: ``"load_y"``, ``"load_z"``, ``"tilt_y"`` or ``"tilt_z"``
+            for a value that is not finite, ``"load_y"`` for no load at all, and the
+            larger tilt for a misalignment that does not fit in the clearance.
         """
-        load_y = require_finite("operation.load_y", load_y, "N")
-        load_z = require_finite("operation.load_z", load_z, "N")
-        require_finite("operation.tilt_y", tilt_y, "rad")
-        require_finite("operation.tilt_z", tilt_z, "rad")
+        load_y = require_finite("load_y", load_y, "N")
+        load_z = require_finite("load_z", load_z, "N")
+        require_finite("tilt_y", tilt_y, "rad")
+        require_finite("tilt_z", tilt_z, "rad")
         load = np.array([load_y, load_z])
         magnitude = float(np.hypot(*load))
         if magnitude == 0.0:
-            raise InputError("operation.load", 0.0, "N", "> 0 (a loaded bearing)")
+            raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
         c = self.geometry.radial_clearance
         floor = self.options.min_film_floor * c
         position = initial or self._initial_position(load, tilt_y, tilt_z)
@@ -518,7 +619,9 @@ class JournalBearing:
         if self.min_film(position) <= floor:
             position = self._pull_inside(position, floor)
         tolerance = self.options.tolerance * magnitude
-        self._last_cavitated = None
+        # Start the active set from the coarse grid, never from an earlier call: the
+        # equilibrium then depends only on the problem and its arguments.
+        self._solver_state().last_cavitated = None
         evaluation = self._evaluate(position)
         residual = evaluation.force + load
         contact = False
@@ -553,7 +656,9 @@ class JournalBearing:
     def _moved(self, position: JournalPosition, step: np.ndarray) -> JournalPosition:
         return replace(position, ey=position.ey + float(step[0]), ez=position.ez + float(step[1]))
 
-    def _candidate_steps(self, jacobian: np.ndarray, residual: np.ndarray, load: np.ndarray, c: float):
+    def _candidate_steps(
+        self, jacobian: np.ndarray, residual: np.ndarray, load: np.ndarray, c: float
+    ) -> Iterator[tuple[np.ndarray, float]]:
         """Newton step first; then the damped fallbacks: steepest descent of |r|^2/2 and a push
         along the load (which walks a load that is too large down to the film floor)."""
         try:
@@ -604,11 +709,14 @@ class JournalBearing:
             if self.min_film(position) > 2.0 * floor + 0.05 * self.geometry.radial_clearance:
                 return position
             position = replace(position, ey=0.8 * position.ey, ez=0.8 * position.ez)
+        # Both tilts together do not fit; name the larger, which is the one to reduce first.
+        name = "tilt_y" if abs(position.tilt_y) >= abs(position.tilt_z) else "tilt_z"
         raise InputError(
-            "operation.tilt",
-            f"({position.tilt_y:.4g}, {position.tilt_z:.4g})",
+            name,
+            getattr(position, name),
             "rad",
-            "a misalignment that fits in the clearance with the journal centred",
+            "a misalignment that fits in the clearance with the journal centred "
+            f"(tilt_y, tilt_z = {position.tilt_y:.4g}, {position.tilt_z:.4g} rad)",
         )
 
     def _initial_position(self, load: np.ndarray, tilt_y: float, tilt_z: float) -> JournalPosition:
@@ -638,7 +746,7 @@ class JournalBearing:
         film = evaluation.film
         pressure = self._gauge(evaluation.relative_pressure)
         fraction = evaluation.solution.film_fraction
-        weights = self._area_weights
+        weights = self._solver_state().area_weights
         fy, fz = (float(v) for v in evaluation.force)
         capacity = float(np.hypot(fy, fz))
         e, angle = self._local_polar(evaluation.position)
@@ -674,7 +782,7 @@ class JournalBearing:
         theta_flux = transport - stencil.c_theta * (np.roll(rel, -1, axis=1) - rel)
         edge_transport = 0.5 * np.vstack([transport[1], transport[-2]])
         circumferential = self.flow_scale * (theta_flux[1:-1].sum(axis=0) + edge_transport.sum(axis=0))
-        solver_fixed = self._solver().fixed
+        solver_fixed = self._solver_state().reynolds.fixed
         half_cells = np.roll(edge_transport, 1, axis=1) - edge_transport
         half_cells[:, solver_fixed[1] | solver_fixed[-2]] = 0.0
         aft = stencil.c_z[0] * (rel[1] - rel[0])
@@ -730,7 +838,7 @@ class JournalBearing:
         if self.operating.grooves:
             # Net outflow of the groove nodes into the film, with the Couette inflow from a
             # cavitated upstream zone carrying only its liquid share.
-            groove = self._solver().fixed.copy()
+            groove = self._solver_state().reynolds.fixed.copy()
             groove[[0, -1]] = False
             rel = evaluation.relative_pressure
             stencil = evaluation.stencil

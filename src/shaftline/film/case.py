@@ -38,8 +38,24 @@ from shaftline.cases.types import (
     field_error,
 )
 from shaftline.errors import InputError, located
-from shaftline.film.bearing import OperatingPoint, SolverOptions, SupplyGroove
-from shaftline.film.geometry import BearingGeometry, BentJournal, BoreSegment, FilmProfile
+from shaftline.film.geometry import (
+    MIN_AXIAL_NODES,
+    MIN_CIRCUMFERENTIAL_NODES,
+    BearingGeometry,
+    BentJournal,
+    BoreAnchor,
+    BoreSegment,
+    FilmProfile,
+)
+from shaftline.film.problem import (
+    BearingProblem,
+    CavitatedShear,
+    Cavitation,
+    FilmStart,
+    OperatingPoint,
+    SolverOptions,
+    SupplyGroove,
+)
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
@@ -204,17 +220,19 @@ class LubricantSection(Section):
 class SolverSection(Section):
     """Grid and models of the film solution."""
 
-    axial_nodes: Annotated[int, Field(ge=3)] = default_of(SolverOptions, "axial_nodes")
+    axial_nodes: Annotated[int, Field(ge=MIN_AXIAL_NODES)] = default_of(SolverOptions, "axial_nodes")
     """Grid nodes along the bearing, edges included."""
-    circumferential_nodes: Annotated[int, Field(ge=8)] = default_of(SolverOptions, "circumferential_nodes")
+    circumferential_nodes: Annotated[int, Field(ge=MIN_CIRCUMFERENTIAL_NODES)] = default_of(
+        SolverOptions, "circumferential_nodes"
+    )
     """Grid nodes around the bore."""
-    cavitation: Literal["reynolds", "jfo", "half_sommerfeld"] = default_of(SolverOptions, "cavitation")
+    cavitation: Cavitation = default_of(SolverOptions, "cavitation")
     """Reynolds (Swift-Stieber), jfo (mass-conserving; needs an edge or groove pressure above the cavitation
     pressure) or half_sommerfeld (comparison only)."""
-    film_start: Literal["periodic", "max_film"] = default_of(SolverOptions, "film_start")
+    film_start: FilmStart = default_of(SolverOptions, "film_start")
     """periodic (the film is continuous all round) or max_film (ambient pressure at the thickest film, as the
     classical design charts)."""
-    cavitated_shear: Literal["film_fraction", "full_film"] = default_of(SolverOptions, "cavitated_shear")
+    cavitated_shear: CavitatedShear = default_of(SolverOptions, "cavitated_shear")
     """Shear in the cavitated zone: film_fraction (liquid streamers only) or full_film (design-chart friction)."""
     min_film_floor: Annotated[float, Quantity("dimensionless", gt=0, lt=0.5)] = default_of(
         SolverOptions, "min_film_floor"
@@ -260,7 +278,7 @@ class BearingSection(Section):
     """Diametral clearance 2c."""
     rotation: Annotated[Literal["clockwise", "anticlockwise"], BeforeValidator(_rotation_alias)] = "clockwise"
     """Sense of rotation seen from aft."""
-    bore_anchor: Literal["fore", "aft", "mid"] = default_of(BearingGeometry, "bore_anchor")
+    bore_anchor: BoreAnchor = default_of(BearingGeometry, "bore_anchor")
     """Where a slope-bored bore keeps the nominal axis."""
     bore: list[BoreSegmentSection] = []
     """Slope-bored segments, aft to forward (none: a straight bore)."""
@@ -370,7 +388,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
 
     base_geometry = geometry(_bore(section.bore, length, clearance), "bore")
     lube = section.lubricant
-    with located("lubricant"):
+    with located("lubricant", {"name": "lubricant.preset", "density_15": "lubricant.density"}):
         if lube.viscosity is not None:
             lubricant = Lubricant.constant(
                 lube.viscosity, lube.density or 880.0, name=lube.name or "constant viscosity"
@@ -394,7 +412,8 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             viscosity = float(lubricant.dynamic_viscosity(lube.temperature))
             density = float(lubricant.density(lube.temperature))
     op = section.operation
-    with located("operation"):
+    # OperatingPoint carries the lubricant's viscosity and density: their errors belong there.
+    with located("operation", {"viscosity": "lubricant.viscosity", "density": "lubricant.density"}):
         operating = OperatingPoint(
             speed=op.speed,
             viscosity=viscosity,
@@ -416,7 +435,8 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             tolerance=s.tolerance,
             max_iterations=s.max_iterations,
         )
-    _check_problem(base_geometry, operating, options)
+    with located("", {"operating": "operation", "options": "solver"}):
+        BearingProblem(base_geometry, operating, options)
     tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)
     tilt_z = _tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, length, clearance)
 
@@ -446,20 +466,3 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             variant_tilt = _tilt(variant.tilt_vertical, variant.misalignment_ratio_vertical, length, clearance)
         cases.append(case(variant.name, variant_geometry, variant_tilt))
     return BearingStudy(tuple(cases))
-
-
-def _check_problem(geometry: BearingGeometry, operating: OperatingPoint, options: SolverOptions) -> None:
-    """Checks that need the whole problem (grid resolution, a fed JFO film) before any solving."""
-    from shaftline.film.geometry import Grid
-
-    with located("solver"):
-        Grid(geometry.length, options.axial_nodes, options.circumferential_nodes)
-    if options.cavitation == "jfo":
-        feed = max(operating.aft_pressure, operating.fore_pressure, *(g.pressure for g in operating.grooves))
-        if feed <= operating.cavitation_pressure:
-            raise InputError(
-                "operation.cavitation_pressure",
-                operating.cavitation_pressure,
-                "Pa",
-                f"below the highest edge or groove pressure ({feed:g} Pa) for the mass-conserving (jfo) model",
-            )

@@ -17,7 +17,7 @@ import numpy as np
 from shaftline.film.bearing import BearingState, JournalBearing
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class DynamicCoefficients:
     """Film stiffness (N/m) and damping (N*s/m) matrices, rows/columns (y, z).
 
@@ -27,6 +27,8 @@ class DynamicCoefficients:
         ``[[K_yy, K_yz], [K_zy, K_zz]]``, N/m.
     damping : ndarray (2, 2)
         ``[[C_yy, C_yz], [C_zy, C_zz]]``, N*s/m.
+
+    Equality is identity: the fields hold arrays, which have no single truth value.
     """
 
     stiffness: np.ndarray
@@ -38,23 +40,9 @@ class DynamicCoefficients:
 
 
 def dynamic_coefficients(bearing: JournalBearing, state: BearingState) -> DynamicCoefficients:
-    """Stiffness and damping of ``bearing`` about the position of ``state``."""
-    evaluation = bearing._evaluate(state.position, warm=False)
-    theta = evaluation.grid.theta
-    c = bearing.geometry.radial_clearance
-    s = bearing.geometry.rotation
-    shape = evaluation.film.shape
-    d_ey = np.broadcast_to(-np.cos(theta) / c, shape)
-    d_ez = np.broadcast_to(-s * np.sin(theta) / c, shape)
-    omega = bearing.operating.speed
-    zero = np.zeros(shape)
-    directions = [
-        (d_ey, None),
-        (d_ez, None),
-        (zero, (2.0 / omega) * d_ey),
-        (zero, (2.0 / omega) * d_ez),
-    ]
-    dfy, dfz, dfvy, dfvz = bearing._force_derivatives(evaluation, directions)
-    stiffness = -np.column_stack([dfy, dfz])
-    damping = -np.column_stack([dfvy, dfvz])
-    return DynamicCoefficients(stiffness=stiffness, damping=damping)
+    """Stiffness and damping of ``bearing`` about the position of ``state``.
+
+    The negated derivatives of :meth:`JournalBearing.linearise` at ``state.position``.
+    """
+    linearisation = bearing.linearise(state.position)
+    return DynamicCoefficients(stiffness=linearisation.stiffness, damping=linearisation.damping)

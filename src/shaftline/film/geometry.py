@@ -22,6 +22,7 @@ docs/theory.md for why the slope term is not tied to the attitude angle.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any, Literal, get_args
 
 import numpy as np
 
@@ -30,6 +31,25 @@ from shaftline.errors import InputError, require_finite, require_positive
 #: Below this many nodes the Reynolds solution is too coarse to be worth returning.
 MIN_CIRCUMFERENTIAL_NODES = 16
 MIN_AXIAL_NODES = 5
+
+#: Where a slope-bored bore centre line meets the nominal axis.
+BoreAnchor = Literal["fore", "aft", "mid"]
+#: Sense of rotation: +1 clockwise seen from aft (right-handed about +x), -1 anticlockwise.
+Rotation = Literal[1, -1]
+
+BORE_ANCHORS: tuple[BoreAnchor, ...] = get_args(BoreAnchor)
+ROTATIONS: tuple[Rotation, ...] = get_args(Rotation)
+
+
+def require_nodes(field: str, value: Any, minimum: int, allowed: str = "") -> int:
+    """Return ``value`` as int if it is a whole number >= ``minimum``, else raise :class:`InputError`."""
+    try:
+        whole = not isinstance(value, bool) and int(value) == value
+    except (TypeError, ValueError, OverflowError):
+        whole = False
+    if not whole or value < minimum:
+        raise InputError(field, value, "", allowed or f"an integer >= {minimum} to resolve the film")
+    return int(value)
 
 
 @dataclass(frozen=True)
@@ -53,7 +73,7 @@ class BoreSegment:
     slope_horizontal: float = 0.0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BentJournal:
     """Offsets of the journal centre line from a straight line, along the bearing.
 
@@ -65,6 +85,13 @@ class BentJournal:
         Vertical and horizontal offsets of the journal centre at those stations, m.
         They are interpolated linearly onto the grid (seed 004 Sect. 4.5.1) and
         held constant beyond the first and last station.
+
+    Equality is identity (the arrays have no single truth value).
+
+    Raises
+    ------
+    InputError
+        Naming the attribute: ``"z"``, ``"dy"`` or ``"dz"``.
     """
 
     z: np.ndarray
@@ -77,17 +104,17 @@ class BentJournal:
         dz = np.asarray(self.dz, dtype=float) if self.dz is not None else np.zeros_like(z)
         for name, values in (("z", z), ("dy", dy), ("dz", dz)):
             if values.ndim != 1 or values.size != z.size:
-                raise InputError(f"bearing.bent_journal.{name}", values.size, "", f"{z.size} values")
+                raise InputError(name, values.size, "", f"{z.size} values")
             if not np.all(np.isfinite(values)):
-                raise InputError(f"bearing.bent_journal.{name}", "NaN", "m", "finite numbers")
+                raise InputError(name, "NaN", "m", "finite numbers")
         if z.size < 2 or np.any(np.diff(z) <= 0.0):
-            raise InputError("bearing.bent_journal.z", z.tolist(), "m", "at least 2 increasing stations")
+            raise InputError("z", z.tolist(), "m", "at least 2 increasing stations")
         object.__setattr__(self, "z", z)
         object.__setattr__(self, "dy", dy)
         object.__setattr__(self, "dz", dz)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FilmProfile:
     """An additive film change delta(theta, z) given on its own table (wear, bore errors).
 
@@ -102,6 +129,12 @@ class FilmProfile:
 
     It is interpolated linearly, periodically in theta and held constant beyond the
     end stations in z, so it follows the grid wherever the grid's angles start.
+    Equality is identity (the arrays have no single truth value).
+
+    Raises
+    ------
+    InputError
+        Naming the attribute: ``"theta"``, ``"z"`` or ``"delta"``.
     """
 
     theta: np.ndarray
@@ -113,13 +146,13 @@ class FilmProfile:
         z = np.asarray(self.z, dtype=float)
         delta = np.asarray(self.delta, dtype=float)
         if theta.ndim != 1 or theta.size < 2 or np.any(np.diff(theta) <= 0) or theta[-1] - theta[0] >= 2 * np.pi:
-            raise InputError("bearing.film_profile.theta", theta.size, "rad", "increasing angles within one turn")
+            raise InputError("theta", theta.size, "rad", "increasing angles within one turn")
         if z.ndim != 1 or z.size < 1 or np.any(np.diff(z) <= 0):
-            raise InputError("bearing.film_profile.z", z.size, "m", "increasing stations")
+            raise InputError("z", z.size, "m", "increasing stations")
         if delta.shape != (z.size, theta.size):
-            raise InputError("bearing.film_profile.delta", str(delta.shape), "m", f"shape {(z.size, theta.size)}")
+            raise InputError("delta", str(delta.shape), "m", f"shape {(z.size, theta.size)}")
         if not np.all(np.isfinite(delta)):
-            raise InputError("bearing.film_profile.delta", "NaN", "m", "finite values")
+            raise InputError("delta", "NaN", "m", "finite values")
         object.__setattr__(self, "theta", theta)
         object.__setattr__(self, "z", z)
         object.__setattr__(self, "delta", delta)
@@ -155,7 +188,7 @@ class BearingGeometry:
         Radial clearance c, m (half the diametral clearance).
     bore : tuple of BoreSegment
         Slope-bored segments from aft to forward; empty for a straight bore.
-    bore_anchor : str
+    bore_anchor : BoreAnchor
         Where the bore centre line coincides with the nominal axis: ``"fore"``
         (default: the forward part stays on the nominal line and the aft end is
         machined lower), ``"aft"`` or ``"mid"``.
@@ -163,47 +196,52 @@ class BearingGeometry:
         Offsets of a bent journal centre line.
     film_profile : FilmProfile or None
         Additive film change delta(theta, z), e.g. wear or bore errors.
-    rotation : int
+    rotation : Rotation
         +1 for a shaft turning clockwise seen from aft, -1 for anticlockwise.
+
+    Raises
+    ------
+    InputError
+        Naming the attribute path, e.g. ``"radial_clearance"``, ``"bore[1].slope"``
+        or ``"bent_journal.z"``.
     """
 
     length: float
     diameter: float
     radial_clearance: float
     bore: tuple[BoreSegment, ...] = ()
-    bore_anchor: str = "fore"
+    bore_anchor: BoreAnchor = "fore"
     bent_journal: BentJournal | None = None
     film_profile: FilmProfile | None = field(default=None, repr=False)
-    rotation: int = 1
+    rotation: Rotation = 1
 
     def __post_init__(self) -> None:
-        require_positive("bearing.length", self.length, "m")
-        require_positive("bearing.diameter", self.diameter, "m")
-        require_positive("bearing.radial_clearance", self.radial_clearance, "m")
+        require_positive("length", self.length, "m")
+        require_positive("diameter", self.diameter, "m")
+        require_positive("radial_clearance", self.radial_clearance, "m")
         if self.radial_clearance >= 0.5 * self.diameter:
-            raise InputError(
-                "bearing.radial_clearance", self.radial_clearance, "m", f"< diameter/2 = {0.5 * self.diameter}"
-            )
-        if self.rotation not in (1, -1):
-            raise InputError("bearing.rotation", self.rotation, "", "+1 (clockwise from aft) or -1")
-        if self.bore_anchor not in ("fore", "aft", "mid"):
-            raise InputError("bearing.bore_anchor", self.bore_anchor, "", "fore, aft or mid")
+            raise InputError("radial_clearance", self.radial_clearance, "m", f"< diameter/2 = {0.5 * self.diameter}")
+        if self.rotation not in ROTATIONS:
+            raise InputError("rotation", self.rotation, "", "+1 (clockwise from aft) or -1")
+        if self.bore_anchor not in BORE_ANCHORS:
+            raise InputError("bore_anchor", self.bore_anchor, "", "one of " + ", ".join(BORE_ANCHORS))
         if self.bore:
             total = 0.0
             for k, segment in enumerate(self.bore):
-                frac = require_finite(f"bearing.bore[{k}].length_fraction", segment.length_fraction)
+                frac = require_finite(f"bore[{k}].length_fraction", segment.length_fraction)
                 if not 0.0 < frac <= 1.0:
-                    raise InputError(f"bearing.bore[{k}].length_fraction", frac, "", "in (0, 1]")
-                require_finite(f"bearing.bore[{k}].slope", segment.slope, "rad")
-                require_finite(f"bearing.bore[{k}].slope_horizontal", segment.slope_horizontal, "rad")
+                    raise InputError(f"bore[{k}].length_fraction", frac, "", "in (0, 1]")
+                require_finite(f"bore[{k}].slope", segment.slope, "rad")
+                require_finite(f"bore[{k}].slope_horizontal", segment.slope_horizontal, "rad")
                 total += frac
             if abs(total - 1.0) > 1e-6:
-                raise InputError("bearing.bore.length_fraction", round(total, 9), "", "segments summing to 1")
+                # The sum of all segments, not one of them: no index.
+                raise InputError("bore.length_fraction", round(total, 9), "", "segments summing to 1")
         if self.bent_journal is not None and (
             self.bent_journal.z[0] < -1e-9 * self.length or self.bent_journal.z[-1] > self.length * (1 + 1e-9)
         ):
             raise InputError(
-                "bearing.bent_journal.z",
+                "bent_journal.z",
                 [float(self.bent_journal.z[0]), float(self.bent_journal.z[-1])],
                 "m",
                 f"stations within the bearing, [0, {self.length}]",
@@ -243,6 +281,11 @@ class Grid:
     two edge rows carrying the end pressures; ``circumferential_nodes`` angles
     ``theta_i = theta_start + i * 2 pi / n`` (periodic). ``theta_start`` lets a
     node sit exactly on a supply groove or on the line of maximum film.
+
+    Raises
+    ------
+    InputError
+        ``"axial_nodes"`` below 5 or ``"circumferential_nodes"`` below 16.
     """
 
     length: float
@@ -251,19 +294,8 @@ class Grid:
     theta_start: float = 0.0
 
     def __post_init__(self) -> None:
-        if int(self.axial_nodes) != self.axial_nodes or self.axial_nodes < MIN_AXIAL_NODES:
-            raise InputError(
-                "solver.axial_nodes", self.axial_nodes, "", f"an integer >= {MIN_AXIAL_NODES} to resolve the film"
-            )
-        if int(self.circumferential_nodes) != self.circumferential_nodes or (
-            self.circumferential_nodes < MIN_CIRCUMFERENTIAL_NODES
-        ):
-            raise InputError(
-                "solver.circumferential_nodes",
-                self.circumferential_nodes,
-                "",
-                f"an integer >= {MIN_CIRCUMFERENTIAL_NODES} to resolve the film",
-            )
+        require_nodes("axial_nodes", self.axial_nodes, MIN_AXIAL_NODES)
+        require_nodes("circumferential_nodes", self.circumferential_nodes, MIN_CIRCUMFERENTIAL_NODES)
 
     @property
     def theta(self) -> np.ndarray:
@@ -277,10 +309,12 @@ class Grid:
 
     @property
     def d_theta(self) -> float:
+        """Angular step between nodes, rad."""
         return 2.0 * np.pi / self.circumferential_nodes
 
     @property
     def dz(self) -> float:
+        """Axial step between nodes, m."""
         return self.length / (self.axial_nodes - 1)
 
     @property

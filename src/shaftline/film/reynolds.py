@@ -36,13 +36,27 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Any
 
 import numpy as np
 import qdldl
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-CAVITATION_MODELS = ("reynolds", "jfo", "half_sommerfeld")
+from shaftline.film.problem import CAVITATION_MODELS, Cavitation
+
+__all__ = [
+    "CAVITATION_MODELS",
+    "MAX_ACTIVE_SET_ITERATIONS",
+    "ReynoldsConvergenceError",
+    "ReynoldsSolution",
+    "ReynoldsSolver",
+    "Stencil",
+    "apply_operator",
+    "build_stencil",
+    "stencil_derivative",
+    "stencil_diagonal",
+]
 
 #: Active-set iterations allowed before the solver gives up (each is one factorisation).
 MAX_ACTIVE_SET_ITERATIONS = 200
@@ -52,7 +66,7 @@ class ReynoldsConvergenceError(RuntimeError):
     """The active-set iteration did not settle (never seen on M-matrices; kept as a guard)."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class _Pattern:
     """Sparsity pattern of the 5-point periodic stencil on an (nz, nt) grid."""
 
@@ -92,7 +106,7 @@ def _pattern(nz: int, nt: int) -> _Pattern:
     )
 
 
-@dataclass
+@dataclass(eq=False)
 class Stencil:
     """Conductances and right-hand side of the discrete Reynolds equation for one film.
 
@@ -159,7 +173,7 @@ def stencil_derivative(
     return dc_theta, dc_z, np.roll(d_couette, 1, axis=1) - d_couette
 
 
-@dataclass
+@dataclass(eq=False)
 class ReynoldsSolution:
     """Dimensionless solution of the Reynolds equation on the grid.
 
@@ -183,6 +197,11 @@ class ReynoldsSolution:
 
 class ReynoldsSolver:
     """Solver for one grid shape with fixed-pressure nodes.
+
+    It keeps state between calls: the sparse LDL^T factorisation (qdldl), the
+    active set it was factorised for, and a solver on the coarser grid that
+    predicts the cavitated set. That state belongs to one process and does not
+    pickle; :class:`shaftline.film.bearing.JournalBearing` builds it lazily.
 
     Parameters
     ----------
@@ -208,7 +227,7 @@ class ReynoldsSolver:
         self._factor: qdldl.Solver | None = None
         self._factor_mask: np.ndarray | None = None
         self._factor_stencil: Stencil | None = None
-        self._coarse_cache: tuple | None = None
+        self._coarse_cache: tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple[np.ndarray, ...]] | None = None
         self.coarse_iterations = 0
 
     # -- symmetric masked system -------------------------------------------------
@@ -231,7 +250,8 @@ class ReynoldsSolver:
         values[~is_diag & ~both_free] = 0.0
         return values, diag
 
-    def _factorise(self, stencil: Stencil, held: np.ndarray) -> np.ndarray:
+    def _factorise(self, stencil: Stencil, held: np.ndarray) -> tuple[np.ndarray, Any]:
+        """Factorise the masked matrix; returns its diagonal and the (reused) qdldl solver."""
         values, diag = self._masked_values(stencil, held)
         matrix = self.pattern.upper.copy()
         matrix.data = values
@@ -241,16 +261,16 @@ class ReynoldsSolver:
             self._factor.update(matrix, upper=True)
         self._factor_mask = held.copy()
         self._factor_stencil = stencil
-        return diag
+        return diag, self._factor
 
     def _solve_masked(self, stencil: Stencil, held: np.ndarray, held_values: np.ndarray) -> np.ndarray:
         """Solve ``A P = b`` on the free nodes with ``P = held_values`` on held nodes."""
-        diag = self._factorise(stencil, held)
+        diag, factor = self._factorise(stencil, held)
         # Moving the held values to the right-hand side: b - A_{free,held} P_held.
         boundary = np.where(held, held_values, 0.0)
         rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
         rhs = np.where(held, diag.reshape(self.shape) * held_values, rhs)
-        return self._factor.solve(rhs.ravel()).reshape(self.shape)
+        return factor.solve(rhs.ravel()).reshape(self.shape)
 
     def solve_linear(self, stencil: Stencil) -> np.ndarray:
         """Full-Sommerfeld solution (no cavitation), dimensionless pressure."""
@@ -260,7 +280,7 @@ class ReynoldsSolver:
         self,
         stencil: Stencil,
         film: np.ndarray,
-        cavitation: str = "reynolds",
+        cavitation: Cavitation = "reynolds",
         initial_cavitated: np.ndarray | None = None,
     ) -> ReynoldsSolution:
         """Solve with the chosen cavitation model; ``initial_cavitated`` warm-starts the active set."""
@@ -276,7 +296,7 @@ class ReynoldsSolver:
             return self._solve_jfo(stencil, film, reynolds)
         raise ValueError(f"unknown cavitation model {cavitation!r}")
 
-    def _coarse(self) -> tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple] | None:
+    def _coarse(self) -> tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple[np.ndarray, ...]] | None:
         """Solver on a grid halved in both directions, with the maps between the grids.
 
         Returns ``(solver, z_index, z_weight, brackets)``: the fine film is restricted
@@ -418,18 +438,19 @@ class ReynoldsSolver:
         factorisation of the converged active set when it is still held.
         """
         held = self.fixed | solution.cavitated
+        factor = self._factor
         if (
-            self._factor is None
+            factor is None
             or self._factor_stencil is not stencil
             or self._factor_mask is None
             or not np.array_equal(self._factor_mask, held)
         ):
-            self._factorise(stencil, held)
+            _, factor = self._factorise(stencil, held)
         columns = np.atleast_2d(rhs_change.reshape(-1, self.shape[0] * self.shape[1]))
         out = np.empty_like(columns)
         for k, column in enumerate(columns):
             rhs = np.where(held.ravel(), 0.0, -column)
-            out[k] = self._factor.solve(rhs)
+            out[k] = factor.solve(rhs)
         return out.reshape((-1,) + self.shape)
 
 

@@ -13,13 +13,22 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from shaftline.film.bearing import OperatingPoint, SolverOptions
 from shaftline.film.geometry import BearingGeometry
+from shaftline.film.problem import OperatingPoint, SolverOptions
 
 if TYPE_CHECKING:
     from shaftline.film.bearing import Equilibrium
     from shaftline.film.dynamics import DynamicCoefficients
     from shaftline.lubricants import Lubricant
+
+
+#: Equilibrium arguments and the case-file fields they come from.
+TILT_FIELDS = {
+    "tilt_y": "operation.tilt_vertical",
+    "tilt_z": "operation.tilt_horizontal",
+    "load_y": "operation.load",
+    "load_z": "operation.load_horizontal",
+}
 
 
 @dataclass(frozen=True, eq=False)
@@ -79,11 +88,14 @@ class BearingStudyResult:
 
 def solve_case(case: BearingCase) -> BearingResult:
     """Equilibrium under the case load, then stiffness and damping there (not at contact)."""
+    from shaftline.errors import located
     from shaftline.film.bearing import JournalBearing
     from shaftline.film.dynamics import dynamic_coefficients
 
     bearing = JournalBearing(case.geometry, case.operating, case.options)
-    equilibrium = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
+    # A tilt that does not fit in the clearance is found only here; name it as the case file does.
+    with located("", TILT_FIELDS):
+        equilibrium = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
     coefficients = None
     if equilibrium.converged and not equilibrium.contact:
         coefficients = dynamic_coefficients(bearing, equilibrium.state)
