@@ -66,7 +66,13 @@ class CarrierModel:
     stribeck_velocity : float
         v_s, rad/s (0.002).
     threshold_velocity : float
-        v_th of the static law, rad/s.
+        v_th of the static law, rad/s (1e-4). The seed gives no number. Below Q_c the law
+        creeps at w = v_th |M| / Q_c <= v_th; in the design case the seed reports about
+        10 um of creep with Eq. 4.8 over the 145 deg from 390 to 535 deg (Sect. 4.6.3), which
+        at 95 rpm (Sect. 2.7, Eq. 4.35) and a 0.4 m bearing radius (v_s of Table 4.1 over
+        that of Table 4.2) needs v_th >= 10 um / (0.4 m * 0.254 s) = 1e-4 rad/s; 1e-5 rad/s
+        would creep at most 1 um. It stays well below v_s (0.002 rad/s) and the gross-sliding
+        rates (~1e-3 rad/s), so Eq. 4.8 is Coulomb friction wherever the carrier slides.
     holding_moment : float
         Mean hydraulic moment on the blade from the holding pressure, N m (Eq. 4.24; the
         seed takes it zero, which balances the mean spindle torque).
@@ -88,7 +94,7 @@ class CarrierModel:
     damping: float = 1e8
     static_ratio: float = 1.1
     stribeck_velocity: float = 0.002
-    threshold_velocity: float = 1e-5
+    threshold_velocity: float = 1e-4
     holding_moment: float = 0.0
 
     def __post_init__(self) -> None:
