@@ -193,6 +193,14 @@ def test_static_law_creeps_below_the_friction_torque():
     assert np.all(motion.hydraulic_force == 0)
 
 
+def test_unconverged_steps_are_reported():
+    """A step far too long for the bristle dynamics (20 a revolution, 20 ms against a 1 ms
+    bristle period) leaves Newton unconverged; the user is told instead of getting a silently
+    degraded motion."""
+    with pytest.warns(RuntimeWarning, match="did not converge"):
+        simulate_carrier(model(backlash=100e-6), 2, samples_per_revolution=20, steps_per_revolution=20)
+
+
 def test_friction_model_hardly_changes_the_amplitude():
     """Seed Sect. 4.6.3: LuGre and the static law give nearly the same fretting amplitude."""
     lugre = simulate_carrier(model(friction="lugre"), 6).amplitude[-1]
