@@ -51,7 +51,7 @@ def test_undefined_distribution_factor():
 def test_friction_coefficient_range():
     with pytest.raises(InputError) as error:
         BladeBearing(0.4, 1.2, 0.35, 0.3499, 0.1)
-    assert error.value.field == "cpp.bearing.friction_coefficient"
+    assert error.value.field == "friction_coefficient"
 
 
 def test_oil_spring_of_sect_4_5():
@@ -112,3 +112,24 @@ def test_hydraulic_pressures_eq_3_40_3_41():
     arm = 0.3 * np.cos(0.2)
     assert p["ahead"] == pytest.approx((4 * 6e4 / arm + 1e4) / 0.95 + 5e5)
     assert p["astern"] < p["holding"] < p["ahead"]
+
+
+def test_errors_name_the_field_relative_to_the_checker():
+    """Domain code names a field by the dataclass attribute or function parameter that holds
+    it; the case layer prefixes the section path (it knows where the value came from)."""
+    checks = [
+        (lambda: oil_spring_stiffness(-1.5e9, 0.25, 0.95), "bulk_modulus"),
+        (lambda: BladeBearing(0.4, 0.1, 0.35, 0.36, 0.1), "carrier_radius"),
+        (lambda: centrifugal_point_mass(0.0, np.zeros(3), 10.0), "mass"),
+        (
+            lambda: BladeLoads.from_harmonics(
+                np.zeros(4), np.zeros(3), np.zeros(3), {"torque_z": []}, np.zeros(3), np.zeros(3)
+            ),
+            "harmonics.torque_z",
+        ),
+        (lambda: fretting_coefficient(np.ones(3), np.array([1.0, 0.0, 1.0]), np.arange(3.0)), "friction"),
+    ]
+    for call, field in checks:
+        with pytest.raises(InputError) as error:
+            call()
+        assert error.value.field == field

@@ -88,3 +88,72 @@ def test_appendix_b_sensitivities():
     reference = presliding()
     assert presliding(stiffness=3e9) < reference < presliding(stiffness=3e8)
     assert presliding(stribeck_velocity=0.008) > reference
+
+
+def test_public_laws_keep_their_closed_forms():
+    """The public laws now run the compiled kernels; they must still be the formulas of
+    Eq. 4.13-4.15 and 4.7 written out in numpy here (float64 round-off, rel 1e-14)."""
+    rng = np.random.default_rng(7)
+    v = rng.normal(scale=2e-3, size=50)
+    z = rng.normal(scale=3e-6, size=50)
+    g = 2700.0 + 270.0 * np.exp(-((np.abs(v) / 0.0008) ** 2))
+    assert np.allclose(stribeck(v, 2700.0, 2970.0, 0.0008), g, rtol=1e-14, atol=0)
+    model = LuGre.table_4_1(2700.0)
+    assert np.allclose(model.state_rate(z, v), v - 1e9 * np.abs(v) / g * z, rtol=1e-12, atol=1e-18)
+    ramp = np.where(np.abs(v) > 1e-3, np.sign(v), v / 1e-3)
+    assert np.allclose(finite_slope(v, 2700.0, 1e-3, 2970.0, 0.0008, 5.0), ramp * g + 5.0 * v, rtol=1e-14, atol=0)
+    # scalars in, numpy scalars out; shapes follow the input
+    assert isinstance(stribeck(1e-3, 2700.0, 2970.0, 0.0008), np.floating)
+    assert model.state_rate(z.reshape(5, 10), v.reshape(5, 10)).shape == (5, 10)
+    assert model.state_rate(1e-6, v).shape == v.shape
+
+
+@pytest.mark.parametrize("velocity", [-3e-3, -1e-3, -2e-4, 1e-5, 4e-4, 8e-4, 2e-3])
+def test_kernel_derivatives_match_finite_differences(velocity):
+    """The partial derivatives the implicit integrators use (Stribeck slope, LuGre bristle rate,
+    finite-slope law) against central differences; step 1e-6 relative, so the truncation
+    error (1e-12 relative) and round-off (1e-10 relative) stay far below the 1e-6 tolerance."""
+    from shaftline.friction import kernels as k
+
+    f_c, f_s, v_s, sigma_0, v_th = 2700.0, 2970.0, 0.0008, 1e9, 1e-4
+    h = 1e-6 * abs(velocity)
+
+    def level(v):
+        return k.stribeck_level(v, f_c, f_s, v_s)
+
+    slope = k.stribeck_level_slope(velocity, f_c, f_s, v_s)
+    assert slope == pytest.approx((level(velocity + h) - level(velocity - h)) / (2 * h), rel=1e-6, abs=1e-3)
+    z = 0.7 * f_c / sigma_0
+
+    def rate(z_, v):
+        return k.lugre_state_rate(z_, v, sigma_0, level(v))
+
+    d_dz, d_dv = k.lugre_state_rate_partials(z, velocity, sigma_0, level(velocity), slope)
+    hz = 1e-6 * z
+    assert d_dz == pytest.approx((rate(z + hz, velocity) - rate(z - hz, velocity)) / (2 * hz), rel=1e-6)
+    assert d_dv == pytest.approx((rate(z, velocity + h) - rate(z, velocity - h)) / (2 * h), rel=1e-6, abs=1e-9)
+
+    def law(v):
+        return k.finite_slope_force(v, level(v), v_th)
+
+    law_slope = k.finite_slope_force_slope(velocity, level(velocity), slope, v_th)
+    assert law_slope == pytest.approx((law(velocity + h) - law(velocity - h)) / (2 * h), rel=1e-6, abs=1e-3)
+
+
+def test_importing_the_laws_is_cheap():
+    """numba and scipy load on first use, not on import (the command line starts in < 0.5 s)."""
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    import shaftline
+
+    code = (
+        "import sys, shaftline.friction, shaftline.friction.models; "
+        "print(sorted({m.split('.')[0] for m in sys.modules} & {'numba', 'scipy'}))"
+    )
+    # the same sources as this test process, whatever is installed
+    env = {**os.environ, "PYTHONPATH": str(Path(shaftline.__file__).parents[1])}
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env)
+    assert result.stdout.strip() == "[]"

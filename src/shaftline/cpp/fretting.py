@@ -14,7 +14,7 @@ import numpy as np
 from shaftline.errors import InputError
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FrettingCoefficient:
     """Fretting coefficient over a revolution.
 
@@ -55,17 +55,19 @@ def fretting_coefficient(spindle_torque: np.ndarray, friction: np.ndarray, angle
     """k_fret (Eq. 3.46) with the angular windows of gross fretting in each direction."""
     friction = np.asarray(friction, dtype=float)
     if np.any(friction <= 0):
-        raise InputError("cpp.friction_torque", float(friction.min()), "N m", "> 0 over the revolution")
+        raise InputError("friction", float(friction.min()), "N m", "> 0 over the revolution")
     k = np.asarray(spindle_torque, dtype=float) / friction
     return FrettingCoefficient(
         angle, k, _windows(angle, k > 1), _windows(angle, k < -1), float(k.max()), float(k.min())
     )
 
 
-def thrust_fretting_coefficient(spindle_torque: np.ndarray, total_thrust: float, blades: int, radius_07: float):
+def thrust_fretting_coefficient(
+    spindle_torque: np.ndarray, total_thrust: float, blades: int, radius_07: float
+) -> np.ndarray:
     """f_fret = Z M_sp / (T R_0.7) (Eq. 3.47)."""
     if total_thrust == 0:
-        raise InputError("cpp.thrust", 0.0, "N", "non-zero")
+        raise InputError("total_thrust", 0.0, "N", "non-zero")
     return blades * np.asarray(spindle_torque, dtype=float) / (total_thrust * radius_07)
 
 

@@ -19,11 +19,11 @@ def oil_spring_stiffness(
     """Stiffness of the oil column behind the yoke, N/m (Eq. 4.23): beta A / l with l = V / A
     unless ``column_length`` is given. The seed rounds l = 0.250 m^3 / 0.95 m^2 = 0.263 m to
     0.25 m, hence its 5.7e9 N/m; the exact column gives 5.4e9 N/m."""
-    require_positive("cpp.bulk_modulus", bulk_modulus, "Pa")
-    require_positive("cpp.oil_volume", oil_volume, "m^3")
-    require_positive("cpp.yoke_area", yoke_area, "m^2")
+    require_positive("bulk_modulus", bulk_modulus, "Pa")
+    require_positive("oil_volume", oil_volume, "m^3")
+    require_positive("yoke_area", yoke_area, "m^2")
     length = oil_volume / yoke_area if column_length is None else column_length
-    require_positive("cpp.column_length", length, "m")
+    require_positive("column_length", length, "m")
     return bulk_modulus * yoke_area / length
 
 
@@ -38,8 +38,8 @@ def hydraulic_pressures(
     counterbalance_pressure: float = 0.0,
 ) -> dict[str, float]:
     """Actuating pressures ahead and astern and the holding pressure, Pa (Eq. 3.40-3.41)."""
-    require_positive("cpp.eccentricity", eccentricity, "m")
-    require_positive("cpp.yoke_area", yoke_area, "m^2")
+    require_positive("eccentricity", eccentricity, "m")
+    require_positive("yoke_area", yoke_area, "m^2")
     arm = eccentricity * np.cos(pitch_angle)
     ahead = blades * (spindle_torque_mean + friction_torque_mean) / arm + other_friction
     astern = blades * (spindle_torque_mean - friction_torque_mean) / arm - other_friction

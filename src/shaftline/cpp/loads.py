@@ -18,7 +18,7 @@ from shaftline.errors import InputError, require_positive
 AXES = ("x", "y", "z")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BladeLoads:
     """Loads on one blade at the blade-bearing centre, over blade angles.
 
@@ -44,9 +44,9 @@ class BladeLoads:
         for name in ("hydro_force", "hydro_moment"):
             values = np.asarray(getattr(self, name), dtype=float)
             if values.shape != (angle.size, 3):
-                raise InputError(f"cpp.loads.{name}", str(values.shape), "", f"shape ({angle.size}, 3)")
+                raise InputError(name, str(values.shape), "", f"shape ({angle.size}, 3)")
             if not np.all(np.isfinite(values)):
-                raise InputError(f"cpp.loads.{name}", "NaN", "", "finite values")
+                raise InputError(name, "NaN", "", "finite values")
             object.__setattr__(self, name, values)
         for name in ("centrifugal_force", "centrifugal_moment"):
             values = np.asarray(getattr(self, name), dtype=float).reshape(3)
@@ -84,11 +84,11 @@ class BladeLoads:
         for key, terms in harmonics.items():
             kind, _, axis = key.partition("_")
             if kind not in ("force", "moment") or axis not in AXES:
-                raise InputError(f"cpp.harmonics.{key}", key, "", "force_x ... moment_z")
+                raise InputError(f"harmonics.{key}", key, "", "force_x ... moment_z")
             target = force if kind == "force" else moment
             for order, amplitude, phase in terms:
                 if int(order) != order or order < 1:
-                    raise InputError(f"cpp.harmonics.{key}.order", order, "", "a positive integer")
+                    raise InputError(f"harmonics.{key}.order", order, "", "a positive integer")
                 target[:, AXES.index(axis)] += amplitude * np.cos(order * angle + phase)
         return cls(angle, force, moment, centrifugal_force, centrifugal_moment)
 
@@ -97,7 +97,7 @@ def centrifugal_point_mass(mass: float, centre_of_gravity: np.ndarray, speed: fl
     """Centrifugal force and moment of a blade lumped at its centre of gravity (x, y, z), m,
     at shaft speed ``speed`` rad/s: F = m w^2 (0, y, z); the moment signs follow seed Eq. 3.9
     (M_y = -m w^2 x z, M_z = m w^2 x y). A blade design's integrals (Eq. 3.3-3.6) are better."""
-    require_positive("cpp.blade_mass", mass, "kg")
+    require_positive("mass", mass, "kg")
     x, y, z = np.asarray(centre_of_gravity, dtype=float)
     w2 = mass * speed**2
     return np.array([0.0, w2 * y, w2 * z]), np.array([0.0, -w2 * x * z, w2 * x * y])
@@ -130,19 +130,19 @@ class BladeBearing:
 
     def __post_init__(self) -> None:
         for name in ("radius", "axial_radius", "carrier_radius", "thickness", "youngs_modulus"):
-            require_positive(f"cpp.bearing.{name}", getattr(self, name))
+            require_positive(name, getattr(self, name))
         if not 0.0 < self.friction_coefficient < 1.0:
-            raise InputError("cpp.bearing.friction_coefficient", self.friction_coefficient, "", "in (0, 1)")
+            raise InputError("friction_coefficient", self.friction_coefficient, "", "in (0, 1)")
         if not self.axial_radius > self.carrier_radius:
             raise InputError(
-                "cpp.bearing.carrier_radius",
+                "carrier_radius",
                 self.carrier_radius,
                 "m",
                 f"< axial_radius ({self.axial_radius}): a clearance fit",
             )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FrictionTorque:
     """Friction torque of the blade bearing over the revolution (N m), with its parts."""
 
@@ -157,7 +157,9 @@ class FrictionTorque:
         return self.radial + self.axial
 
 
-def radial_friction_torque(force: np.ndarray, moment: np.ndarray, radius: float, mu: float):
+def radial_friction_torque(
+    force: np.ndarray, moment: np.ndarray, radius: float, mu: float
+) -> tuple[np.ndarray, np.ndarray]:
     """Q_fr,rad of the flange, Eq. 3.26-3.31, and the load distribution factor u = F r / (2 M).
 
     u >= 1: the whole ring is loaded, Q = mu r F (Eq. 3.27); u < 1: the moment lifts part of
@@ -169,7 +171,7 @@ def radial_friction_torque(force: np.ndarray, moment: np.ndarray, radius: float,
     with np.errstate(divide="ignore", invalid="ignore"):
         u = np.where(moment > 0, force * radius / (2 * moment), np.inf)
     if np.any((force == 0) & (moment == 0)):
-        raise InputError("cpp.loads", "zero force and moment", "", "a loaded blade bearing (u undefined)")
+        raise InputError("force", 0.0, "N", "non-zero where the moment is zero (a loaded bearing; u undefined)")
     full = mu * radius * force
     partial = (
         4 / np.pi * mu * moment * (np.sqrt(np.clip(1 - u**2, 0, None)) + np.minimum(u, 1) * np.arcsin(np.minimum(u, 1)))
@@ -177,7 +179,7 @@ def radial_friction_torque(force: np.ndarray, moment: np.ndarray, radius: float,
     return np.where(u >= 1, full, partial), u
 
 
-def axial_friction_torque(force: np.ndarray, bearing: BladeBearing):
+def axial_friction_torque(force: np.ndarray, bearing: BladeBearing) -> tuple[np.ndarray, np.ndarray]:
     """Q_fr,ax of the cylindrical seat, Eq. 3.36-3.37 (contact of a pin in a bore).
 
     The seed lists E in N/mm^2 and b in m; the arcsin argument is dimensionless only in
@@ -189,7 +191,7 @@ def axial_friction_torque(force: np.ndarray, bearing: BladeBearing):
     argument = 2.31 * force / (bearing.youngs_modulus * bearing.thickness * np.sqrt(1 + mu**2)) * (r1 / r2) / (r1 - r2)
     if np.any(argument > 1):
         raise InputError(
-            "cpp.bearing.thickness",
+            "bearing.thickness",
             bearing.thickness,
             "m",
             "a seat stiff enough that the contact angle stays below 90 deg (Eq. 3.37)",

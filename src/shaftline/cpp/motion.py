@@ -1,29 +1,37 @@
-"""Fretting motion of the blade carrier (seed 000 Sect. 4.6, Eq. 4.20-4.29).
+"""Fretting motion of the blade carrier (seed 000 Sect. 4.6-4.8, Eq. 4.20-4.30).
 
     (I_blade + I_water) phi'' = M_sp(t) - Q_fr - M_hyd
 
-M_sp(t) and the Coulomb friction torque Q_c(t) follow the blade's position in the
-wake (tables over a revolution, periodic). Friction is either LuGre (Eq. 4.13-4.15,
+M_sp(t) and the Coulomb friction torque Q_c(t) follow the blade's position in the wake
+(tables over a revolution, periodic, any spacing). Friction is either LuGre (Eq. 4.13-4.15,
 parameters of Table 4.2 rescaled to the Coulomb torque) or the finite-slope static law of
-Eq. 4.8. The hydraulic reaction is the oil spring behind the yoke acting through the
-pin: yoke travel r_pin (sin phi - sin phi_0) less half the backlash on either side
-(dead zone), force k_oil times that, moment force * r_pin cos phi (Eq. 4.25-4.27).
+Eq. 4.8. The hydraulic reaction is the oil spring behind the yoke acting through the pin:
+yoke travel r_pin (sin phi - sin phi_0) less half the backlash on either side (dead zone),
+force k_oil times that, moment force * r_pin cos phi (Eq. 4.25-4.27).
 
-The system is stiff (sigma_0 = 5e10 N m/rad against a blade inertia of the order of
-10^3 kg m^2): scipy's Radau with the analytic Jacobian.
+The equations of motion (right-hand side and analytic Jacobian) are written once, compiled,
+in :mod:`shaftline.cpp._carrier`; both integrators use them. The system is stiff
+(sigma_0 = 5e10 N m/rad against a blade inertia of the order of 10^3 kg m^2): the default is
+backward Euler with a fixed step, the reference scipy's Radau. numba and scipy are imported
+only when integrating, so that reading a case (which takes defaults from
+:class:`CarrierModel`) stays fast.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import warnings
+from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from shaftline.errors import InputError, require_positive
 
+if TYPE_CHECKING:
+    from shaftline.cpp._carrier import CarrierParameters
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, eq=False)
 class CarrierModel:
     """Inputs of the blade-carrier motion (SI).
 
@@ -36,7 +44,8 @@ class CarrierModel:
     speed : float
         Shaft speed, rad/s.
     angle : ndarray
-        Blade angles of the tables, rad (one revolution).
+        Blade angles of the tables, rad (one revolution): strictly increasing, spanning less
+        than 2 pi, any spacing.
     spindle_torque, coulomb_torque : ndarray
         M_sp and Q_c at those angles, N m (Q_c > 0).
     oil_stiffness : float
@@ -58,7 +67,13 @@ class CarrierModel:
     stribeck_velocity : float
         v_s, rad/s (0.002).
     threshold_velocity : float
-        v_th of the static law, rad/s.
+        v_th of the static law, rad/s (1e-4). The seed gives no number. Below Q_c the law
+        creeps at w = v_th |M| / Q_c <= v_th; in the design case the seed reports about
+        10 um of creep with Eq. 4.8 over the 145 deg from 390 to 535 deg (Sect. 4.6.3), which
+        at 95 rpm (Sect. 2.7, Eq. 4.35) and a 0.4 m bearing radius (v_s of Table 4.1 over
+        that of Table 4.2) needs v_th >= 10 um / (0.4 m * 0.254 s) = 1e-4 rad/s; 1e-5 rad/s
+        would creep at most 1 um. It stays well below v_s (0.002 rad/s) and the gross-sliding
+        rates (~1e-3 rad/s), so Eq. 4.8 is Coulomb friction wherever the carrier slides.
     holding_moment : float
         Mean hydraulic moment on the blade from the holding pressure, N m (Eq. 4.24; the
         seed takes it zero, which balances the mean spindle torque).
@@ -80,7 +95,7 @@ class CarrierModel:
     damping: float = 1e8
     static_ratio: float = 1.1
     stribeck_velocity: float = 0.002
-    threshold_velocity: float = 1e-5
+    threshold_velocity: float = 1e-4
     holding_moment: float = 0.0
 
     def __post_init__(self) -> None:
@@ -94,16 +109,35 @@ class CarrierModel:
             "stribeck_velocity",
             "threshold_velocity",
         ):
-            require_positive(f"cpp.motion.{name}", getattr(self, name))
-        if self.backlash < 0 or self.water_inertia < 0 or self.damping < 0:
-            raise InputError("cpp.motion.backlash", self.backlash, "m", ">= 0 (and inertia, damping >= 0)")
+            require_positive(name, getattr(self, name))
+        for name, unit in (("water_inertia", "kg m^2"), ("backlash", "m"), ("damping", "N m s/rad")):
+            if not getattr(self, name) >= 0:
+                raise InputError(name, getattr(self, name), unit, ">= 0")
+        if not self.static_ratio >= 1:
+            raise InputError("static_ratio", self.static_ratio, "", ">= 1 (F_s >= F_c)")
+        for name in ("pitch_angle", "holding_moment"):
+            if not np.isfinite(getattr(self, name)):
+                raise InputError(name, getattr(self, name), "", "a finite number")
         if self.friction not in ("lugre", "static"):
-            raise InputError("cpp.motion.friction", self.friction, "", "lugre or static")
-        if np.any(np.asarray(self.coulomb_torque) <= 0):
-            raise InputError("cpp.motion.coulomb_torque", float(np.min(self.coulomb_torque)), "N m", "> 0")
+            raise InputError("friction", self.friction, "", "lugre or static")
+        angle = np.asarray(self.angle, dtype=float)
+        if angle.ndim != 1 or angle.size < 2 or not np.all(np.isfinite(angle)):
+            raise InputError("angle", str(angle.shape), "rad", "at least two finite blade angles")
+        if not (np.all(np.diff(angle) > 0) and angle[-1] - angle[0] < 2 * np.pi):
+            raise InputError("angle", "not increasing", "rad", "strictly increasing, spanning less than 2 pi")
+        object.__setattr__(self, "angle", angle)
+        for name in ("spindle_torque", "coulomb_torque"):
+            values = np.asarray(getattr(self, name), dtype=float)
+            if values.shape != angle.shape:
+                raise InputError(name, str(values.shape), "", f"one value per angle, shape {angle.shape}")
+            if not np.all(np.isfinite(values)):
+                raise InputError(name, "NaN", "N m", "finite values")
+            object.__setattr__(self, name, values)
+        if np.any(self.coulomb_torque <= 0):
+            raise InputError("coulomb_torque", float(np.min(self.coulomb_torque)), "N m", "> 0")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class CarrierMotion:
     """Motion over the simulated revolutions.
 
@@ -139,140 +173,121 @@ def simulate_carrier(
     steps_per_revolution: int = 7200,
     method: str = "compiled",
 ) -> CarrierMotion:
-    """Integrate the carrier motion over ``revolutions`` shaft turns.
+    """Integrate the carrier motion from rest over ``revolutions`` shaft turns.
 
-    ``method="compiled"`` (default): backward Euler with ``steps_per_revolution`` fixed steps in
-    a numba kernel; ``"radau"``: scipy's adaptive Radau IIA (reference, slow).
+    Parameters
+    ----------
+    model : CarrierModel
+    revolutions : int
+        Shaft revolutions, >= 1.
+    samples_per_revolution : int
+        Output samples per revolution (the amplitude and sliding are taken from them).
+    steps_per_revolution : int
+        Fixed backward-Euler steps per revolution (``"compiled"`` only), a multiple of
+        ``samples_per_revolution``. Backward Euler is first order: halving the step halves the
+        error; 7200 steps are within a few per cent of Radau (tests/test_cpp_motion.py).
+    method : str
+        ``"compiled"`` (default): backward Euler with a Newton solve per step, compiled;
+        ``"radau"``: scipy's adaptive Radau IIA at rtol 1e-6 (reference, slower). Both integrate
+        the same compiled equations of motion.
     """
-    if method == "compiled":
-        return _simulate_compiled(model, revolutions, samples_per_revolution, steps_per_revolution)
-    if method != "radau":
-        raise InputError("cpp.motion.method", method, "", "compiled or radau")
-    if int(revolutions) != revolutions or revolutions < 1:
-        raise InputError("cpp.motion.revolutions", revolutions, "", "a positive integer")
+    if method not in ("compiled", "radau"):
+        raise InputError("method", method, "", "compiled or radau")
+    for name, value in (
+        ("revolutions", revolutions),
+        ("samples_per_revolution", samples_per_revolution),
+        ("steps_per_revolution", steps_per_revolution),
+    ):
+        if isinstance(value, bool) or int(value) != value or value < 1:
+            raise InputError(name, value, "", "a positive integer")
+    revolutions, samples = int(revolutions), int(samples_per_revolution)
+    if method == "radau":
+        return _simulate_radau(model, revolutions, samples)
+    steps = int(steps_per_revolution)
+    if steps % samples:
+        raise InputError("steps_per_revolution", steps, "", f"a multiple of {samples} samples")
+    return _simulate_compiled(model, revolutions, samples, steps)
+
+
+def _parameters(model: CarrierModel) -> CarrierParameters:
+    from shaftline.cpp._carrier import CarrierParameters, close_table
+
+    angle, spindle, coulomb = close_table(model.angle, model.spindle_torque, model.coulomb_torque)
+    return CarrierParameters(
+        angle,
+        spindle,
+        coulomb,
+        float(model.speed),
+        float(model.inertia + model.water_inertia),
+        float(model.oil_stiffness),
+        float(model.pin_radius),
+        float(model.pitch_angle),
+        0.5 * float(model.backlash),
+        float(model.holding_moment),
+        model.friction == "lugre",
+        float(model.stiffness),
+        float(model.damping),
+        float(model.static_ratio),
+        float(model.stribeck_velocity),
+        float(model.threshold_velocity),
+    )
+
+
+def _simulate_compiled(model: CarrierModel, revolutions: int, samples: int, steps: int) -> CarrierMotion:
+    from shaftline.cpp._carrier import backward_euler
+
     period = 2 * np.pi / model.speed
-    table_angle = np.concatenate([model.angle, [model.angle[0] + 2 * np.pi]])
-    table_sp = np.concatenate([model.spindle_torque, model.spindle_torque[:1]])
-    table_qc = np.concatenate([model.coulomb_torque, model.coulomb_torque[:1]])
-    total_inertia = model.inertia + model.water_inertia
-    half_play = 0.5 * model.backlash
-    r_pin = model.pin_radius
-    sin0 = np.sin(model.pitch_angle)
-
-    def tables(t):
-        psi = (model.speed * t - model.angle[0]) % (2 * np.pi) + model.angle[0]
-        return np.interp(psi, table_angle, table_sp) - model.holding_moment, np.interp(psi, table_angle, table_qc)
-
-    def spring(phi):
-        travel = r_pin * (np.sin(model.pitch_angle + phi) - sin0)
-        engaged = np.sign(travel) * max(abs(travel) - half_play, 0.0)
-        force = model.oil_stiffness * engaged
-        stiffness = model.oil_stiffness * r_pin * np.cos(model.pitch_angle + phi) if abs(travel) > half_play else 0.0
-        return (
-            force,
-            force * r_pin * np.cos(model.pitch_angle + phi),
-            stiffness * r_pin * np.cos(model.pitch_angle + phi),
+    step = period / steps
+    every = steps // samples
+    phi, w, force, unconverged = backward_euler(_parameters(model), step, revolutions * steps, every)
+    if unconverged:
+        # none in the tested cases; say so rather than return a silently degraded motion
+        warnings.warn(
+            f"carrier motion: Newton did not converge in {unconverged} of {revolutions * steps} steps "
+            "(accepted as they are); a larger steps_per_revolution or method='radau' is safer",
+            RuntimeWarning,
+            stacklevel=3,
         )
+    time = np.arange(phi.size) * step * every
+    return _motion(model, time, phi, w, force, revolutions, samples)
 
-    if model.friction == "lugre":
-        s0, s1 = model.stiffness, model.damping
 
-        def rhs(t, y):
-            phi, w, z = y
-            m_sp, q_c = tables(t)
-            g = q_c * (1 + (model.static_ratio - 1) * np.exp(-((w / model.stribeck_velocity) ** 2)))
-            z_rate = w - s0 * abs(w) / g * z
-            _, m_hyd, _ = spring(phi)
-            return [w, (m_sp - s0 * z - s1 * z_rate - m_hyd) / total_inertia, z_rate]
+def _simulate_radau(model: CarrierModel, revolutions: int, samples: int) -> CarrierMotion:
+    from scipy.integrate import solve_ivp
 
-        def jacobian(t, y):
-            phi, w, z = y
-            _, q_c = tables(t)
-            g = q_c * (1 + (model.static_ratio - 1) * np.exp(-((w / model.stribeck_velocity) ** 2)))
-            dz_dz = -s0 * abs(w) / g
-            dz_dw = 1 - s0 * np.sign(w) / g * z  # the Stribeck slope of g is left out (small)
-            _, _, k_hyd = spring(phi)
-            return np.array(
-                [
-                    [0.0, 1.0, 0.0],
-                    [-k_hyd / total_inertia, -s1 * dz_dw / total_inertia, -(s0 + s1 * dz_dz) / total_inertia],
-                    [0.0, dz_dw, dz_dz],
-                ]
-            )
+    from shaftline.cpp._carrier import jacobian, rhs, spring_force
 
-        start = [0.0, 0.0, 0.0]
-    else:
-        v_th = model.threshold_velocity
-
-        def rhs(t, y):
-            phi, w = y
-            m_sp, q_c = tables(t)
-            q_fr = q_c * (np.sign(w) if abs(w) >= v_th else w / v_th)
-            _, m_hyd, _ = spring(phi)
-            return [w, (m_sp - q_fr - m_hyd) / total_inertia]
-
-        def jacobian(t, y):
-            phi, w = y
-            _, q_c = tables(t)
-            slope = q_c / v_th if abs(y[1]) < v_th else 0.0
-            _, _, k_hyd = spring(phi)
-            return np.array([[0.0, 1.0], [-k_hyd / total_inertia, -slope / total_inertia]])
-
-        start = [0.0, 0.0]
-    t_eval = np.linspace(0.0, revolutions * period, revolutions * samples_per_revolution + 1)
+    params = _parameters(model)
+    lugre = model.friction == "lugre"
+    period = 2 * np.pi / model.speed
+    t_eval = np.linspace(0.0, revolutions * period, revolutions * samples + 1)
     solution = solve_ivp(
-        rhs,
+        lambda t, y: rhs(t, y, params),
         (0.0, t_eval[-1]),
-        start,
+        np.zeros(3 if lugre else 2),
         method="Radau",
-        jac=jacobian,
+        jac=lambda t, y: jacobian(t, y, params),
         t_eval=t_eval,
         rtol=1e-6,
-        atol=[1e-10, 1e-8] + ([1e-12] if model.friction == "lugre" else []),
+        atol=[1e-10, 1e-8] + ([1e-12] if lugre else []),
         max_step=period / 90,
     )
     if solution.status != 0:  # pragma: no cover - Radau reports failure for pathological input
         raise RuntimeError(f"carrier motion integration failed: {solution.message}")
-    phi, w = solution.y[0], solution.y[1]
-    force = np.array([spring(p)[0] for p in phi])
-    return _motion(model, solution.t, phi, w, force, revolutions, samples_per_revolution)
+    phi = np.ascontiguousarray(solution.y[0])
+    force = spring_force(phi, params)
+    return _motion(model, solution.t, phi, solution.y[1], force, revolutions, samples)
 
 
-def _simulate_compiled(model: CarrierModel, revolutions: int, samples: int, steps: int) -> CarrierMotion:
-    from shaftline.cpp._kernel import integrate
-
-    if int(revolutions) != revolutions or revolutions < 1:
-        raise InputError("cpp.motion.revolutions", revolutions, "", "a positive integer")
-    if steps % samples:
-        raise InputError("cpp.motion.steps_per_revolution", steps, "", f"a multiple of {samples} samples")
-    period = 2 * np.pi / model.speed
-    step = period / steps
-    phi, w, force = integrate(
-        np.asarray(model.angle, float),
-        np.asarray(model.spindle_torque, float),
-        np.asarray(model.coulomb_torque, float),
-        model.speed,
-        model.inertia + model.water_inertia,
-        model.oil_stiffness,
-        model.pin_radius,
-        model.pitch_angle,
-        0.5 * model.backlash,
-        model.friction == "lugre",
-        model.stiffness,
-        model.damping,
-        model.static_ratio,
-        model.stribeck_velocity,
-        model.threshold_velocity,
-        step,
-        revolutions * steps,
-        steps // samples,
-        model.holding_moment,
-    )
-    time = np.arange(phi.size) * step * (steps // samples)
-    return _motion(model, time, phi, w, force, revolutions, samples)
-
-
-def _motion(model, time, phi, w, force, revolutions, per) -> CarrierMotion:
+def _motion(
+    model: CarrierModel,
+    time: np.ndarray,
+    phi: np.ndarray,
+    w: np.ndarray,
+    force: np.ndarray,
+    revolutions: int,
+    per: int,
+) -> CarrierMotion:
     amplitude, sliding, fluctuation = [], [], []
     for k in range(revolutions):
         part = slice(k * per, (k + 1) * per + 1)
@@ -297,18 +312,31 @@ def _motion(model, time, phi, w, force, revolutions, per) -> CarrierMotion:
 STUDY_PARAMETERS = ("holding_moment", "spindle_scale", "backlash", "friction", "oil_stiffness", "water_inertia")
 
 
-def parameter_study(model: CarrierModel, parameter: str, values: list, revolutions: int = 10) -> list[CarrierMotion]:
-    """Fretting motion for each value of one parameter (seed Sect. 4.7)."""
-    from dataclasses import replace
+def parameter_study(
+    model: CarrierModel, parameter: str, values: list[Any], revolutions: int = 10
+) -> list[CarrierMotion]:
+    """Fretting motion for each value of one parameter (seed Sect. 4.7).
 
+    Parameters
+    ----------
+    model : CarrierModel
+        The base case.
+    parameter : str
+        One of :data:`STUDY_PARAMETERS`.
+    values : list
+        Values of the parameter, in the unit of the model field (SI; a factor for
+        ``"spindle_scale"``, ``"lugre"``/``"static"`` for ``"friction"``).
+    revolutions : int
+        Revolutions simulated for each value.
+    """
     if parameter not in STUDY_PARAMETERS:
-        raise InputError("cpp.study.parameter", parameter, "", "one of " + ", ".join(STUDY_PARAMETERS))
+        raise InputError("parameter", parameter, "", "one of " + ", ".join(STUDY_PARAMETERS))
     if not values:
-        raise InputError("cpp.study.values", "[]", "", "at least one value")
+        raise InputError("values", "[]", "", "at least one value")
     results = []
     for value in values:
         if parameter == "spindle_scale":
-            changed = replace(model, spindle_torque=float(value) * np.asarray(model.spindle_torque))
+            changed = replace(model, spindle_torque=float(value) * model.spindle_torque)
         else:
             changed = replace(model, **{parameter: value})
         results.append(simulate_carrier(changed, revolutions))
