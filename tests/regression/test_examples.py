@@ -7,9 +7,14 @@ maps the old layout onto the new one and then compares every number.
 
 Tolerance: relative 1e-7, or 1e-9 of the largest magnitude in the same list for entries
 near zero. The film and wear numerics are unchanged and agree to the last digit; the
-tolerance leaves room for the alignment's contact QP and the carrier integrator's Newton
-loop, whose converged results may differ in the last digits if their linear algebra is
-reorganised — far below any engineering meaning (1e-7 of a reaction of 1 MN is 0.1 N).
+tolerance leaves room for the alignment's contact QP, whose converged results may differ
+in the last digits if its linear algebra is reorganised — far below any engineering
+meaning (1e-7 of a reaction of 1 MN is 0.1 N). The blade-carrier motion is held to 1e-6:
+the old compiled kernel's Jacobian left out the Stribeck slope, and its Newton loop
+accepted thousands of unconverged backward-Euler steps in the example (Newton tolerance
+1e-9); the one model of both integrators converges them, which moves the fretting
+amplitude by 1.2e-7 and the study by up to 2.7e-7 relative. With the Newton tolerance
+tightened to 1e-14 the old and the new code give the new numbers to 1e-13.
 """
 
 from __future__ import annotations
@@ -28,6 +33,7 @@ from tests.conftest import invoke
 HERE = Path(__file__).parent
 EXAMPLES = HERE.parents[1] / "examples"
 RTOL = 1e-7
+RTOL_CARRIER = 1e-6
 ATOL_SHARE = 1e-9
 
 
@@ -49,13 +55,15 @@ def new_layout(old: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
-def compare(actual: Any, expected: Any, path: str = "", scale: float = 0.0) -> list[str]:
+def compare(actual: Any, expected: Any, path: str = "", scale: float = 0.0, rtol: float = RTOL) -> list[str]:
     """Differences between two JSON values beyond the tolerance, as readable lines."""
     if isinstance(expected, dict):
         if not isinstance(actual, dict) or set(actual) != set(expected):
             return [f"{path}: keys {sorted(actual) if isinstance(actual, dict) else actual} != {sorted(expected)}"]
         return [
-            line for key in expected for line in compare(actual[key], expected[key], f"{path}.{key}" if path else key)
+            line
+            for key in expected
+            for line in compare(actual[key], expected[key], f"{path}.{key}" if path else key, rtol=rtol)
         ]
     if isinstance(expected, list):
         if not isinstance(actual, list) or len(actual) != len(expected):
@@ -65,11 +73,11 @@ def compare(actual: Any, expected: Any, path: str = "", scale: float = 0.0) -> l
         return [
             line
             for k, (a, e) in enumerate(zip(actual, expected, strict=True))
-            for line in compare(a, e, f"{path}[{k}]", scale)
+            for line in compare(a, e, f"{path}[{k}]", scale, rtol)
         ]
     if isinstance(expected, bool) or expected is None or isinstance(expected, str):
         return [] if actual == expected else [f"{path}: {actual!r} != {expected!r}"]
-    close = math.isclose(actual, expected, rel_tol=RTOL, abs_tol=ATOL_SHARE * scale)
+    close = math.isclose(actual, expected, rel_tol=rtol, abs_tol=ATOL_SHARE * scale)
     return [] if close else [f"{path}: {actual!r} != {expected!r}"]
 
 
@@ -95,7 +103,7 @@ def test_run_matches_baseline(name):
     expected = new_layout(baseline(name))
     actual = json.loads(dumps(results_document(result)))
     actual["shaftline_version"] = expected["shaftline_version"]
-    assert compare(actual, expected) == []
+    assert compare(actual, expected, rtol=RTOL_CARRIER if name == "cpp_blade_bearing" else RTOL) == []
 
 
 @pytest.mark.parametrize(
