@@ -13,7 +13,8 @@ whose optimality conditions are the contact conditions (gap >= 0, reaction >= 0,
 gap * reaction = 0); the multipliers of the two equilibrium equations are the
 rigid-body line (a + b x) added to the pinned deflection. ``C`` holds the
 support compliances (bearing and foundation). The primal active-set method
-(Nocedal & Wright 2006, Alg. 16.3) solves it exactly in a finite number of steps.
+(Nocedal & Wright 2006, Alg. 16.3, :mod:`shaftline.shaft.contact_qp`) solves it exactly
+in a finite number of steps.
 """
 
 from __future__ import annotations
@@ -22,9 +23,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import linprog
 
 from shaftline.errors import InputError
+from shaftline.shaft.contact_qp import ContactQP, active_set_qp
 from shaftline.shaft.fem import Mesh, PinnedBeam, build_mesh, uniform_load_vector
 from shaftline.shaft.model import Condition, ShaftLine
 
@@ -54,6 +55,23 @@ class SupportPoints:
     clearance: np.ndarray
     one_sided: np.ndarray
     node: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class _ContactSetup:
+    """The fixed parts of one plane's contact QP (see the module docstring).
+
+    ``columns`` maps the QP variables (bottom contacts, then top contacts ``top``) to
+    support-point reactions; ``gap_offset`` is the clearance of each column (0 at the bottom).
+    """
+
+    top: np.ndarray
+    columns: np.ndarray
+    gap_offset: np.ndarray
+    hessian: np.ndarray
+    equality: np.ndarray
+    bounded: np.ndarray
+    qp: ContactQP
 
 
 @dataclass(frozen=True)
@@ -169,8 +187,10 @@ class AlignmentModel:
     181.4
     """
 
-    def __init__(self, line: ShaftLine) -> None:
+    def __init__(self, line: ShaftLine, reference_qp: bool = False) -> None:
         self.line = line
+        self.reference_qp = reference_qp
+        self._setups: dict[bool, _ContactSetup] = {}
         diameters = [line.outer_diameter_at(b.x) for b in line.bearings]
         per_bearing = [b.support_points(d) for b, d in zip(line.bearings, diameters, strict=True)]
         stations = [np.concatenate(per_bearing)]
@@ -338,13 +358,12 @@ class AlignmentModel:
         u[1::2] += rigid[1]
         return u
 
-    def _contact(self, forces: np.ndarray, offsets: np.ndarray, vertical: bool):
-        """Support reactions (per point), rigid line (a, b), iterations and contact states."""
+    def _contact_setup(self, vertical: bool) -> _ContactSetup:
+        """The parts of the contact QP that depend on the line only, built once per plane."""
+        if vertical in self._setups:
+            return self._setups[vertical]
         supports = self.supports
         m = supports.x.size
-        u0 = self.beam.solve(forces)[2 * supports.node]
-        total_force = float(forces[0::2].sum())
-        total_moment = float((forces[0::2] * self.mesh.x).sum() + forces[1::2].sum())
         if vertical:
             top = np.flatnonzero(supports.one_sided & np.isfinite(supports.clearance))
             columns = np.concatenate([np.eye(m), -np.eye(m)[:, top]], axis=1)
@@ -352,22 +371,44 @@ class AlignmentModel:
             compliance = np.concatenate([supports.compliance, supports.compliance[top]])
             bounded = np.concatenate([supports.one_sided, np.ones(top.size, bool)])
         else:  # horizontal: two-sided supports, the clearance is not modelled
+            top = np.zeros(0, dtype=int)
             columns = np.eye(m)
             gap_offset = np.zeros(m)
             compliance = supports.compliance.copy()
             bounded = np.zeros(m, bool)
         hessian = columns.T @ self.flexibility @ columns + np.diag(compliance)
-        linear = columns.T @ (u0 - offsets) + gap_offset
         equality = np.vstack([columns.sum(axis=0), supports.x @ columns])
+        setup = _ContactSetup(
+            top, columns, gap_offset, hessian, equality, bounded, ContactQP(hessian, equality, bounded)
+        )
+        self._setups[vertical] = setup
+        return setup
+
+    def _contact(
+        self, forces: np.ndarray, offsets: np.ndarray, vertical: bool
+    ) -> tuple[np.ndarray, np.ndarray, int, np.ndarray]:
+        """Support reactions (per point), rigid line (a, b), iterations and contact states."""
+        supports = self.supports
+        m = supports.x.size
+        u0 = self.beam.solve(forces)[2 * supports.node]
+        total_force = float(forces[0::2].sum())
+        total_moment = float((forces[0::2] * self.mesh.x).sum() + forces[1::2].sum())
+        setup = self._contact_setup(vertical)
+        linear = setup.columns.T @ (u0 - offsets) + setup.gap_offset
         target = np.array([-total_force, -total_moment])
-        solution, multipliers, iterations = active_set_qp(hessian, linear, equality, target, bounded)
-        reactions = columns @ solution
+        if self.reference_qp:
+            solution, multipliers, iterations = active_set_qp(
+                setup.hessian, linear, setup.equality, target, setup.bounded
+            )
+        else:
+            solution, multipliers, iterations = setup.qp.solve(linear, target)
+        reactions = setup.columns @ solution
         state = np.full(m, "bottom", dtype=object)
         if vertical:
             lifted = supports.one_sided & (solution[:m] <= 0.0)
             state[lifted] = "lifted"
-            if top.size:
-                state[top[solution[m:] > 0.0]] = "top"
+            if setup.top.size:
+                state[setup.top[solution[m:] > 0.0]] = "top"
         return reactions, multipliers, iterations, state
 
     # -- influence coefficients ---------------------------------------------------------
@@ -387,11 +428,6 @@ class AlignmentModel:
         return InfluenceMatrix(names=[b.name for b in self.line.bearings], matrix=0.5 * (matrix + matrix.T))
 
 
-def _top_columns(equality: np.ndarray) -> np.ndarray:
-    """Columns that push the shaft down (top-of-bore contacts): negative in the force row."""
-    return equality[0] < 0
-
-
 def _node_average(ends: np.ndarray, nodes: int) -> np.ndarray:
     out = np.zeros(nodes)
     count = np.zeros(nodes)
@@ -400,84 +436,3 @@ def _node_average(ends: np.ndarray, nodes: int) -> np.ndarray:
     np.add.at(out, np.arange(1, nodes), ends[:, 1])
     np.add.at(count, np.arange(1, nodes), 1)
     return out / count
-
-
-def active_set_qp(
-    hessian: np.ndarray, linear: np.ndarray, equality: np.ndarray, target: np.ndarray, bounded: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, int]:
-    """Solve min 1/2 x'Hx + c'x s.t. E x = t, x_i >= 0 for bounded i (H positive semi-definite).
-
-    Primal active-set method (Nocedal & Wright 2006, Alg. 16.3) from a feasible point found
-    by linear programming. Each step either adds the blocking bound or drops the bound with
-    the most negative multiplier; with the objective strictly decreasing between working
-    sets no working set repeats, so the iteration ends in finitely many steps.
-
-    Returns
-    -------
-    x, equality multipliers (E'mu enters the stationarity as + E'mu), iterations.
-    """
-    n = linear.size
-    scale = max(float(np.abs(np.diag(hessian)).max()), 1e-300)
-    hessian = hessian + 1e-12 * scale * np.eye(n)
-    rows = equality.shape[0]
-    # Usual case first: every bottom contact closed, every top contact open. If that
-    # equality-constrained solution has no negative reaction and no penetration it is optimal.
-    guess = ~bounded | (np.arange(n) < n - np.count_nonzero(_top_columns(equality)))
-    kkt = np.block(
-        [[hessian[np.ix_(guess, guess)], equality[:, guess].T], [equality[:, guess], np.zeros((rows, rows))]]
-    )
-    try:
-        solved = np.linalg.solve(kkt, np.concatenate([-linear[guess], target]))
-    except np.linalg.LinAlgError:
-        solved = None
-    if solved is not None:
-        x = np.zeros(n)
-        x[guess] = solved[: guess.sum()]
-        mu = solved[guess.sum() :]
-        gaps = hessian @ x + linear + equality.T @ mu
-        if np.all(x[bounded] >= 0.0) and np.all(gaps[~guess] >= -1e-12):
-            return x, mu, 1
-    bounds = [(0.0, None) if b else (None, None) for b in bounded]
-    start = linprog(np.zeros(n), A_eq=equality, b_eq=target, bounds=bounds, method="highs")
-    if start.status != 0:
-        raise InputError("bearings", "supports", "", "supports that can carry the loads (the line tips over)")
-    x = np.where(bounded, np.maximum(start.x, 0.0), start.x)
-    working = bounded & (x <= 1e-12 * max(1.0, float(np.abs(x).max())))
-    x[working] = 0.0
-    force_scale = max(1.0, float(np.abs(target).max()))
-    # Multipliers of the bounds are gaps (m): a penetration below 1e-12 m is round-off.
-    gap_tolerance = 1e-12
-    for iteration in range(1, 20 * n + 50):
-        free = ~working
-        g = hessian @ x + linear
-        kkt = np.block(
-            [
-                [hessian[np.ix_(free, free)], equality[:, free].T],
-                [equality[:, free], np.zeros((equality.shape[0],) * 2)],
-            ]
-        )
-        rhs = np.concatenate([-g[free], np.zeros(equality.shape[0])])
-        step_and_mu = np.linalg.lstsq(kkt, rhs, rcond=None)[0]
-        step = np.zeros(n)
-        step[free] = step_and_mu[: free.sum()]
-        mu = step_and_mu[free.sum() :]
-        if np.abs(step).max() <= 1e-11 * force_scale:
-            multipliers_bound = g + equality.T @ mu
-            candidates = np.flatnonzero(working & (multipliers_bound < -gap_tolerance))
-            if candidates.size == 0:
-                return x, mu, iteration
-            drop = candidates[np.argmin(multipliers_bound[candidates])]
-            working[drop] = False
-            continue
-        blocking = free & bounded & (step < 0)
-        alpha, block = 1.0, -1
-        if blocking.any():
-            ratios = -x[blocking] / step[blocking]
-            k = int(np.argmin(ratios))
-            if ratios[k] < 1.0:
-                alpha, block = float(ratios[k]), int(np.flatnonzero(blocking)[k])
-        x = x + alpha * step
-        if block >= 0:
-            x[block] = 0.0
-            working[block] = True
-    raise RuntimeError("alignment contact iteration did not terminate")  # pragma: no cover
