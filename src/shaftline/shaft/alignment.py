@@ -95,6 +95,9 @@ class BearingResult:
         Shaft slope across the bearing less the bearing's own slope (slope boring).
     point_reactions : ndarray
         Reactions of the individual support points, N.
+    point_contact : ndarray of str
+        Contact state of the individual support points: ``"bottom"``, ``"top"`` or
+        ``"lifted"`` (``"bottom"`` for every point of a two-sided solution).
     """
 
     name: str
@@ -106,6 +109,7 @@ class BearingResult:
     shaft_slope_at_support: float
     relative_slope: float
     point_reactions: np.ndarray
+    point_contact: np.ndarray
 
 
 @dataclass(frozen=True)
@@ -165,11 +169,15 @@ class InfluenceMatrix:
     ----------
     names : list of str
     matrix : ndarray (b, b)
-        ``matrix[i, j]`` = d reaction_i / d offset_j, N/m, all supports in contact.
+        ``matrix[i, j]`` = d reaction_i / d offset_j, N/m, for the contact set it was made
+        for (by default all supports in contact).
+    deflection : ndarray (n, b)
+        ``deflection[k, j]`` = d deflection_y at node k / d offset_j, m/m, same contact set.
     """
 
     names: list[str]
     matrix: np.ndarray
+    deflection: np.ndarray
 
 
 class AlignmentModel:
@@ -332,6 +340,7 @@ class AlignmentModel:
                     shaft_slope_at_support=float(rot_y[node]),
                     relative_slope=float(slope - bearing.slope),
                     point_reactions=reactions_y[pick],
+                    point_contact=state[pick],
                 )
             )
         return ConditionResult(
@@ -412,20 +421,53 @@ class AlignmentModel:
         return reactions, multipliers, iterations, state
 
     # -- influence coefficients ---------------------------------------------------------
-    def influence_matrix(self) -> InfluenceMatrix:
-        """d reaction_i / d offset_j for the bearings, all support points in contact (linear model)."""
+    def influence_matrix(self, contact: ConditionResult | None = None) -> InfluenceMatrix:
+        """d reaction_i / d offset_j and d deflection / d offset_j of the bearings (vertical plane).
+
+        Parameters
+        ----------
+        contact : ConditionResult or None
+            Linearise at the contact set of this solution (of this model): lifted support
+            points stay lifted, points at the top of their bore stay there. None (default):
+            every support point in bottom contact, the two-sided linear model.
+
+        Notes
+        -----
+        For a fixed contact set the reactions and the rigid line solve the KKT system of the
+        contact QP restricted to the closed contacts, and the offsets enter only its
+        right-hand side, linearly; reactions and elastic line are then affine in the offsets
+        and these derivatives are exact, not a finite-difference estimate. Across a change of
+        contact set (a bearing lifting off, or reaching the top of its bore) the response is
+        only piecewise affine: the derivatives here are those of the given set, i.e. one-sided
+        at a point where the set is about to change.
+        """
         supports = self.supports
         m = supports.x.size
-        hessian = self.flexibility + np.diag(supports.compliance)
-        equality = np.vstack([np.ones(m), supports.x])
-        kkt = np.block([[hessian, equality.T], [equality, np.zeros((2, 2))]])
-        # d lambda / d offsets: the right-hand side of the stationarity rows is + offsets.
-        rhs = np.vstack([np.eye(m), np.zeros((2, m))])
-        per_point = np.linalg.solve(kkt, rhs)[:m]
+        if contact is None:
+            setup = self._contact_setup(vertical=False)
+            free = np.ones(m, dtype=bool)
+        else:
+            setup = self._contact_setup(vertical=True)
+            state = np.concatenate([b.point_contact for b in contact.bearings])
+            if state.size != m:
+                raise ValueError("contact: a result of another model (its support points differ)")
+            free = np.concatenate([state == "bottom", state[setup.top] == "top"])
+        columns = setup.columns[:, free]
+        k = columns.shape[1]
+        equality = setup.equality[:, free]
+        kkt = np.block([[setup.hessian[np.ix_(free, free)], equality.T], [equality, np.zeros((2, 2))]])
+        # d lambda / d offsets: the offsets enter the stationarity rows as + columns' offsets.
+        rhs = np.vstack([columns.T, np.zeros((2, m))])
+        solved = np.linalg.solve(kkt, rhs)
+        per_point = columns @ solved[:k]
         grouping = np.zeros((m, len(self.line.bearings)))
         grouping[np.arange(m), supports.bearing] = 1.0
         matrix = grouping.T @ per_point @ grouping
-        return InfluenceMatrix(names=[b.name for b in self.line.bearings], matrix=0.5 * (matrix + matrix.T))
+        rigid = solved[k:] @ grouping
+        deflection = self._unit_response[0::2] @ per_point @ grouping + rigid[0] + self.mesh.x[:, None] * rigid[1]
+        return InfluenceMatrix(
+            names=[b.name for b in self.line.bearings], matrix=0.5 * (matrix + matrix.T), deflection=deflection
+        )
 
 
 def _node_average(ends: np.ndarray, nodes: int) -> np.ndarray:
