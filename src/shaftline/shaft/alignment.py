@@ -200,6 +200,7 @@ class AlignmentModel:
         self.reference_qp = reference_qp
         self._setups: dict[bool, _ContactSetup] = {}
         diameters = [line.outer_diameter_at(b.x) for b in line.bearings]
+        self._bearing_diameter = diameters  # for the mean pressures of every solution
         per_bearing = [b.support_points(d) for b, d in zip(line.bearings, diameters, strict=True)]
         stations = [np.concatenate(per_bearing)]
         for bearing in line.bearings:
@@ -328,7 +329,7 @@ class AlignmentModel:
             fore = np.interp(bearing.x + 0.5 * bearing.length, mesh.x, v)
             slope = (fore - aft) / bearing.length
             node = int(supports.node[np.flatnonzero(pick)[0]])
-            diameter = self.line.outer_diameter_at(bearing.x)
+            diameter = self._bearing_diameter[k]
             bearings.append(
                 BearingResult(
                     name=bearing.name,
