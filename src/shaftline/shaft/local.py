@@ -72,7 +72,7 @@ class LocalShaftModel:
 
     def __post_init__(self) -> None:
         for name in ("bearing_length", "shaft_diameter", "aft_overhang", "fore_length", "youngs_modulus"):
-            require_positive(f"local_model.{name}", getattr(self, name), "m" if name != "youngs_modulus" else "Pa")
+            require_positive(name, getattr(self, name), "m" if name != "youngs_modulus" else "Pa")
         for name in (
             "aft_force",
             "aft_moment",
@@ -82,7 +82,7 @@ class LocalShaftModel:
             "aft_edge_offset",
             "fore_edge_offset",
         ):
-            require_finite(f"local_model.{name}", getattr(self, name))
+            require_finite(name, getattr(self, name))
 
     @classmethod
     def from_misalignment(cls, ratio: float, radial_clearance: float, aft_share: float = 0.25, **kwargs):

@@ -107,15 +107,15 @@ def optimise_offsets(
     line = model.line
     names = [b.name for b in line.bearings]
     if objective not in OBJECTIVES:
-        raise InputError("alignment.optimise.objective", objective, "", "one of " + ", ".join(OBJECTIVES))
+        raise InputError("objective", objective, "", "one of " + ", ".join(OBJECTIVES))
     if adjustable is None:
         ordered = sorted(line.bearings, key=lambda b: b.x)
         adjustable = [b.name for b in ordered[1:-1]]
     for name in adjustable:
         if name not in names:
-            raise InputError("alignment.optimise.adjustable", name, "", "bearing names: " + ", ".join(names))
+            raise InputError("adjustable", name, "", "bearing names: " + ", ".join(names))
     if not adjustable:
-        raise InputError("alignment.optimise.adjustable", "[]", "", "at least one adjustable bearing")
+        raise InputError("adjustable", "[]", "", "at least one adjustable bearing")
     conditions = line.all_conditions()
     low, high = _limits(model, rules)
     # Plan with a small margin inside the limits so round-off cannot fail the checks.
@@ -183,10 +183,10 @@ def optimise_offsets(
         solution = linprog(c, A_ub=np.vstack(a_ub), b_ub=np.concatenate(b_ub), bounds=bounds, method="highs")
         if solution.status != 0:
             raise InputError(
-                "alignment.optimise",
-                objective,
-                "",
-                "rule limits that some offsets within the bounds can meet in every condition",
+                "bound",
+                bound,
+                "m",
+                "a bound within which some offsets meet the rule limits in every condition (none found)",
             )
         offsets = offsets + solution.x[:n]
         results = [
@@ -218,7 +218,7 @@ def offsets_from_reactions(
     names = [b.name for b in line.bearings]
     for name in measured:
         if name not in names:
-            raise InputError("alignment.measured_reactions", name, "", "bearing names: " + ", ".join(names))
+            raise InputError("measured", name, "", "bearing names: " + ", ".join(names))
     if reference is None:
         ordered = sorted(line.bearings, key=lambda b: b.x)
         reference = (ordered[0].name, ordered[-1].name)
