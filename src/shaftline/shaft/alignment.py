@@ -30,7 +30,7 @@ from shaftline.shaft.fem import Mesh, PinnedBeam, build_mesh, uniform_load_vecto
 from shaftline.shaft.model import Condition, ShaftLine
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class SupportPoints:
     """All support points of the line, in the order of the bearings.
 
@@ -74,7 +74,7 @@ class _ContactSetup:
     qp: ContactQP
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BearingResult:
     """Result at one bearing in one condition (SI; slopes in rad).
 
@@ -112,7 +112,7 @@ class BearingResult:
     point_contact: np.ndarray
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ConditionResult:
     """Elastic line and bearing results of one condition.
 
@@ -161,7 +161,7 @@ class ConditionResult:
         raise KeyError(name)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class InfluenceMatrix:
     """Reaction change at each bearing per unit vertical offset of each bearing.
 

@@ -31,7 +31,7 @@ def shear_coefficient(outer: np.ndarray, inner: np.ndarray, poisson: np.ndarray)
     return 6.0 * (1 + poisson) * (1 + m2) ** 2 / ((7 + 6 * poisson) * (1 + m2) ** 2 + (20 + 12 * poisson) * m2)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Mesh:
     """Nodes and element properties along the shaft.
 

@@ -20,7 +20,7 @@ from shaftline.shaft.alignment import AlignmentModel
 from shaftline.shaft.model import Condition, PointLoad, ShaftLine
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class JackUpCurve:
     """Modelled jack-up test.
 

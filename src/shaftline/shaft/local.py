@@ -93,7 +93,7 @@ class LocalShaftModel:
         return cls(aft_edge_offset=-aft_share * rise, fore_edge_offset=(1 - aft_share) * rise, **kwargs)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class LocalShaftLine:
     """Elastic line of the local model.
 
