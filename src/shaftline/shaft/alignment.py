@@ -250,10 +250,10 @@ class AlignmentModel:
         vertical = self._uniform.copy()
         horizontal = np.zeros(mesh.nodes - 1)
         middle = 0.5 * (mesh.x[:-1] + mesh.x[1:])
-        for load in line.distributed_loads:
-            inside = (middle > load.x_start) & (middle < load.x_end)
-            vertical[inside] += load.load_y
-            horizontal[inside] += load.load_z
+        for distributed in line.distributed_loads:
+            inside = (middle > distributed.x_start) & (middle < distributed.x_end)
+            vertical[inside] += distributed.load_y
+            horizontal[inside] += distributed.load_z
         fy = uniform_load_vector(mesh, vertical)
         fz = uniform_load_vector(mesh, horizontal)
         for load in (*line.point_loads, *condition.loads):

@@ -102,13 +102,13 @@ def jack_up(
         raise InputError("jack_x", jack_x, "m", f"a jack that lifts {bearing} before the line tips") from None
     # The reaction stays at zero once lifted: aim at a tiny positive one for a unique crossing.
     liftoff = brentq(lambda p: state(p)[0] - 1e-9 * before, low, high, xtol=1e-12 * guess, rtol=1e-12)
-    values = []
+    rows = []
     for load in np.linspace(0.0, max_load_factor * liftoff, points):
         try:
-            values.append((load, *state(load)))
+            rows.append((load, *state(load)))
         except InputError:  # beyond this load the line would tip over the jack: stop the curve
             break
-    values = np.array(values)
+    values = np.array(rows)
     return JackUpCurve(
         bearing=bearing,
         jack_x=jack_x,
@@ -163,7 +163,7 @@ def reaction_from_jack_curve(loads: np.ndarray, lifts: np.ndarray, correction_fa
     if not 0.0 < correction_factor < 10.0:
         raise InputError("correction_factor", correction_factor, "", "in (0, 10)")
 
-    def fit(knee: float):
+    def fit(knee: float) -> tuple[float, np.ndarray]:
         design = np.column_stack([np.ones_like(loads), loads, np.maximum(loads - knee, 0.0)])
         coefficients, *_ = np.linalg.lstsq(design, lifts, rcond=None)
         misfit = lifts - design @ coefficients

@@ -11,6 +11,7 @@ the bent journal of the film model.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -85,7 +86,9 @@ class LocalShaftModel:
             require_finite(name, getattr(self, name))
 
     @classmethod
-    def from_misalignment(cls, ratio: float, radial_clearance: float, aft_share: float = 0.25, **kwargs):
+    def from_misalignment(
+        cls, ratio: float, radial_clearance: float, aft_share: float = 0.25, **kwargs: Any
+    ) -> LocalShaftModel:
         """Edge offsets giving a chord slope of ``ratio * 2c/L``: the aft edge ``aft_share`` of
         the rise below the reference, the forward edge the rest above it (seed 004 Table 5-29
         puts a quarter below)."""
@@ -151,7 +154,7 @@ def solve_local_model(model: LocalShaftModel) -> LocalShaftLine:
     )
     stations = np.concatenate([[0.0], aft_edge + np.linspace(0.0, model.bearing_length, model.divisions + 1), [total]])
     mesh = build_mesh(line, stations)
-    aft, fore = (int(k) for k in mesh.node_at([aft_edge, fore_edge]))
+    aft, fore = (int(k) for k in mesh.node_at(np.array([aft_edge, fore_edge])))
     end = mesh.nodes - 1
     beam = PinnedBeam(mesh, (2 * aft, 2 * fore, 2 * end + 1))
     forces = uniform_load_vector(mesh, np.full(mesh.nodes - 1, -model.weight_per_length))

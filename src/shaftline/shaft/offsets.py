@@ -170,9 +170,9 @@ def optimise_offsets(
         if objective == "aft_slope":
             for row, value in zip(slope_rows, slope_rhs, strict=True):
                 a_ub.append(np.concatenate([row, [-1.0]])[None, :])
-                b_ub.append([-value])
+                b_ub.append(np.array([-value]))
                 a_ub.append(np.concatenate([-row, [-1.0]])[None, :])
-                b_ub.append([value])
+                b_ub.append(np.array([value]))
         else:  # -t <= ratio - 1 + J d / share <= t
             for rows, values in zip(use_rows, use_rhs, strict=True):
                 a_ub.append(np.hstack([rows, -np.ones((rows.shape[0], 1))]))
