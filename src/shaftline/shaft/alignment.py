@@ -183,6 +183,20 @@ class InfluenceMatrix:
 class AlignmentModel:
     """The finite-element model of a shaft line, built once for all conditions.
 
+    Parameters
+    ----------
+    line : ShaftLine
+    reference_qp : bool
+        Solve the contact with the original active-set solver
+        (:func:`~shaftline.shaft.contact_qp.active_set_qp`: an LP start and no reuse)
+        instead of :class:`~shaftline.shaft.contact_qp.ContactQP`; the same results to
+        round-off, several times slower. For checking only.
+
+    Notes
+    -----
+    The contact solver remembers the contact set of the last solution as its first guess
+    for the next one, so a model should not be shared between threads.
+
     Examples
     --------
     >>> from shaftline.shaft import AlignmentModel, Bearing, ShaftLine, ShaftSegment
