@@ -1,6 +1,7 @@
 """Import cost of the shaft package: the command line must start in well under 0.5 s and the
-case schema reads its defaults from the ``shaftline.shaft.model`` dataclasses, so neither
-``shaftline.shaft`` nor ``shaftline.shaft.model`` may pull in scipy (about 0.4 s to import).
+case schema reads its defaults from the ``shaftline.shaft.model`` dataclasses and rules
+through ``shaftline.shaft.rules``, so none of ``shaftline.shaft``, ``shaftline.shaft.model``
+and ``shaftline.shaft.rules`` may pull in scipy (about 0.4 s to import).
 
 Each check runs in a fresh interpreter: in this one, other tests have imported scipy already.
 """
@@ -38,6 +39,13 @@ def test_model_imports_only_numpy_and_the_errors_module():
     assert third_party(modules) <= {"numpy"}
     own = {m for m in modules if m.startswith("shaftline")}
     assert own == {"shaftline", "shaftline.errors", "shaftline.shaft", "shaftline.shaft.model"}
+
+
+def test_rules_import_without_the_solver():
+    """The case schema reads rules files through shaftline.shaft.rules."""
+    modules = loaded_after("shaftline.shaft.rules")
+    assert "scipy" not in third_party(modules)
+    assert "shaftline.shaft.alignment" not in modules
 
 
 def test_package_import_leaves_scipy_for_first_use():

@@ -8,11 +8,14 @@ import tomllib
 from dataclasses import dataclass
 from importlib.resources import files
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from shaftline.errors import InputError
-from shaftline.shaft.alignment import AlignmentModel, ConditionResult
+
+if TYPE_CHECKING:  # for annotations only: the case schema imports the rules, not the solver
+    from shaftline.shaft.alignment import AlignmentModel, ConditionResult
 
 QUANTITIES = {
     "reaction": "N",
