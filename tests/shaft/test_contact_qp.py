@@ -117,8 +117,10 @@ def test_warm_start_from_a_stale_contact_set_still_finds_the_optimum():
 
 
 def test_degenerate_start_needs_the_lp():
-    """A target parallel to one column has no two-column vertex: the LP start is used, and an
-    infeasible problem (a load the supports cannot carry) is refused like the original does."""
+    """Both columns at one station: every pair of columns is singular (no two-column vertex)
+    and every KKT matrix rank-deficient, so the LP start and the least-squares steps are
+    used; an infeasible problem (a load the supports cannot carry) is refused like the
+    original does."""
     hessian = np.array([[2.0, 0.5], [0.5, 1.0]])
     equality = np.array([[1.0, 1.0], [0.0, 0.0]])  # both columns at station 0: no vertex of two
     bounded = np.array([True, True])
