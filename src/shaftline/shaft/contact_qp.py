@@ -135,8 +135,9 @@ class ContactQP:
     hessian : ndarray (n, n)
         H, positive semi-definite (m/N); regularised by :data:`REGULARISATION` times its
         largest diagonal entry as in :func:`active_set_qp`.
-    equality : ndarray (r, n)
-        E: the force (first row) and moment sums of the reaction columns.
+    equality : ndarray (2, n)
+        E: force row (+1 for a bottom, -1 for a top contact column) and moment row (that
+        sign times the station, m) of the reaction columns.
     bounded : ndarray of bool (n,)
         Variables with x_i >= 0 (one-sided contacts).
 
@@ -243,8 +244,22 @@ class ContactQP:
     def solve(self, linear: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """Minimiser x, equality multipliers mu (E'mu enters the stationarity as + E'mu), iterations.
 
-        Iterations count the equality-constrained solves of the primal active-set phase
-        (1 when a guessed working set is optimal at once).
+        Parameters
+        ----------
+        linear : ndarray (n,)
+            c: gap of each contact column under the loads alone, m.
+        target : ndarray (2,)
+            t: the reactions' total force (N) and moment (N m).
+
+        Returns
+        -------
+        x : ndarray (n,)
+            Contact forces, N (zero for an open contact).
+        mu : ndarray (2,)
+            The rigid line (a in m, b in rad) that the multipliers of E x = t are.
+        iterations : int
+            Equality-constrained solves of the active-set phase (1 when a guessed working
+            set is optimal at once).
         """
         bounded = self.bounded
         force_scale = max(1.0, float(np.abs(target).max()))
