@@ -66,12 +66,12 @@ def test_aft_third_support_point():
 @pytest.mark.parametrize(
     "change, field",
     [
-        ({"segments": (ShaftSegment(10.0, 0.5, inner_diameter=0.6),)}, "shaft.segments[0].inner_diameter"),
-        ({"segments": (ShaftSegment(-1.0, 0.5),)}, "shaft.segments[0].length"),
+        ({"segments": (ShaftSegment(10.0, 0.5, inner_diameter=0.6),)}, "segments[0].inner_diameter"),
+        ({"segments": (ShaftSegment(-1.0, 0.5),)}, "segments[0].length"),
         ({"bearings": (Bearing("a", 1.0, 0.5), Bearing("b", 30.0, 0.5))}, "bearings[1].x"),
-        ({"bearings": (Bearing("a", 1.0, 0.5), Bearing("b", 1.2, 0.5))}, "bearings.b.x"),
+        ({"bearings": (Bearing("a", 1.0, 0.5), Bearing("b", 1.2, 0.5))}, "bearings[1].x"),
         ({"bearings": (Bearing("a", 1.0, 0.5),)}, "bearings"),
-        ({"conditions": (Condition("c", offsets_y={"nope": 1e-3}),)}, "conditions.c.offsets"),
+        ({"conditions": (Condition("c", offsets_y={"nope": 1e-3}),)}, "conditions[0].offsets_y"),
         ({"bearings": (Bearing("a", 1.0, 0.5, material="cheese"), Bearing("b", 9.0, 0.5))}, "bearings[0].material"),
     ],
 )

@@ -85,7 +85,7 @@ def test_sag_and_gap_of_two_simply_supported_pieces():
 def test_sag_gap_needs_supports_for_each_piece():
     with pytest.raises(InputError) as error:
         sag_and_gap(two_span(), 2.0)
-    assert error.value.field == "sag_gap.temporary_supports"
+    assert error.value.field == "temporary_supports"
 
 
 # -- jack-up -------------------------------------------------------------------------------

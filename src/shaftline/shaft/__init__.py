@@ -1,6 +1,14 @@
-"""Shaft alignment: beam model of the shaft line on its bearings."""
+"""Shaft alignment: beam model of the shaft line on its bearings.
 
-from shaftline.shaft.alignment import AlignmentModel, BearingResult, ConditionResult, InfluenceMatrix
+The model's dataclasses are imported at once (numpy only); the solver classes, which need
+scipy, are loaded on first use (PEP 562), so that ``import shaftline.shaft.model`` -- as
+the case schema and the command line's start-up do -- does not pay for scipy.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
 from shaftline.shaft.model import (
     Bearing,
     Condition,
@@ -11,6 +19,16 @@ from shaftline.shaft.model import (
     ShaftLine,
     ShaftSegment,
 )
+
+if TYPE_CHECKING:
+    from shaftline.shaft.alignment import AlignmentModel, BearingResult, ConditionResult, InfluenceMatrix
+
+_LAZY = {
+    "AlignmentModel": "shaftline.shaft.alignment",
+    "BearingResult": "shaftline.shaft.alignment",
+    "ConditionResult": "shaftline.shaft.alignment",
+    "InfluenceMatrix": "shaftline.shaft.alignment",
+}
 
 __all__ = [
     "AlignmentModel",
@@ -26,3 +44,17 @@ __all__ = [
     "ShaftLine",
     "ShaftSegment",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        import importlib
+
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+        globals()[name] = value  # later look-ups skip this function
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

@@ -13,7 +13,8 @@ whose optimality conditions are the contact conditions (gap >= 0, reaction >= 0,
 gap * reaction = 0); the multipliers of the two equilibrium equations are the
 rigid-body line (a + b x) added to the pinned deflection. ``C`` holds the
 support compliances (bearing and foundation). The primal active-set method
-(Nocedal & Wright 2006, Alg. 16.3) solves it exactly in a finite number of steps.
+(Nocedal & Wright 2006, Alg. 16.3, :mod:`shaftline.shaft.contact_qp`) solves it exactly
+in a finite number of steps.
 """
 
 from __future__ import annotations
@@ -22,14 +23,14 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import linprog
 
 from shaftline.errors import InputError
+from shaftline.shaft.contact_qp import ContactQP, active_set_qp
 from shaftline.shaft.fem import Mesh, PinnedBeam, build_mesh, uniform_load_vector
 from shaftline.shaft.model import Condition, ShaftLine
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class SupportPoints:
     """All support points of the line, in the order of the bearings.
 
@@ -56,7 +57,24 @@ class SupportPoints:
     node: np.ndarray
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
+class _ContactSetup:
+    """The fixed parts of one plane's contact QP (see the module docstring).
+
+    ``columns`` maps the QP variables (bottom contacts, then top contacts ``top``) to
+    support-point reactions; ``gap_offset`` is the clearance of each column (0 at the bottom).
+    """
+
+    top: np.ndarray
+    columns: np.ndarray
+    gap_offset: np.ndarray
+    hessian: np.ndarray
+    equality: np.ndarray
+    bounded: np.ndarray
+    qp: ContactQP
+
+
+@dataclass(frozen=True, eq=False)
 class BearingResult:
     """Result at one bearing in one condition (SI; slopes in rad).
 
@@ -77,6 +95,9 @@ class BearingResult:
         Shaft slope across the bearing less the bearing's own slope (slope boring).
     point_reactions : ndarray
         Reactions of the individual support points, N.
+    point_contact : ndarray of str
+        Contact state of the individual support points: ``"bottom"``, ``"top"`` or
+        ``"lifted"`` (``"bottom"`` for every point of a two-sided solution).
     """
 
     name: str
@@ -88,9 +109,10 @@ class BearingResult:
     shaft_slope_at_support: float
     relative_slope: float
     point_reactions: np.ndarray
+    point_contact: np.ndarray
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ConditionResult:
     """Elastic line and bearing results of one condition.
 
@@ -139,7 +161,7 @@ class ConditionResult:
         raise KeyError(name)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class InfluenceMatrix:
     """Reaction change at each bearing per unit vertical offset of each bearing.
 
@@ -147,15 +169,33 @@ class InfluenceMatrix:
     ----------
     names : list of str
     matrix : ndarray (b, b)
-        ``matrix[i, j]`` = d reaction_i / d offset_j, N/m, all supports in contact.
+        ``matrix[i, j]`` = d reaction_i / d offset_j, N/m, for the contact set it was made
+        for (by default all supports in contact).
+    deflection : ndarray (n, b)
+        ``deflection[k, j]`` = d deflection_y at node k / d offset_j, m/m, same contact set.
     """
 
     names: list[str]
     matrix: np.ndarray
+    deflection: np.ndarray
 
 
 class AlignmentModel:
     """The finite-element model of a shaft line, built once for all conditions.
+
+    Parameters
+    ----------
+    line : ShaftLine
+    reference_qp : bool
+        Solve the contact with the original active-set solver
+        (:func:`~shaftline.shaft.contact_qp.active_set_qp`: an LP start and no reuse)
+        instead of :class:`~shaftline.shaft.contact_qp.ContactQP`; the same results to
+        round-off, several times slower. For checking only.
+
+    Notes
+    -----
+    The contact solver remembers the contact set of the last solution as its first guess
+    for the next one, so a model should not be shared between threads.
 
     Examples
     --------
@@ -169,9 +209,12 @@ class AlignmentModel:
     181.4
     """
 
-    def __init__(self, line: ShaftLine) -> None:
+    def __init__(self, line: ShaftLine, reference_qp: bool = False) -> None:
         self.line = line
+        self.reference_qp = reference_qp
+        self._setups: dict[bool, _ContactSetup] = {}
         diameters = [line.outer_diameter_at(b.x) for b in line.bearings]
+        self._bearing_diameter = diameters  # for the mean pressures of every solution
         per_bearing = [b.support_points(d) for b, d in zip(line.bearings, diameters, strict=True)]
         stations = [np.concatenate(per_bearing)]
         for bearing in line.bearings:
@@ -221,10 +264,10 @@ class AlignmentModel:
         vertical = self._uniform.copy()
         horizontal = np.zeros(mesh.nodes - 1)
         middle = 0.5 * (mesh.x[:-1] + mesh.x[1:])
-        for load in line.distributed_loads:
-            inside = (middle > load.x_start) & (middle < load.x_end)
-            vertical[inside] += load.load_y
-            horizontal[inside] += load.load_z
+        for distributed in line.distributed_loads:
+            inside = (middle > distributed.x_start) & (middle < distributed.x_end)
+            vertical[inside] += distributed.load_y
+            horizontal[inside] += distributed.load_z
         fy = uniform_load_vector(mesh, vertical)
         fz = uniform_load_vector(mesh, horizontal)
         for load in (*line.point_loads, *condition.loads):
@@ -300,7 +343,7 @@ class AlignmentModel:
             fore = np.interp(bearing.x + 0.5 * bearing.length, mesh.x, v)
             slope = (fore - aft) / bearing.length
             node = int(supports.node[np.flatnonzero(pick)[0]])
-            diameter = self.line.outer_diameter_at(bearing.x)
+            diameter = self._bearing_diameter[k]
             bearings.append(
                 BearingResult(
                     name=bearing.name,
@@ -312,6 +355,7 @@ class AlignmentModel:
                     shaft_slope_at_support=float(rot_y[node]),
                     relative_slope=float(slope - bearing.slope),
                     point_reactions=reactions_y[pick],
+                    point_contact=state[pick],
                 )
             )
         return ConditionResult(
@@ -338,13 +382,12 @@ class AlignmentModel:
         u[1::2] += rigid[1]
         return u
 
-    def _contact(self, forces: np.ndarray, offsets: np.ndarray, vertical: bool):
-        """Support reactions (per point), rigid line (a, b), iterations and contact states."""
+    def _contact_setup(self, vertical: bool) -> _ContactSetup:
+        """The parts of the contact QP that depend on the line only, built once per plane."""
+        if vertical in self._setups:
+            return self._setups[vertical]
         supports = self.supports
         m = supports.x.size
-        u0 = self.beam.solve(forces)[2 * supports.node]
-        total_force = float(forces[0::2].sum())
-        total_moment = float((forces[0::2] * self.mesh.x).sum() + forces[1::2].sum())
         if vertical:
             top = np.flatnonzero(supports.one_sided & np.isfinite(supports.clearance))
             columns = np.concatenate([np.eye(m), -np.eye(m)[:, top]], axis=1)
@@ -352,44 +395,94 @@ class AlignmentModel:
             compliance = np.concatenate([supports.compliance, supports.compliance[top]])
             bounded = np.concatenate([supports.one_sided, np.ones(top.size, bool)])
         else:  # horizontal: two-sided supports, the clearance is not modelled
+            top = np.zeros(0, dtype=int)
             columns = np.eye(m)
             gap_offset = np.zeros(m)
             compliance = supports.compliance.copy()
             bounded = np.zeros(m, bool)
         hessian = columns.T @ self.flexibility @ columns + np.diag(compliance)
-        linear = columns.T @ (u0 - offsets) + gap_offset
         equality = np.vstack([columns.sum(axis=0), supports.x @ columns])
+        setup = _ContactSetup(
+            top, columns, gap_offset, hessian, equality, bounded, ContactQP(hessian, equality, bounded)
+        )
+        self._setups[vertical] = setup
+        return setup
+
+    def _contact(
+        self, forces: np.ndarray, offsets: np.ndarray, vertical: bool
+    ) -> tuple[np.ndarray, np.ndarray, int, np.ndarray]:
+        """Support reactions (per point), rigid line (a, b), iterations and contact states."""
+        supports = self.supports
+        m = supports.x.size
+        u0 = self.beam.solve(forces)[2 * supports.node]
+        total_force = float(forces[0::2].sum())
+        total_moment = float((forces[0::2] * self.mesh.x).sum() + forces[1::2].sum())
+        setup = self._contact_setup(vertical)
+        linear = setup.columns.T @ (u0 - offsets) + setup.gap_offset
         target = np.array([-total_force, -total_moment])
-        solution, multipliers, iterations = active_set_qp(hessian, linear, equality, target, bounded)
-        reactions = columns @ solution
+        if self.reference_qp:
+            solution, multipliers, iterations = active_set_qp(
+                setup.hessian, linear, setup.equality, target, setup.bounded
+            )
+        else:
+            solution, multipliers, iterations = setup.qp.solve(linear, target)
+        reactions = setup.columns @ solution
         state = np.full(m, "bottom", dtype=object)
         if vertical:
             lifted = supports.one_sided & (solution[:m] <= 0.0)
             state[lifted] = "lifted"
-            if top.size:
-                state[top[solution[m:] > 0.0]] = "top"
+            if setup.top.size:
+                state[setup.top[solution[m:] > 0.0]] = "top"
         return reactions, multipliers, iterations, state
 
     # -- influence coefficients ---------------------------------------------------------
-    def influence_matrix(self) -> InfluenceMatrix:
-        """d reaction_i / d offset_j for the bearings, all support points in contact (linear model)."""
+    def influence_matrix(self, contact: ConditionResult | None = None) -> InfluenceMatrix:
+        """d reaction_i / d offset_j and d deflection / d offset_j of the bearings (vertical plane).
+
+        Parameters
+        ----------
+        contact : ConditionResult or None
+            Linearise at the contact set of this solution (of this model): lifted support
+            points stay lifted, points at the top of their bore stay there. None (default):
+            every support point in bottom contact, the two-sided linear model.
+
+        Notes
+        -----
+        For a fixed contact set the reactions and the rigid line solve the KKT system of the
+        contact QP restricted to the closed contacts, and the offsets enter only its
+        right-hand side, linearly; reactions and elastic line are then affine in the offsets
+        and these derivatives are exact, not a finite-difference estimate. Across a change of
+        contact set (a bearing lifting off, or reaching the top of its bore) the response is
+        only piecewise affine: the derivatives here are those of the given set, i.e. one-sided
+        at a point where the set is about to change.
+        """
         supports = self.supports
         m = supports.x.size
-        hessian = self.flexibility + np.diag(supports.compliance)
-        equality = np.vstack([np.ones(m), supports.x])
-        kkt = np.block([[hessian, equality.T], [equality, np.zeros((2, 2))]])
-        # d lambda / d offsets: the right-hand side of the stationarity rows is + offsets.
-        rhs = np.vstack([np.eye(m), np.zeros((2, m))])
-        per_point = np.linalg.solve(kkt, rhs)[:m]
+        if contact is None:
+            setup = self._contact_setup(vertical=False)
+            free = np.ones(m, dtype=bool)
+        else:
+            setup = self._contact_setup(vertical=True)
+            state = np.concatenate([b.point_contact for b in contact.bearings])
+            if state.size != m:
+                raise ValueError("contact: a result of another model (its support points differ)")
+            free = np.concatenate([state == "bottom", state[setup.top] == "top"])
+        columns = setup.columns[:, free]
+        k = columns.shape[1]
+        equality = setup.equality[:, free]
+        kkt = np.block([[setup.hessian[np.ix_(free, free)], equality.T], [equality, np.zeros((2, 2))]])
+        # d lambda / d offsets: the offsets enter the stationarity rows as + columns' offsets.
+        rhs = np.vstack([columns.T, np.zeros((2, m))])
+        solved = np.linalg.solve(kkt, rhs)
+        per_point = columns @ solved[:k]
         grouping = np.zeros((m, len(self.line.bearings)))
         grouping[np.arange(m), supports.bearing] = 1.0
         matrix = grouping.T @ per_point @ grouping
-        return InfluenceMatrix(names=[b.name for b in self.line.bearings], matrix=0.5 * (matrix + matrix.T))
-
-
-def _top_columns(equality: np.ndarray) -> np.ndarray:
-    """Columns that push the shaft down (top-of-bore contacts): negative in the force row."""
-    return equality[0] < 0
+        rigid = solved[k:] @ grouping
+        deflection = self._unit_response[0::2] @ per_point @ grouping + rigid[0] + self.mesh.x[:, None] * rigid[1]
+        return InfluenceMatrix(
+            names=[b.name for b in self.line.bearings], matrix=0.5 * (matrix + matrix.T), deflection=deflection
+        )
 
 
 def _node_average(ends: np.ndarray, nodes: int) -> np.ndarray:
@@ -400,84 +493,3 @@ def _node_average(ends: np.ndarray, nodes: int) -> np.ndarray:
     np.add.at(out, np.arange(1, nodes), ends[:, 1])
     np.add.at(count, np.arange(1, nodes), 1)
     return out / count
-
-
-def active_set_qp(
-    hessian: np.ndarray, linear: np.ndarray, equality: np.ndarray, target: np.ndarray, bounded: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, int]:
-    """Solve min 1/2 x'Hx + c'x s.t. E x = t, x_i >= 0 for bounded i (H positive semi-definite).
-
-    Primal active-set method (Nocedal & Wright 2006, Alg. 16.3) from a feasible point found
-    by linear programming. Each step either adds the blocking bound or drops the bound with
-    the most negative multiplier; with the objective strictly decreasing between working
-    sets no working set repeats, so the iteration ends in finitely many steps.
-
-    Returns
-    -------
-    x, equality multipliers (E'mu enters the stationarity as + E'mu), iterations.
-    """
-    n = linear.size
-    scale = max(float(np.abs(np.diag(hessian)).max()), 1e-300)
-    hessian = hessian + 1e-12 * scale * np.eye(n)
-    rows = equality.shape[0]
-    # Usual case first: every bottom contact closed, every top contact open. If that
-    # equality-constrained solution has no negative reaction and no penetration it is optimal.
-    guess = ~bounded | (np.arange(n) < n - np.count_nonzero(_top_columns(equality)))
-    kkt = np.block(
-        [[hessian[np.ix_(guess, guess)], equality[:, guess].T], [equality[:, guess], np.zeros((rows, rows))]]
-    )
-    try:
-        solved = np.linalg.solve(kkt, np.concatenate([-linear[guess], target]))
-    except np.linalg.LinAlgError:
-        solved = None
-    if solved is not None:
-        x = np.zeros(n)
-        x[guess] = solved[: guess.sum()]
-        mu = solved[guess.sum() :]
-        gaps = hessian @ x + linear + equality.T @ mu
-        if np.all(x[bounded] >= 0.0) and np.all(gaps[~guess] >= -1e-12):
-            return x, mu, 1
-    bounds = [(0.0, None) if b else (None, None) for b in bounded]
-    start = linprog(np.zeros(n), A_eq=equality, b_eq=target, bounds=bounds, method="highs")
-    if start.status != 0:
-        raise InputError("bearings", "supports", "", "supports that can carry the loads (the line tips over)")
-    x = np.where(bounded, np.maximum(start.x, 0.0), start.x)
-    working = bounded & (x <= 1e-12 * max(1.0, float(np.abs(x).max())))
-    x[working] = 0.0
-    force_scale = max(1.0, float(np.abs(target).max()))
-    # Multipliers of the bounds are gaps (m): a penetration below 1e-12 m is round-off.
-    gap_tolerance = 1e-12
-    for iteration in range(1, 20 * n + 50):
-        free = ~working
-        g = hessian @ x + linear
-        kkt = np.block(
-            [
-                [hessian[np.ix_(free, free)], equality[:, free].T],
-                [equality[:, free], np.zeros((equality.shape[0],) * 2)],
-            ]
-        )
-        rhs = np.concatenate([-g[free], np.zeros(equality.shape[0])])
-        step_and_mu = np.linalg.lstsq(kkt, rhs, rcond=None)[0]
-        step = np.zeros(n)
-        step[free] = step_and_mu[: free.sum()]
-        mu = step_and_mu[free.sum() :]
-        if np.abs(step).max() <= 1e-11 * force_scale:
-            multipliers_bound = g + equality.T @ mu
-            candidates = np.flatnonzero(working & (multipliers_bound < -gap_tolerance))
-            if candidates.size == 0:
-                return x, mu, iteration
-            drop = candidates[np.argmin(multipliers_bound[candidates])]
-            working[drop] = False
-            continue
-        blocking = free & bounded & (step < 0)
-        alpha, block = 1.0, -1
-        if blocking.any():
-            ratios = -x[blocking] / step[blocking]
-            k = int(np.argmin(ratios))
-            if ratios[k] < 1.0:
-                alpha, block = float(ratios[k]), int(np.flatnonzero(blocking)[k])
-        x = x + alpha * step
-        if block >= 0:
-            x[block] = 0.0
-            working[block] = True
-    raise RuntimeError("alignment contact iteration did not terminate")  # pragma: no cover

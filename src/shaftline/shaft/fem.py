@@ -31,7 +31,7 @@ def shear_coefficient(outer: np.ndarray, inner: np.ndarray, poisson: np.ndarray)
     return 6.0 * (1 + poisson) * (1 + m2) ** 2 / ((7 + 6 * poisson) * (1 + m2) ** 2 + (20 + 12 * poisson) * m2)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Mesh:
     """Nodes and element properties along the shaft.
 
@@ -95,13 +95,13 @@ def build_mesh(line: ShaftLine, stations: np.ndarray) -> Mesh:
         if np.min(np.abs(np.asarray(kept) - station)) >= NODE_MERGE_DISTANCE:
             kept.append(station)
     key = sorted(kept)
-    x = [key[0]]
+    points = [key[0]]
     for a, b in zip(key[:-1], key[1:], strict=True):
         if b - a < 1e-9:
             continue
         pieces = max(1, math.ceil((b - a) / line.element_length - 1e-9))
-        x.extend(a + (b - a) * np.arange(1, pieces + 1) / pieces)
-    x = np.array(x)
+        points.extend(a + (b - a) * np.arange(1, pieces + 1) / pieces)
+    x = np.array(points)
     middle = 0.5 * (x[:-1] + x[1:])
     edges = line.segment_edges()
     owner = np.clip(np.searchsorted(edges, middle, side="right") - 1, 0, len(line.segments) - 1)

@@ -20,7 +20,7 @@ from shaftline.shaft.alignment import AlignmentModel
 from shaftline.shaft.model import Condition, PointLoad, ShaftLine
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class JackUpCurve:
     """Modelled jack-up test.
 
@@ -66,9 +66,9 @@ def jack_up(
     a test stops soon after lift-off, and the two-line fit assumes it did)."""
     names = [b.name for b in line.bearings]
     if bearing not in names:
-        raise InputError("jack_up.bearing", bearing, "", "the name of a bearing: " + ", ".join(names))
+        raise InputError("bearing", bearing, "", "the name of a bearing: " + ", ".join(names))
     if not 0.0 <= jack_x <= line.length:
-        raise InputError("jack_up.jack_x", jack_x, "m", f"on the shaft, [0, {line.length:.4g}]")
+        raise InputError("jack_x", jack_x, "m", f"on the shaft, [0, {line.length:.4g}]")
     condition = condition or Condition("jack-up")
     # A zero load at the jack puts a node there.
     with_jack = replace(line, point_loads=line.point_loads + (PointLoad(jack_x, name="jack"),))
@@ -82,33 +82,33 @@ def jack_up(
 
     before, rest = state(0.0)
     if before <= 0.0:
-        raise InputError("jack_up.bearing", bearing, "", "a bearing that carries load before jacking")
+        raise InputError("bearing", bearing, "", "a bearing that carries load before jacking")
     # Relief per unit jack load while the contact state holds, then a bracket checked with the
     # full one-sided model (other supports may unload first).
     small = 1e-6 * before
     relief = (before - state(small)[0]) / small
     if relief <= 0.0:
-        raise InputError("jack_up.jack_x", jack_x, "m", f"a jack position that relieves {bearing}")
+        raise InputError("jack_x", jack_x, "m", f"a jack position that relieves {bearing}")
     guess = before / relief
     low, high = 0.0, guess * (1 + 1e-6)
     try:
         while state(high)[0] > 0.0:
             low, high = high, high * 1.2
             if high > 1e3 * guess:
-                raise InputError("jack_up.jack_x", jack_x, "m", f"a jack position that can unload {bearing}")
+                raise InputError("jack_x", jack_x, "m", f"a jack position that can unload {bearing}")
     except InputError as error:
         if "tips over" not in str(error):
             raise
-        raise InputError("jack_up.jack_x", jack_x, "m", f"a jack that lifts {bearing} before the line tips") from None
+        raise InputError("jack_x", jack_x, "m", f"a jack that lifts {bearing} before the line tips") from None
     # The reaction stays at zero once lifted: aim at a tiny positive one for a unique crossing.
     liftoff = brentq(lambda p: state(p)[0] - 1e-9 * before, low, high, xtol=1e-12 * guess, rtol=1e-12)
-    values = []
+    rows = []
     for load in np.linspace(0.0, max_load_factor * liftoff, points):
         try:
-            values.append((load, *state(load)))
+            rows.append((load, *state(load)))
         except InputError:  # beyond this load the line would tip over the jack: stop the curve
             break
-    values = np.array(values)
+    values = np.array(rows)
     return JackUpCurve(
         bearing=bearing,
         jack_x=jack_x,
@@ -151,16 +151,19 @@ def reaction_from_jack_curve(loads: np.ndarray, lifts: np.ndarray, correction_fa
     """
     loads = np.asarray(loads, dtype=float)
     lifts = np.asarray(lifts, dtype=float)
-    if loads.size != lifts.size or loads.size < 6:
-        raise InputError("jack_up.curve", loads.size, "points", "at least 6 (load, lift) pairs")
-    if not (np.all(np.isfinite(loads)) and np.all(np.isfinite(lifts))):
-        raise InputError("jack_up.curve", "NaN", "", "finite loads and lifts")
+    if loads.size < 6:
+        raise InputError("loads", loads.size, "points", "at least 6 (load, lift) pairs")
+    if lifts.size != loads.size:
+        raise InputError("lifts", lifts.size, "points", f"one lift per load ({loads.size})")
+    for name, values in (("loads", loads), ("lifts", lifts)):
+        if not np.all(np.isfinite(values)):
+            raise InputError(name, "NaN", "", "finite values")
     if np.any(np.diff(loads) <= 0):
-        raise InputError("jack_up.curve.load", "not increasing", "N", "loads rising from row to row")
+        raise InputError("loads", "not increasing", "N", "loads rising from row to row")
     if not 0.0 < correction_factor < 10.0:
-        raise InputError("jack_up.correction_factor", correction_factor, "", "in (0, 10)")
+        raise InputError("correction_factor", correction_factor, "", "in (0, 10)")
 
-    def fit(knee: float):
+    def fit(knee: float) -> tuple[float, np.ndarray]:
         design = np.column_stack([np.ones_like(loads), loads, np.maximum(loads - knee, 0.0)])
         coefficients, *_ = np.linalg.lstsq(design, lifts, rcond=None)
         misfit = lifts - design @ coefficients

@@ -11,6 +11,7 @@ the bent journal of the film model.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -72,7 +73,7 @@ class LocalShaftModel:
 
     def __post_init__(self) -> None:
         for name in ("bearing_length", "shaft_diameter", "aft_overhang", "fore_length", "youngs_modulus"):
-            require_positive(f"local_model.{name}", getattr(self, name), "m" if name != "youngs_modulus" else "Pa")
+            require_positive(name, getattr(self, name), "m" if name != "youngs_modulus" else "Pa")
         for name in (
             "aft_force",
             "aft_moment",
@@ -82,10 +83,12 @@ class LocalShaftModel:
             "aft_edge_offset",
             "fore_edge_offset",
         ):
-            require_finite(f"local_model.{name}", getattr(self, name))
+            require_finite(name, getattr(self, name))
 
     @classmethod
-    def from_misalignment(cls, ratio: float, radial_clearance: float, aft_share: float = 0.25, **kwargs):
+    def from_misalignment(
+        cls, ratio: float, radial_clearance: float, aft_share: float = 0.25, **kwargs: Any
+    ) -> LocalShaftModel:
         """Edge offsets giving a chord slope of ``ratio * 2c/L``: the aft edge ``aft_share`` of
         the rise below the reference, the forward edge the rest above it (seed 004 Table 5-29
         puts a quarter below)."""
@@ -93,7 +96,7 @@ class LocalShaftModel:
         return cls(aft_edge_offset=-aft_share * rise, fore_edge_offset=(1 - aft_share) * rise, **kwargs)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class LocalShaftLine:
     """Elastic line of the local model.
 
@@ -151,7 +154,7 @@ def solve_local_model(model: LocalShaftModel) -> LocalShaftLine:
     )
     stations = np.concatenate([[0.0], aft_edge + np.linspace(0.0, model.bearing_length, model.divisions + 1), [total]])
     mesh = build_mesh(line, stations)
-    aft, fore = (int(k) for k in mesh.node_at([aft_edge, fore_edge]))
+    aft, fore = (int(k) for k in mesh.node_at(np.array([aft_edge, fore_edge])))
     end = mesh.nodes - 1
     beam = PinnedBeam(mesh, (2 * aft, 2 * fore, 2 * end + 1))
     forces = uniform_load_vector(mesh, np.full(mesh.nodes - 1, -model.weight_per_length))

@@ -328,14 +328,14 @@ class ShaftLine:
 
     def __post_init__(self) -> None:
         if not self.segments:
-            raise InputError("shaft.segments", 0, "", "at least one segment")
+            raise InputError("segments", 0, "", "at least one segment")
         for k, segment in enumerate(self.segments):
-            segment.validate(f"shaft.segments[{k}]")
+            segment.validate(f"segments[{k}]")
         length = self.length
         if self.beam_theory not in ("timoshenko", "euler_bernoulli"):
-            raise InputError("shaft.beam_theory", self.beam_theory, "", "timoshenko or euler_bernoulli")
-        require_positive("shaft.element_length", self.element_length, "m")
-        names = set()
+            raise InputError("beam_theory", self.beam_theory, "", "timoshenko or euler_bernoulli")
+        require_positive("element_length", self.element_length, "m")
+        names: set[str] = set()
         for k, bearing in enumerate(self.bearings):
             where = f"bearings[{k}]"
             bearing.validate(where)
@@ -344,17 +344,19 @@ class ShaftLine:
             names.add(bearing.name)
             if bearing.x - 0.5 * bearing.length < -1e-9 or bearing.x + 0.5 * bearing.length > length + 1e-9:
                 raise InputError(f"{where}.x", bearing.x, "m", f"a bearing within the shaft, [0, {length:.4g}] m")
-        ordered = sorted(self.bearings, key=lambda b: b.x)
-        for a, b in zip(ordered, ordered[1:], strict=False):
+        order = sorted(range(len(self.bearings)), key=lambda k: self.bearings[k].x)
+        for i, j in zip(order, order[1:], strict=False):
+            a, b = self.bearings[i], self.bearings[j]
             if b.x - 0.5 * b.length < a.x + 0.5 * a.length - 1e-9:
-                raise InputError(f"bearings.{b.name}.x", b.x, "m", f"a bearing not overlapping {a.name}")
+                raise InputError(f"bearings[{j}].x", b.x, "m", f"a bearing not overlapping {a.name}")
         if sum(b.points if b.support == "multi_point" else 1 for b in self.bearings) < 2:
             raise InputError("bearings", len(self.bearings), "", "at least two supports (one leaves a mechanism)")
-        for group, items in (("loads", self.point_loads), ("masses", self.masses)):
-            for k, item in enumerate(items):
-                x = require_finite(f"{group}[{k}].x", item.x, "m")
-                if not 0.0 <= x <= length:
-                    raise InputError(f"{group}[{k}].x", x, "m", f"on the shaft, [0, {length:.4g}]")
+        located = [(f"point_loads[{k}].x", p.x) for k, p in enumerate(self.point_loads)]
+        located += [(f"masses[{k}].x", m.x) for k, m in enumerate(self.masses)]
+        for where, value in located:
+            x = require_finite(where, value, "m")
+            if not 0.0 <= x <= length:
+                raise InputError(where, x, "m", f"on the shaft, [0, {length:.4g}]")
         for k, item in enumerate(self.distributed_loads):
             if not 0.0 <= item.x_start < item.x_end <= length:
                 raise InputError(
@@ -366,19 +368,15 @@ class ShaftLine:
                 raise InputError("propeller.immersed_fraction", self.propeller.immersed_fraction, "", "in [0, 1]")
             if not -0.5 * length <= self.propeller.x <= length:
                 raise InputError("propeller.x", self.propeller.x, "m", "near the aft end of the shaft")
-        for condition in self.conditions:
-            for key in list(condition.offsets_y) + list(condition.offsets_z):
-                if key not in names:
-                    raise InputError(
-                        f"conditions.{condition.name}.offsets",
-                        key,
-                        "",
-                        "the name of a bearing: " + ", ".join(sorted(names)),
-                    )
+        for k, condition in enumerate(self.conditions):
+            for plane, offsets in (("offsets_y", condition.offsets_y), ("offsets_z", condition.offsets_z)):
+                for key in offsets:
+                    if key not in names:
+                        raise InputError(
+                            f"conditions[{k}].{plane}", key, "", "the name of a bearing: " + ", ".join(sorted(names))
+                        )
             if condition.propeller_immersion is not None and not 0.0 <= condition.propeller_immersion <= 1.0:
-                raise InputError(
-                    f"conditions.{condition.name}.propeller_immersion", condition.propeller_immersion, "", "in [0, 1]"
-                )
+                raise InputError(f"conditions[{k}].propeller_immersion", condition.propeller_immersion, "", "in [0, 1]")
 
     @property
     def length(self) -> float:

@@ -8,7 +8,10 @@ departure of a load ratio from 1), subject to every reaction above its minimum a
 its limit in every condition, offsets within bounds. The linearisation is taken at the
 current contact state (the first round on the two-sided model, so that lifted bearings
 count); the plan is re-solved with the full one-sided model and re-linearised until the
-contact state settles.
+contact state settles. Its coefficients are the influence matrix of that contact state
+(:meth:`AlignmentModel.influence_matrix`), exact for it; a finite difference would cross
+a change of contact state whenever one lies within its step (a multi-point bearing with a
+point about to lift, as in the example) and mix two linear pieces.
 """
 
 from __future__ import annotations
@@ -58,6 +61,20 @@ def _with_offsets(condition: Condition, offsets: dict[str, float]) -> Condition:
     return replace(condition, offsets_y=merged)
 
 
+def _interpolation_weights(nodes: np.ndarray, x: float) -> np.ndarray:
+    """Weights w with w @ values = np.interp(x, nodes, values) for any nodal values."""
+    weights = np.zeros(nodes.size)
+    if x <= nodes[0]:
+        weights[0] = 1.0
+    elif x >= nodes[-1]:
+        weights[-1] = 1.0
+    else:
+        k = int(np.searchsorted(nodes, x, side="right")) - 1
+        t = (x - nodes[k]) / (nodes[k + 1] - nodes[k])
+        weights[k], weights[k + 1] = 1.0 - t, t
+    return weights
+
+
 def _limits(model: AlignmentModel, rules: list[Rule]) -> tuple[np.ndarray, np.ndarray]:
     """Smallest and largest admissible reaction per bearing, N, from the rules."""
     line = model.line
@@ -90,15 +107,15 @@ def optimise_offsets(
     line = model.line
     names = [b.name for b in line.bearings]
     if objective not in OBJECTIVES:
-        raise InputError("alignment.optimise.objective", objective, "", "one of " + ", ".join(OBJECTIVES))
+        raise InputError("objective", objective, "", "one of " + ", ".join(OBJECTIVES))
     if adjustable is None:
         ordered = sorted(line.bearings, key=lambda b: b.x)
         adjustable = [b.name for b in ordered[1:-1]]
     for name in adjustable:
         if name not in names:
-            raise InputError("alignment.optimise.adjustable", name, "", "bearing names: " + ", ".join(names))
+            raise InputError("adjustable", name, "", "bearing names: " + ", ".join(names))
     if not adjustable:
-        raise InputError("alignment.optimise.adjustable", "[]", "", "at least one adjustable bearing")
+        raise InputError("adjustable", "[]", "", "at least one adjustable bearing")
     conditions = line.all_conditions()
     low, high = _limits(model, rules)
     # Plan with a small margin inside the limits so round-off cannot fail the checks.
@@ -106,9 +123,15 @@ def optimise_offsets(
     limited = np.isfinite(high)
     high[limited] -= 1e-6 * np.abs(high[limited])
     aft_index = names.index(min(line.bearings, key=lambda b: b.x).name)
+    columns = [names.index(name) for name in adjustable]
+    aft = line.bearings[aft_index]
+    # relative slope = (v(fore edge) - v(aft edge)) / L - bore slope, linear in the nodal v
+    slope_weights = (
+        _interpolation_weights(model.mesh.x, aft.x + 0.5 * aft.length)
+        - _interpolation_weights(model.mesh.x, aft.x - 0.5 * aft.length)
+    ) / aft.length
     shares = weight_shares(model)
     offsets = np.zeros(len(adjustable))
-    step = 1e-5
     rounds = 0
     while rounds < max_rounds:
         rounds += 1
@@ -123,12 +146,11 @@ def optimise_offsets(
             states.append([b.contact for b in base.bearings])
             reactions = np.array([b.reaction_y for b in base.bearings])
             slope = base.bearings[aft_index].relative_slope
-            jac_r = np.empty((len(names), len(adjustable)))
-            jac_s = np.empty(len(adjustable))
-            for j, name in enumerate(adjustable):
-                moved = model.solve_condition(_with_offsets(current, {name: step}), two_sided)
-                jac_r[:, j] = (np.array([b.reaction_y for b in moved.bearings]) - reactions) / step
-                jac_s[j] = (moved.bearings[aft_index].relative_slope - slope) / step
+            # Exact derivatives for the contact set of this solution (see influence_matrix);
+            # a change of contact set is met by re-solving and re-linearising below.
+            influence = model.influence_matrix(None if two_sided else base)
+            jac_r = influence.matrix[:, columns]
+            jac_s = slope_weights @ influence.deflection[:, columns]
             # low <= R + J d <= high  ->  -J d <= R - low ;  J d <= high - R   (d = change from current)
             rows_a.append(-jac_r)
             rows_b.append(reactions - low)
@@ -148,9 +170,9 @@ def optimise_offsets(
         if objective == "aft_slope":
             for row, value in zip(slope_rows, slope_rhs, strict=True):
                 a_ub.append(np.concatenate([row, [-1.0]])[None, :])
-                b_ub.append([-value])
+                b_ub.append(np.array([-value]))
                 a_ub.append(np.concatenate([-row, [-1.0]])[None, :])
-                b_ub.append([value])
+                b_ub.append(np.array([value]))
         else:  # -t <= ratio - 1 + J d / share <= t
             for rows, values in zip(use_rows, use_rhs, strict=True):
                 a_ub.append(np.hstack([rows, -np.ones((rows.shape[0], 1))]))
@@ -161,10 +183,10 @@ def optimise_offsets(
         solution = linprog(c, A_ub=np.vstack(a_ub), b_ub=np.concatenate(b_ub), bounds=bounds, method="highs")
         if solution.status != 0:
             raise InputError(
-                "alignment.optimise",
-                objective,
-                "",
-                "rule limits that some offsets within the bounds can meet in every condition",
+                "bound",
+                bound,
+                "m",
+                "a bound within which some offsets meet the rule limits in every condition (none found)",
             )
         offsets = offsets + solution.x[:n]
         results = [
@@ -196,7 +218,7 @@ def offsets_from_reactions(
     names = [b.name for b in line.bearings]
     for name in measured:
         if name not in names:
-            raise InputError("alignment.measured_reactions", name, "", "bearing names: " + ", ".join(names))
+            raise InputError("measured", name, "", "bearing names: " + ", ".join(names))
     if reference is None:
         ordered = sorted(line.bearings, key=lambda b: b.x)
         reference = (ordered[0].name, ordered[-1].name)

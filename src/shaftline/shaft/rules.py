@@ -8,11 +8,14 @@ import tomllib
 from dataclasses import dataclass
 from importlib.resources import files
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from shaftline.errors import InputError
-from shaftline.shaft.alignment import AlignmentModel, ConditionResult
+
+if TYPE_CHECKING:  # for annotations only: the case schema imports the rules, not the solver
+    from shaftline.shaft.alignment import AlignmentModel, ConditionResult
 
 QUANTITIES = {
     "reaction": "N",
@@ -76,12 +79,12 @@ def load_rules(path: str | Path | None = None) -> list[Rule]:
         try:
             text = Path(path).read_text(encoding="utf-8")
         except OSError:
-            raise InputError("alignment.rules_file", str(path), "", "an existing TOML file") from None
+            raise InputError("path", str(path), "", "an existing TOML file") from None
         where = str(path)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError("alignment.rules_file", where, "", f"valid TOML ({exc})") from None
+        raise InputError("path", where, "", f"valid TOML ({exc})") from None
     return [rule_from_dict(entry, f"rule[{k}]") for k, entry in enumerate(data.get("rule", []))]
 
 

@@ -70,7 +70,7 @@ def sag_and_gap(
 ) -> SagGap:
     """Sag and gap at the flange at ``flange_x`` with the line uncoupled there."""
     if not 0.0 < flange_x < line.length:
-        raise InputError("sag_gap.flange_x", flange_x, "m", f"inside the shaft, (0, {line.length:.4g})")
+        raise InputError("flange_x", flange_x, "m", f"inside the shaft, (0, {line.length:.4g})")
     condition = condition or Condition("erection")
     aft_segments, fore_segments = _split_segments(line.segments, flange_x)
     supports = tuple(line.bearings) + tuple(temporary_supports)
@@ -83,7 +83,7 @@ def sag_and_gap(
     ):
         if sum(b.points if b.support == "multi_point" else 1 for b in bearings) < 2:
             raise InputError(
-                "sag_gap.temporary_supports",
+                "temporary_supports",
                 len(temporary_supports),
                 "",
                 f"supports enough for the {name} piece to stand (at least two under it)",
