@@ -35,7 +35,7 @@ def median_time(function, repeat: int) -> tuple[float, object]:
 
 
 def ntua() -> None:
-    case = load_case(ROOT / "examples" / "ntua_stern_tube.toml").bearings[0]
+    case = load_case(ROOT / "examples" / "ntua_stern_tube.toml")["bearing"].cases[0]
     bearing = JournalBearing(case.geometry, case.operating, case.options)
     equilibrium = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y)
     position = equilibrium.state.position

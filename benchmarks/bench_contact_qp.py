@@ -1,6 +1,6 @@
 """The alignment's contact QP: shaftline's active-set solvers against off-the-shelf QP solvers.
 
-The workload is the alignment example (examples/single_screw_alignment.toml) as the jobs
+The workload is the alignment example (examples/single_screw_alignment.toml) as the pipeline
 layer runs it: its 3 conditions, the influence matrix, rule checks, the offset optimisation
 it asks for, sag and gap, and the jack-up. Two measurements:
 
@@ -46,8 +46,9 @@ import numpy as np
 
 import shaftline.shaft.alignment as alignment
 from shaftline.cases import load_case
-from shaftline.jobs import solve_alignment
+from shaftline.shaft.capability import CAPABILITY
 from shaftline.shaft.contact_qp import GAP_TOLERANCE, REGULARISATION, ContactQP, active_set_qp
+from shaftline.shaft.study import solve_alignment
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "single_screw_alignment.toml"
 Solution = tuple[np.ndarray, np.ndarray, int]
@@ -257,13 +258,13 @@ def deviation(a: dict[str, np.ndarray], b: dict[str, np.ndarray]) -> float:
 
 
 def contacts(run: Any) -> list[str]:
-    results = list(run.results) + (list(run.plan.results) if run.plan is not None else [])
+    results = list(run.conditions) + (list(run.plan.results) if run.plan is not None else [])
     return [b.contact for r in results for b in r.bearings]
 
 
 def main() -> None:
     repeats = int(sys.argv[1]) if len(sys.argv) > 1 else 7
-    case = load_case(EXAMPLE).alignment
+    case = load_case(EXAMPLE)["alignment"]
     print("Contact QP of the alignment example (3 conditions, influence matrix, rules, offset")
     print("optimisation, sag/gap, jack-up)")
     kinds = solvers()
@@ -299,7 +300,7 @@ def main() -> None:
 
     print(f"\n2. End to end: solve_alignment, median of {repeats}")
     base = run_with(Reference, case)
-    base_numbers, base_contacts = numbers(base.summary()), contacts(base)
+    base_numbers, base_contacts = numbers(CAPABILITY.to_json(base)), contacts(base)
     usable, runs, failed = {}, {}, {}
     for name, kind in kinds.items():
         try:
@@ -322,7 +323,7 @@ def main() -> None:
         print(
             f"  {name:24s} {median * 1e3:8.1f} ms  ratio {median / base_time:6.3f}  "
             f"QP share {qp_share(kinds[name], case, repeats):4.0%}  "
-            f"max rel. change {deviation(base_numbers, numbers(runs[name].summary())):8.1e}  "
+            f"max rel. change {deviation(base_numbers, numbers(CAPABILITY.to_json(runs[name]))):8.1e}  "
             f"contact states same: {contacts(runs[name]) == base_contacts}"
         )
 
