@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import os
+import tempfile
+
 import numpy as np
 import pytest
 from typer.testing import CliRunner, Result
@@ -53,3 +56,7 @@ def invoke(*args: str) -> Result:
     from shaftline.cli import make_app
 
     return CliRunner().invoke(make_app(), list(args))
+
+
+# Unit conversions remembered by the tests go to a folder of the test run, not the user's.
+os.environ.setdefault("SHAFTLINE_CACHE_DIR", tempfile.mkdtemp(prefix="shaftline-test-cache-"))

@@ -46,3 +46,52 @@ def test_bad_quantities(value, kind, fragment):
         to_si(value, kind, "bearing.length")
     assert error.value.field == "bearing.length"
     assert fragment in str(error.value)
+
+
+@pytest.mark.parametrize(
+    "value, kind",
+    [
+        ("0.45 mm", "length"),
+        ("-3.5 mm", "length"),
+        ("90 rpm", "speed"),
+        ("1.5 Hz", "speed"),
+        ("40 degC", "temperature"),
+        ("313.15 K", "temperature"),
+        ("68 cSt", "kinematic_viscosity"),
+        ("2.5e-2 MPa", "pressure"),
+        ("0.3 mrad", "angle"),
+    ],
+)
+def test_remembered_conversion_equals_pint(value, kind, tmp_path, monkeypatch):
+    """The remembered affine map of a unit gives pint's result for any number (here: the
+    first number, which stores the map, and another one with the same unit)."""
+    import shaftline.units as units
+
+    monkeypatch.setenv("SHAFTLINE_CACHE_DIR", str(tmp_path))
+    units._remembered.cache_clear()
+    number, unit = value.split(" ")
+    first = to_si(value, kind, "x")
+    assert units._remembered()[f"{kind}|{unit}"]  # stored
+    other = f"{float(number) * 7.25} {unit}"
+    assert to_si(other, kind, "x") == pytest.approx(units._parse_with_unit(other, kind, "x"), rel=1e-12, abs=1e-12)
+    assert first == pytest.approx(units._parse_with_unit(value, kind, "x"), rel=1e-12, abs=1e-12)
+    units._remembered.cache_clear()
+
+
+def test_a_known_unit_needs_no_pint(tmp_path):
+    """After one run has converted "mm", another converts "0.45 mm" without importing pint;
+    a damaged cache file only means pint is used again."""
+    import os
+    import subprocess
+    import sys
+
+    script = (
+        "import sys; from shaftline.units import to_si; print(to_si('0.45 mm', 'length', 'x'), 'pint' in sys.modules)"
+    )
+    env = {**os.environ, "SHAFTLINE_CACHE_DIR": str(tmp_path)}
+    run = lambda: subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, check=True)  # noqa: E731
+    for cache, pint_imported in (("first run", "True"), ("remembered", "False"), ("damaged", "True")):
+        if cache == "damaged":
+            (tmp_path / "unit-conversions-1.json").write_text("{not json")
+        value, imported = run().stdout.split()
+        assert float(value) == pytest.approx(0.45e-3, rel=1e-15) and imported == pint_imported, cache

@@ -66,13 +66,17 @@ def run_cases(
 ) -> None:
     """Load ``case_file``, solve what it asks for (or the capabilities in ``only``), print
     the summaries, write JSON and the report folder."""
-    from shaftline.cases import load_case
-    from shaftline.pipeline import results_document, run_case, write_outputs
-    from shaftline.report.terminal import print_blocks
+    from shaftline.cases.files import read_case_file
 
     quiet = json_path == "-"
     with input_errors():
-        case = load_case(case_file, only, overrides)
+        data = read_case_file(case_file)  # a missing file or bad TOML fails before the heavy imports
+    from shaftline.cases.loader import parse_case
+    from shaftline.pipeline import results_document, run_case, write_outputs
+    from shaftline.report.terminal import print_blocks
+
+    with input_errors():
+        case = parse_case(data, case_file.parent, only, overrides, source=case_file)
         if only is not None and not any(key in case for key in only):
             tables = ", ".join(f"[{key}]" for key in only)
             raise InputError("case file", str(case_file), "", f"a {tables} table for this command")

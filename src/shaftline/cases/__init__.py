@@ -13,6 +13,21 @@ converted once to SI domain objects.
 0.02
 """
 
-from shaftline.cases.loader import case_model, load_case, parse_case, read_case_file
+from typing import TYPE_CHECKING, Any
+
+from shaftline.cases.files import read_case_file
+
+if TYPE_CHECKING:
+    from shaftline.cases.loader import case_model, load_case, parse_case
 
 __all__ = ["case_model", "load_case", "parse_case", "read_case_file"]
+
+
+def __getattr__(name: str) -> Any:
+    # The loader brings pydantic and the schemas: imported on first use, so that reading
+    # a case file's text (and failing on a missing one) stays cheap.
+    if name in ("case_model", "load_case", "parse_case"):
+        from shaftline.cases import loader
+
+        return getattr(loader, name)
+    raise AttributeError(f"module 'shaftline.cases' has no attribute {name!r}")

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import difflib
 import math
-import tomllib
 from collections.abc import Iterable, Mapping
 from functools import lru_cache
 from pathlib import Path
@@ -20,10 +19,11 @@ from typing import Any
 from pydantic import BaseModel, Field, ValidationError, create_model
 
 from shaftline import registry
+from shaftline.cases.files import read_case_file
 from shaftline.cases.types import CaseInfo, Section
 from shaftline.errors import InputError, located
 from shaftline.pipeline import Case
-from shaftline.registry import BuildContext
+from shaftline.registry import BuildContext, SectionT
 
 
 @lru_cache(maxsize=4)
@@ -68,9 +68,9 @@ def _path(location: Iterable[Any]) -> str:
     return name
 
 
-def _model_at(location: tuple[Any, ...]) -> type[BaseModel] | None:
+def _model_at(root: type[BaseModel], location: tuple[Any, ...]) -> type[BaseModel] | None:
     """The model whose fields an error location points into (for spelling suggestions)."""
-    model: Any = case_model()
+    model: Any = root
     for part in location:
         if isinstance(part, int) or not (isinstance(model, type) and issubclass(model, BaseModel)):
             continue
@@ -116,9 +116,10 @@ _ALLOWED = {
 }
 
 
-def _input_error(error: Mapping[str, Any]) -> InputError:
-    """One pydantic error as an :class:`InputError` naming the field by its path."""
-    location = tuple(error["loc"])
+def _input_error(error: Mapping[str, Any], root: type[BaseModel], table: str) -> InputError:
+    """One pydantic error of validating ``root`` (the model of ``table``) as an
+    :class:`InputError` naming the field by its path in the file."""
+    location = (table, *error["loc"])
     kind = error["type"]
     context = error.get("ctx") or {}
     value = error.get("input")
@@ -133,7 +134,7 @@ def _input_error(error: Mapping[str, Any]) -> InputError:
         return InputError(field, "missing", "", "a value (required field)")
     if kind == "extra_forbidden":
         allowed = "no such field (check the spelling)"
-        model = _model_at(location[:-1])
+        model = _model_at(root, location[1:-1])
         if model is not None:
             close = difflib.get_close_matches(str(location[-1]), list(model.model_fields), n=1)
             if close:
@@ -154,12 +155,30 @@ def _input_error(error: Mapping[str, Any]) -> InputError:
     return InputError(field, value, "", str(error["msg"]).removeprefix("Value error, "))
 
 
-def _moved_tables(data: Mapping[str, Any]) -> None:
-    """Point a case file of the older layout (shaftline 0.1) at the tables' new places."""
-    for capability in registry.capabilities().values():
+def _top_level(data: Mapping[str, Any]) -> None:
+    """Refuse unknown tables; point a case file of the older layout (shaftline 0.1) at the
+    tables' new places."""
+    capabilities = registry.capabilities()
+    for capability in capabilities.values():
         for old, new in capability.moved_tables.items():
             if old in data:
                 raise InputError(old, "{...}", "", f"under [{new}] (the case-file layout changed: see CHANGELOG)")
+    known = ["case", *capabilities]
+    for key, value in data.items():
+        if key not in known:
+            close = difflib.get_close_matches(key, known, n=1)
+            hint = f"; did you mean [{close[0]}]?" if close else ""
+            shown = "{...}" if isinstance(value, dict) else "[...]" if isinstance(value, list) else value
+            raise InputError(key, shown, "", f"one of the tables {', '.join(f'[{k}]' for k in known)}{hint}")
+        if not isinstance(value, dict):
+            raise InputError(key, value if not isinstance(value, list) else "[...]", "", "a table [" + key + "]")
+
+
+def _validate(model: type[SectionT], data: Any, table: str) -> SectionT:
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        raise _input_error(exc.errors()[0], model, table) from None
 
 
 def _set(data: dict[str, Any], dotted: str, value: Any) -> None:
@@ -188,7 +207,8 @@ def parse_case(
     base_dir : Path, optional
         Folder that relative file names in the case are read from (default: the working folder).
     only : iterable of str, optional
-        Capability keys to build (all tables are validated; only these are built).
+        Capability keys to validate and build (default: every table of the case); the
+        other tables are left alone.
     overrides : mapping, optional
         Dotted field names and values that replace those of the file (``{"wear.pitch_log":
         "log.csv"}``), applied before validation.
@@ -202,13 +222,12 @@ def parse_case(
     for dotted, value in (overrides or {}).items():
         _set(document, dotted, value)
     _find_nan(document)
-    _moved_tables(document)
+    _top_level(document)
     capabilities = registry.capabilities()
-    try:
-        model = case_model().model_validate(document)
-    except ValidationError as exc:
-        raise _input_error(exc.errors()[0]) from None
-    present = [key for key in capabilities if getattr(model, key) is not None]
+    # Each table is validated by its own capability's model, so a file (or a verb) that
+    # uses one capability does not build, or import, the schemas of the others.
+    info = _validate(CaseInfo, document.get("case", {}), "case")
+    present = [key for key in capabilities if key in document]
     if not present:
         raise InputError(
             "case file",
@@ -217,32 +236,14 @@ def parse_case(
             "one of the tables " + ", ".join(f"[{k}]" for k in capabilities),
         )
     wanted = present if only is None else [key for key in present if key in set(only)]
-    info: CaseInfo = model.case  # type: ignore[attr-defined]
     context = BuildContext(case=info, base_dir=base_dir or Path.cwd())
     studies = {}
     for key in wanted:
+        capability = capabilities[key]
+        section = _validate(capability.schema(), document[key], key)
         with located(key):
-            studies[key] = capabilities[key].build(getattr(model, key), context)
+            studies[key] = capability.build(section, context)
     return Case(name=info.name, description=info.description, studies=studies, source=source)
-
-
-def read_case_file(path: str | Path) -> dict[str, Any]:
-    """The tables of a TOML case file (raises :class:`InputError` for a missing file or bad TOML)."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError("case file", str(path), "", "an existing file") from None
-    except IsADirectoryError:
-        raise InputError("case file", str(path), "", "a file, not a folder") from None
-    except UnicodeDecodeError:
-        raise InputError("case file", str(path), "", "a UTF-8 text file") from None
-    except OSError as exc:
-        raise InputError("case file", str(path), "", f"a readable file ({exc.strerror})") from None
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError("case file", str(path), "", f"valid TOML ({exc})") from None
 
 
 def load_case(path: str | Path, only: Iterable[str] | None = None, overrides: Mapping[str, Any] | None = None) -> Case:

@@ -1,29 +1,41 @@
 """Shaft alignment: beam model of the shaft line on its bearings.
 
-The model's dataclasses are imported at once (numpy only); the solver classes, which need
-scipy, are loaded on first use (PEP 562), so that ``import shaftline.shaft.model`` -- as
-the case schema and the command line's start-up do -- does not pay for scipy.
+Every name is imported on first use (PEP 562): the command line imports
+``shaftline.shaft.capability`` to list its verbs without numpy, and the case schema
+imports ``shaftline.shaft.model`` (numpy only) without the solver (scipy).
 """
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from shaftline.shaft.model import (
-    Bearing,
-    Condition,
-    DistributedLoad,
-    PointLoad,
-    PointMass,
-    Propeller,
-    ShaftLine,
-    ShaftSegment,
-)
-
 if TYPE_CHECKING:
     from shaftline.shaft.alignment import AlignmentModel, BearingResult, ConditionResult, InfluenceMatrix
+    from shaftline.shaft.model import (
+        Bearing,
+        Condition,
+        DistributedLoad,
+        PointLoad,
+        PointMass,
+        Propeller,
+        ShaftLine,
+        ShaftSegment,
+    )
 
 _LAZY = {
+    **{
+        name: "shaftline.shaft.model"
+        for name in (
+            "Bearing",
+            "Condition",
+            "DistributedLoad",
+            "PointLoad",
+            "PointMass",
+            "Propeller",
+            "ShaftLine",
+            "ShaftSegment",
+        )
+    },
     "AlignmentModel": "shaftline.shaft.alignment",
     "BearingResult": "shaftline.shaft.alignment",
     "ConditionResult": "shaftline.shaft.alignment",
