@@ -137,7 +137,7 @@ def test_stepwise_constant_removes_noise_within_the_dead_band():
     "time, pitch, fragment",
     [
         ([0.0, 0.1, 0.2, 0.15], [0, 1, 2, 3], "increasing"),
-        ([0.0, 0.1, 0.2, 0.3], [0, np.nan, 2, 3], "row 3, pitch"),
+        ([0.0, 0.1, 0.2, 0.3], [0, np.nan, 2, 3], "pitch[1] = 'NaN'"),
         ([0.0, 0.1, 0.2, 0.3, 9.0, 9.1], [0, 1, 2, 3, 4, 5], "gap"),
         ([0.0], [1.0], "at least 2"),
     ],
@@ -146,6 +146,24 @@ def test_bad_pitch_logs(time, pitch, fragment):
     with pytest.raises(InputError) as error:
         PitchLog(np.array(time), np.array(pitch))
     assert fragment in str(error.value)
+
+
+@pytest.mark.parametrize(
+    "rows, message",
+    [
+        ("0,0\n0.1,1\n0.2,nan\n", "log.csv: row 4, pitch = 'NaN': allowed a number"),
+        ("0,0\n0.1,1\n0.05,2\n", "log.csv: row 4, time = 0.05 s: allowed times increasing sample to sample"),
+        ("0,0\n", "file = "),
+    ],
+)
+def test_pitch_log_errors_name_the_file_row(tmp_path, rows, message):
+    from shaftline.wear.service import read_pitch_log
+
+    (tmp_path / "log.csv").write_text("time,pitch\n" + rows)
+    with pytest.raises(InputError) as error:
+        read_pitch_log(tmp_path / "log.csv")
+    assert str(error.value).startswith(message)
+    assert error.value.within("wear.pitch_log").field == error.value.field or message.startswith("file")
 
 
 @pytest.mark.parametrize(

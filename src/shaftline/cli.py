@@ -17,7 +17,7 @@ import typer
 
 import shaftline
 from shaftline import registry
-from shaftline.commandline import CaseArgument, JsonOption, OutOption, console, input_errors, run_cases
+from shaftline.commandline import CaseArgument, JsonOption, OutOption, compare_cases, run_cases
 from shaftline.registry import Capability, Verb
 
 
@@ -74,31 +74,10 @@ def _case_verb(capability: Capability[Any, Any, Any], verb: Verb) -> Callable[..
         if len(case_files) == 1:
             run_cases(case_files[0], json_path, out, only=[key], options=options)
             return
-        _compare(capability, case_files, options[key], json_path)
+        compare_cases(key, case_files, options[key], json_path, out)
 
     many.__doc__ = verb.help
     return many
-
-
-def _compare(
-    capability: Capability[Any, Any, Any], case_files: list[Path], options: dict[str, Any], json_path: str | None
-) -> None:
-    from shaftline.cases import load_case
-    from shaftline.commandline import emit_json
-    from shaftline.errors import InputError
-    from shaftline.report.terminal import print_blocks
-
-    results = []
-    with input_errors():
-        for path in case_files:
-            case = load_case(path, only=[capability.key])
-            if capability.key not in case:
-                raise InputError("case file", str(path), "", f"a [{capability.key}] table")
-            results.append((case.name, capability.solve(case[capability.key], **options)))
-    comparison = capability.compare(results)
-    if json_path != "-":
-        print_blocks(console, comparison.blocks)
-    emit_json(comparison.document, json_path)
 
 
 def make_app() -> typer.Typer:
@@ -124,10 +103,21 @@ def make_app() -> typer.Typer:
             app.add_typer(groups[path[0]], name=path[0])
         return groups[path[0]]
 
+    taken: dict[tuple[str, ...], str] = {("run",): "shaftline", ("schema",): "shaftline"}
+
+    def claim(path: tuple[str, ...], key: str) -> None:
+        # A capability must not shadow another's verb (or run, schema) without anyone noticing.
+        clash = taken.get(path) or (taken.get(path[:1]) if len(path) > 1 else None)
+        if clash is not None or (len(path) == 1 and any(p[:1] == path for p in taken if len(p) > 1)):
+            raise ValueError(f"the verb '{' '.join(path)}' of capability {key!r} is taken already")
+        taken[path] = key
+
     for capability in registry.capabilities().values():
         for verb in capability.verbs:
+            claim(verb.path, capability.key)
             group(verb.path, capability.title).command(verb.path[-1])(_case_verb(capability, verb))
         for command in capability.commands():
+            claim(command.path, capability.key)
             group(command.path, capability.title).command(command.path[-1])(command.function)
     return app
 

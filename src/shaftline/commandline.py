@@ -65,28 +65,68 @@ def run_cases(
     overrides: Mapping[str, Any] | None = None,
 ) -> None:
     """Load ``case_file``, solve what it asks for (or the capabilities in ``only``), print
-    the summaries, write JSON and the report folder."""
-    from shaftline.cases.files import read_case_file
-
-    quiet = json_path == "-"
-    with input_errors():
-        data = read_case_file(case_file)  # a missing file or bad TOML fails before the heavy imports
-    from shaftline.cases.loader import parse_case
+    the summaries, write the report folder and the JSON."""
     from shaftline.pipeline import results_document, run_case, write_outputs
     from shaftline.report.terminal import print_blocks
 
+    quiet = json_path == "-"
     with input_errors():
-        case = parse_case(data, case_file.parent, only, overrides, source=case_file)
-        if only is not None and not any(key in case for key in only):
-            tables = ", ".join(f"[{key}]" for key in only)
-            raise InputError("case file", str(case_file), "", f"a {tables} table for this command")
+        case = read_and_build(case_file, only, overrides)
         with error_console.status("solving") as status:
             result = run_case(case, only, options, progress=lambda text: status.update(text))
     if not quiet:
         for capability, value in result.capabilities():
             print_blocks(console, capability.summary(value))
-    emit_json(results_document(result), json_path)
+    # The folder first: a JSON file inside it, or beside it, is not lost when it is written.
     if out is not None:
         write_outputs(result, out, str(case_file))
-        if not quiet:
-            console.print(f"report: {out / 'report.html'}", markup=False, highlight=False)
+    emit_json(results_document(result), json_path)
+    if out is not None and not quiet:
+        console.print(f"report: {out / 'report.html'}", markup=False, highlight=False)
+
+
+def read_and_build(
+    case_file: Path, only: Sequence[str] | None = None, overrides: Mapping[str, Any] | None = None
+) -> Any:
+    """The case of ``case_file`` (raises :class:`InputError`); with ``only``, it must have
+    one of those tables."""
+    from shaftline.cases.files import read_case_file
+
+    data = read_case_file(case_file)  # a missing file or bad TOML fails before the heavy imports
+    if only is not None and not any(key in data for key in only):
+        tables = " or ".join(f"[{key}]" for key in only)
+        raise InputError("case file", str(case_file), "", f"a case file with the table {tables} for this command")
+    from shaftline.cases.loader import parse_case
+
+    return parse_case(data, case_file.parent, only, overrides, source=case_file)
+
+
+def compare_cases(
+    key: str, case_files: Sequence[Path], options: Mapping[str, Any], json_path: str | None, out: Path | None
+) -> None:
+    """Solve capability ``key`` for each case file and show the capability's comparison;
+    cases are named by their [case] name, made unique with the file name where needed."""
+    from shaftline.pipeline import run_case, write_folder
+    from shaftline.registry import capabilities
+    from shaftline.report.blocks import Section
+    from shaftline.report.terminal import print_blocks
+
+    capability = capabilities()[key]
+    results: list[tuple[str, Any]] = []
+    with input_errors():
+        for path in case_files:
+            case = read_and_build(path, [key])
+            result = run_case(case, [key], {key: options})
+            names = [name for name, _ in results]
+            name = case.name if case.name not in names else f"{case.name} ({path.name})"
+            while name in names:
+                name += "'"
+            results.append((name, result[key]))
+    comparison = capability.compare(results)
+    if json_path != "-":
+        print_blocks(console, comparison.blocks)
+    if out is not None:
+        section = Section(key, capability.title, comparison.blocks)
+        title = f"{capability.title}: {len(results)} cases compared"
+        write_folder(out, comparison.document, [section], title, "", ", ".join(map(str, case_files)), "case files")
+    emit_json(comparison.document, json_path)

@@ -22,6 +22,8 @@ def read_columns(
     try:
         with path.open(encoding="utf-8") as handle:
             header = [name.strip() for name in handle.readline().split(",")]
+    except UnicodeDecodeError:
+        raise InputError(field, str(path), "", "a CSV text file in UTF-8") from None
     except OSError:
         raise InputError(field, str(path), "", "an existing CSV file") from None
     expected = columns if order_matters else sorted(columns)
@@ -30,10 +32,12 @@ def read_columns(
     try:
         # numpy's C reader: a day of 10 Hz samples reads in a fraction of a second.
         table = np.loadtxt(path, delimiter=",", skiprows=1, dtype=float, ndmin=2)
+    except UnicodeDecodeError:
+        raise InputError(field, str(path), "", "a CSV text file in UTF-8") from None
     except ValueError as exc:
         raise InputError(field, str(path), "", f"numbers in every field ({exc})") from None
     bad = np.argwhere(~np.isfinite(table))
     if bad.size:
         row, column = (int(v) for v in bad[0])
-        raise InputError(f"{path.name}: row {row + 2}, {header[column]}", "NaN", "", "a number")
+        raise InputError(f"{path.name}: row {row + 2}, {header[column]}", "NaN", "", "a number", in_file=True)
     return {name: table[:, k] for k, name in enumerate(header)}

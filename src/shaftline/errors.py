@@ -33,16 +33,24 @@ class InputError(ValueError):
         Unit the value is expressed in (``""`` for dimensionless or text).
     allowed : str
         The allowed range or set of values, in words.
+    in_file : bool
+        The field names a place in a data file (``"log.csv: row 12, time"``), which stays
+        as it is when the error is placed under a case-file table (:meth:`within`).
     """
 
-    def __init__(self, field: str, value: Any, unit: str = "", allowed: str = "") -> None:
+    def __init__(self, field: str, value: Any, unit: str = "", allowed: str = "", in_file: bool = False) -> None:
         self.field = field
         self.value = value
         self.unit = unit
         self.allowed = allowed
-        shown = f"{value!r}" if isinstance(value, str) else f"{value}"
-        if unit:
-            shown = f"{shown} {unit}"
+        self.in_file = in_file
+        if isinstance(value, str):
+            shown = repr(value)  # text as the user wrote it; a unit is not appended to it
+        else:
+            # 12 significant digits: 0.45 mm reads 0.00045 m, not 0.00045000000000000004 m
+            shown = f"{value:.12g}" if isinstance(value, float) else f"{value}"
+            if unit:
+                shown = f"{shown} {unit}"
         message = f"{field} = {shown}"
         if allowed:
             message += f": allowed {allowed}"
@@ -59,6 +67,8 @@ class InputError(ValueError):
         ``prefix`` and the name, of fields whose first part is named differently in the
         case file (``{"point_loads": "loads", "viscosity": "lubricant.viscosity"}``).
         """
+        if self.in_file:
+            return self
         head, sep, rest = self.field.partition(".")
         name, bracket, index = head.partition("[")
         if renames and name in renames:

@@ -54,10 +54,12 @@ class Case:
 
 @dataclass(frozen=True, eq=False)
 class CaseResult:
-    """The results of a case, per capability key, in registry order."""
+    """The results of a case, per capability key, in registry order, with the capabilities
+    that made them (so that writing them does not depend on the registry of the moment)."""
 
     case: Case
     results: Mapping[str, Any]
+    solved_by: Mapping[str, Capability[Any, Any, Any]] = field(default_factory=dict)
 
     def __getitem__(self, key: str) -> Any:
         return self.results[key]
@@ -67,9 +69,8 @@ class CaseResult:
 
     def capabilities(self) -> Iterator[tuple[Capability[Any, Any, Any], Any]]:
         """(capability, result) pairs in report order."""
-        registry = capabilities()
         for key, result in self.results.items():
-            yield registry[key], result
+            yield self.solved_by.get(key) or capabilities()[key], result
 
 
 def run_case(
@@ -93,15 +94,19 @@ def run_case(
     """
     from shaftline.errors import located
 
-    wanted = set(case.studies if only is None else only)
     registry = capabilities()
-    results = {}
+    wanted = set(case.studies if only is None else only)
+    unknown = wanted - set(registry)
+    if unknown:
+        raise ValueError(f"no capability named {sorted(unknown)[0]!r}: " + ", ".join(registry))
+    results, solved_by = {}, {}
     for key, study in case.studies.items():
         if key in wanted:
             # an input found wrong only while solving is named under its table
             with located(key):
                 results[key] = registry[key].solve(study, progress, **(options or {}).get(key, {}))
-    return CaseResult(case, results)
+            solved_by[key] = registry[key]
+    return CaseResult(case, results, solved_by)
 
 
 def results_document(result: CaseResult) -> dict[str, Any]:
@@ -162,20 +167,28 @@ def report_sections(result: CaseResult) -> list[Any]:
     ]
 
 
-def write_outputs(result: CaseResult, out: str | Path, case_file: str = "") -> Path:
-    """Write ``results.json``, the figures and ``report.html`` into ``out`` (atomically)."""
+def write_folder(
+    out: str | Path,
+    document: Mapping[str, Any],
+    sections: list[Any],
+    title: str,
+    description: str = "",
+    source: str = "",
+    source_label: str = "case file",
+) -> Path:
+    """Write ``results.json`` (``document``), the figures of ``sections`` and ``report.html``
+    into the folder ``out``, atomically: a failure leaves no half-written folder."""
     from shaftline.report.html import write_report
 
     out = Path(out)
-    case = result.case
     with atomic_folder(out) as folder:
-        (folder / "results.json").write_text(dumps(results_document(result)) + "\n", encoding="utf-8")
-        write_report(
-            folder,
-            case.name,
-            case.description,
-            case_file or (str(case.source) if case.source else ""),
-            report_sections(result),
-            shaftline.__version__,
-        )
-    return Path(out)
+        (folder / "results.json").write_text(dumps(document) + "\n", encoding="utf-8")
+        write_report(folder, title, description, source, sections, shaftline.__version__, source_label)
+    return out
+
+
+def write_outputs(result: CaseResult, out: str | Path, case_file: str = "") -> Path:
+    """Write ``results.json``, the figures and ``report.html`` of a run into ``out`` (atomically)."""
+    case = result.case
+    source = case_file or (str(case.source) if case.source else "")
+    return write_folder(out, results_document(result), report_sections(result), case.name, case.description, source)

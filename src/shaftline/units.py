@@ -41,6 +41,7 @@ SI_UNITS: dict[str, str] = {
     "temperature": "degC",
     "density": "kg/m**3",
     "dimensionless": "",
+    "percent": "percent",
     "stiffness": "N/m",
     "volume_flow": "m**3/s",
     "mass": "kg",
@@ -58,6 +59,7 @@ SI_UNITS: dict[str, str] = {
 
 #: How an SI unit is written in messages and tables.
 UNIT_TEXT: dict[str, str] = {
+    "percent": "%",
     "m**2/s": "m^2/s",
     "kg/m**3": "kg/m^3",
     "m**3/s": "m^3/s",

@@ -31,7 +31,7 @@ def _type_text(annotation: Any) -> str:
     for item in _metadata(annotation):
         if isinstance(item, Quantity):
             bounds = item.allowed()
-            kind = "number" if item.kind == "dimensionless" else item.kind.replace("_", " ")
+            kind = {"dimensionless": "number", "percent": "percentage"}.get(item.kind, item.kind.replace("_", " "))
             unit = f" [{item.unit}]" if item.unit else ""
             return f"{kind}{unit}{', ' + bounds if bounds else ''}"
     origin = get_origin(annotation)

@@ -52,14 +52,15 @@ def _find_nan(data: Any, where: str = "") -> None:
         raise InputError(where, data, "", "a finite number")
 
 
-#: Parts of pydantic's error locations that name the member of a union, not a field.
-_UNION_TAGS = {"float", "int", "str", "bool", "list", "dict"}
+#: Parts of pydantic's error locations that name the member of a union (``float | str``),
+#: not a field; the schema's unions have no other members.
+_UNION_TAGS = {"float", "int", "str", "bool"}
 
 
 def _path(location: Iterable[Any]) -> str:
     name = ""
     for part in location:
-        if isinstance(part, str) and (part in _UNION_TAGS or "[" in part or part.startswith("function-")):
+        if isinstance(part, str) and part in _UNION_TAGS:
             continue
         if isinstance(part, int):
             name += f"[{part}]"
@@ -103,7 +104,7 @@ _EXPECTED = {
     "bool_parsing": "true or false",
     "bool_type": "true or false",
     "string_type": "text in quotes",
-    "list_type": "a list [...]",
+    "list_type": "a list [...] (or an array of tables [[...]])",
     "too_short": "at least {min_length} entries",
     "too_long": "at most {max_length} entries",
 }
@@ -159,10 +160,10 @@ def _top_level(data: Mapping[str, Any]) -> None:
     """Refuse unknown tables; point a case file of the older layout (shaftline 0.1) at the
     tables' new places."""
     capabilities = registry.capabilities()
-    for capability in capabilities.values():
-        for old, new in capability.moved_tables.items():
-            if old in data:
-                raise InputError(old, "{...}", "", f"under [{new}] (the case-file layout changed: see CHANGELOG)")
+    moved = [(old, new) for c in capabilities.values() for old, new in c.moved_tables.items() if old in data]
+    if moved:
+        places = "; ".join(f"[{old}] under [{new}]" for old, new in moved)
+        raise InputError(moved[0][0], "{...}", "", f"the new layout of case files: {places} (see CHANGELOG)")
     known = ["case", *capabilities]
     for key, value in data.items():
         if key not in known:
@@ -178,11 +179,16 @@ def _validate(model: type[SectionT], data: Any, table: str) -> SectionT:
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        raise _input_error(exc.errors()[0], model, table) from None
+        errors = exc.errors()
+        # A misspelt key is the cause of the "missing" field it was meant to be: report it first.
+        errors.sort(key=lambda error: error["type"] != "extra_forbidden")
+        raise _input_error(errors[0], model, table) from None
 
 
 def _set(data: dict[str, Any], dotted: str, value: Any) -> None:
     *parents, last = dotted.split(".")
+    if parents and parents[0] not in data:
+        raise InputError("case file", "{...}", "", f"a [{parents[0]}] table (needed for {dotted})")
     node = data
     for part in parents:
         node = node.setdefault(part, {})

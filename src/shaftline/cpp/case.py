@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, StrictFloat, StrictInt, model_validator
 
 from shaftline.cases.types import (
     Angle,
@@ -50,6 +50,23 @@ if TYPE_CHECKING:
 Component = Literal["force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
 StudyParameter = Literal["holding_moment", "spindle_scale", "backlash", "friction", "oil_stiffness", "water_inertia"]
 
+#: Lower limit of each study parameter's values (None: any) and the allowed range in words.
+STUDY_RANGES: dict[str, tuple[float | None, str]] = {
+    "holding_moment": (None, ""),
+    "backlash": (0.0, ">= 0"),
+    "oil_stiffness": (0.0, "> 0"),
+    "water_inertia": (0.0, ">= 0"),
+    "spindle_scale": (0.0, "> 0"),
+}
+#: SI unit of each study parameter's values.
+STUDY_UNITS = {
+    "holding_moment": "N m",
+    "backlash": "m",
+    "oil_stiffness": "N/m",
+    "water_inertia": "kg m^2",
+    "spindle_scale": "",
+}
+
 #: Kind of quantity of the values of each study parameter (friction takes law names).
 STUDY_KINDS = {
     "holding_moment": "moment",
@@ -67,7 +84,7 @@ class HarmonicSection(Section):
     """Load component (blade axes: x along the shaft, z along the spindle)."""
     order: Annotated[int, Field(ge=1)]
     """Order (per revolution)."""
-    amplitude: float | str
+    amplitude: StrictFloat | StrictInt | str
     """Amplitude: a force (N) for force components, a moment (N m) for moment components."""
     phase: Angle = 0.0
     """Phase."""
@@ -175,7 +192,7 @@ class StudySection(Section):
 
     parameter: StudyParameter
     """The varied parameter (spindle_scale multiplies the spindle torque)."""
-    values: Annotated[list[float | str], Field(min_length=1)]
+    values: Annotated[list[StrictFloat | StrictInt | str], Field(min_length=1)]
     """Its values (quantities with units; friction law names for friction)."""
     revolutions: Annotated[int, Field(ge=1, le=10000)] = 10
     """Revolutions simulated per value."""
@@ -190,8 +207,8 @@ class CppSection(Section):
     """Shaft speed."""
     propeller_diameter: PositiveLength
     """Propeller diameter (R0.7 = 0.35 D)."""
-    pitch_angle: Angle
-    """Design pitch angle."""
+    pitch_angle: Annotated[float, Quantity("angle", gt=0, lt=1.5707963267948966)]
+    """Design pitch angle, below 90 deg (a number is in radians)."""
     bearing: BladeBearingSection
     """The blade bearing."""
     loads: LoadsSection
@@ -289,6 +306,10 @@ def build_study(section: CppSection, context: BuildContext) -> BladeBearingStudy
                     raise InputError(f"study.values[{k}]", value, "", "lugre or static")
         else:
             values = [to_si(v, STUDY_KINDS[st.parameter], f"study.values[{k}]") for k, v in enumerate(st.values)]
+            low, allowed = STUDY_RANGES[st.parameter]
+            for k, value in enumerate(values):
+                if low is not None and (value < low or (value == low and allowed.startswith("> "))):
+                    raise InputError(f"study.values[{k}]", value, STUDY_UNITS[st.parameter], allowed)
         study = ParameterStudy(st.parameter, tuple(values), st.revolutions)
     return BladeBearingStudy(
         blades=section.blades,

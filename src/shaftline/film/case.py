@@ -440,7 +440,14 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
     tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)
     tilt_z = _tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, length, clearance)
 
-    def case(name: str, geometry: BearingGeometry, tilt: float) -> BearingCase:
+    def case(name: str, geometry: BearingGeometry, tilt: float, tilt_field: str) -> BearingCase:
+        # A journal that does not fit in the bore is the tilt's fault, or the bent journal's.
+        fields = {
+            "tilt_y": "bent_journal" if bent is not None else tilt_field,
+            "tilt_z": "bent_journal" if bent is not None else "operation.tilt_horizontal",
+            "load_y": "operation.load",
+            "load_z": "operation.load_horizontal",
+        }
         return BearingCase(
             name=name,
             geometry=geometry,
@@ -452,17 +459,19 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             tilt_z=tilt_z,
             lubricant=lubricant,
             temperature=lube.temperature,
+            error_fields=fields,
         )
 
-    cases = [case(context.case.name, base_geometry, tilt_y)]
+    cases = [case(context.case.name, base_geometry, tilt_y, "operation.tilt_vertical")]
     for k, variant in enumerate(section.variants):
         if variant.name == context.case.name:
             raise InputError(f"variants[{k}].name", variant.name, "", "a name other than the case's ([case] name)")
         variant_geometry = base_geometry
         if variant.bore is not None:
             variant_geometry = geometry(_bore(variant.bore, length, clearance), f"variants[{k}].bore")
-        variant_tilt = tilt_y
+        variant_tilt, tilt_field = tilt_y, "operation.tilt_vertical"
         if variant.misalignment_ratio_vertical is not None or variant.tilt_vertical is not None:
             variant_tilt = _tilt(variant.tilt_vertical, variant.misalignment_ratio_vertical, length, clearance)
-        cases.append(case(variant.name, variant_geometry, variant_tilt))
+            tilt_field = f"variants[{k}].tilt_vertical"
+        cases.append(case(variant.name, variant_geometry, variant_tilt, tilt_field))
     return BearingStudy(tuple(cases))

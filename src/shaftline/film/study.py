@@ -9,8 +9,8 @@ This is what ``[bearing]`` in a case file becomes; notebooks can build one direc
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from shaftline.film.geometry import BearingGeometry
@@ -20,15 +20,6 @@ if TYPE_CHECKING:
     from shaftline.film.bearing import Equilibrium
     from shaftline.film.dynamics import DynamicCoefficients
     from shaftline.lubricants import Lubricant
-
-
-#: Equilibrium arguments and the case-file fields they come from.
-TILT_FIELDS = {
-    "tilt_y": "operation.tilt_vertical",
-    "tilt_z": "operation.tilt_horizontal",
-    "load_y": "operation.load",
-    "load_z": "operation.load_horizontal",
-}
 
 
 @dataclass(frozen=True, eq=False)
@@ -49,6 +40,10 @@ class BearingCase:
         The lubricant (for the report).
     temperature : float or None
         Effective film temperature, degC, where given.
+    error_fields : mapping
+        Where the case file gives the equilibrium's inputs (``{"tilt_y":
+        "variants[1].tilt_vertical"}``), for an error found only while solving; empty
+        for a case built in code (errors then name ``tilt_y`` etc.).
     """
 
     name: str
@@ -61,6 +56,7 @@ class BearingCase:
     tilt_z: float = 0.0
     lubricant: Lubricant | None = None
     temperature: float | None = None
+    error_fields: Mapping[str, str] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, eq=False)
@@ -94,7 +90,7 @@ def solve_case(case: BearingCase) -> BearingResult:
 
     bearing = JournalBearing(case.geometry, case.operating, case.options)
     # A tilt that does not fit in the clearance is found only here; name it as the case file does.
-    with located("", TILT_FIELDS):
+    with located("", case.error_fields):
         equilibrium = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
     coefficients = None
     if equilibrium.converged and not equilibrium.contact:

@@ -41,8 +41,16 @@ def _kind(block: object) -> str:
     raise TypeError(f"not a report block: {block!r}")
 
 
-def render(title: str, description: str, case_file: str, sections: Sequence[Section], version: str) -> str:
-    """The report page (figures are referred to as ``figures/<file>``)."""
+def render(
+    title: str,
+    description: str,
+    source: str,
+    sections: Sequence[Section],
+    version: str,
+    source_label: str = "case file",
+) -> str:
+    """The report page (figures are referred to as ``figures/<file>``); ``source`` is the
+    input file, named ``source_label`` in the page."""
     from jinja2 import Environment, PackageLoader, select_autoescape
 
     environment = Environment(
@@ -54,12 +62,23 @@ def render(title: str, description: str, case_file: str, sections: Sequence[Sect
     environment.filters["kind"] = _kind
     environment.tests["number"] = _is_number
     return environment.get_template("report.html").render(
-        title=title, description=description, case_file=case_file, version=version, sections=sections
+        title=title,
+        description=description,
+        source=source,
+        source_label=source_label,
+        version=version,
+        sections=sections,
     )
 
 
 def write_report(
-    folder: Path, title: str, description: str, case_file: str, sections: Sequence[Section], version: str
+    folder: Path,
+    title: str,
+    description: str,
+    source: str,
+    sections: Sequence[Section],
+    version: str,
+    source_label: str = "case file",
 ) -> Path:
     """Draw every figure of ``sections`` into ``folder/figures`` and write ``folder/report.html``."""
     figures = folder / "figures"
@@ -69,5 +88,5 @@ def write_report(
             if isinstance(block, Figure):
                 draw_figure(block, figures / block.file)
     path = folder / "report.html"
-    path.write_text(render(title, description, case_file, sections, version), encoding="utf-8")
+    path.write_text(render(title, description, source, sections, version, source_label), encoding="utf-8")
     return path

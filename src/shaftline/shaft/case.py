@@ -354,9 +354,12 @@ class AlignmentSection(Section):
         if self.jack_up is not None and self.jack_up.bearing not in bearings:
             raise field_error("jack_up.bearing", self.jack_up.bearing, known)
         if self.measured_reactions is not None:
-            for name in [*self.measured_reactions.values, *(self.measured_reactions.reference or [])]:
+            for name in self.measured_reactions.values:
                 if name not in bearings:
-                    raise field_error("measured_reactions.values", name, known)
+                    raise field_error(f"measured_reactions.values.{name}", name, known)
+            for k, name in enumerate(self.measured_reactions.reference or []):
+                if name not in bearings:
+                    raise field_error(f"measured_reactions.reference[{k}]", name, known)
         for where, asked in (
             ("sag_gap.condition", self.sag_gap.condition if self.sag_gap else None),
             ("jack_up.condition", self.jack_up.condition if self.jack_up else None),
@@ -382,7 +385,7 @@ def read_jack_curve(path: Any) -> tuple[Any, Any]:
     """A measured jack-up curve from CSV: columns ``load`` (N) and ``lift`` (m)."""
     from shaftline.csvio import read_columns
 
-    table = read_columns(path, ["load", "lift"], "jack_up.measured_curve")
+    table = read_columns(path, ["load", "lift"], "measured_curve")
     return table["load"], table["lift"]
 
 
@@ -488,7 +491,7 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
     )
 
     line = build_line(section)
-    with located("rules_file"):
+    with located("", {"path": "rules_file"}):
         rules = load_rules(context.path(section.rules_file) if section.rules_file is not None else None)
     rules += [Rule(**rule.model_dump()) for rule in section.rules]
     optimise = None
@@ -511,7 +514,7 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
         ju = section.jack_up
         measured = None
         if ju.measured_curve is not None:
-            with located("jack_up.measured_curve"):
+            with located("jack_up"):
                 measured = read_jack_curve(context.path(ju.measured_curve))
         jack = JackUpRequest(ju.bearing, ju.jack_x, _condition(line, ju.condition), measured)
     reactions = None

@@ -353,6 +353,9 @@ class ShaftLine:
             raise InputError("bearings", len(self.bearings), "", "at least two supports (one leaves a mechanism)")
         located = [(f"point_loads[{k}].x", p.x) for k, p in enumerate(self.point_loads)]
         located += [(f"masses[{k}].x", m.x) for k, m in enumerate(self.masses)]
+        located += [
+            (f"conditions[{k}].loads[{j}].x", p.x) for k, c in enumerate(self.conditions) for j, p in enumerate(c.loads)
+        ]
         for where, value in located:
             x = require_finite(where, value, "m")
             if not 0.0 <= x <= length:

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from shaftline.errors import located
 from shaftline.registry import BuildContext, Capability, Command, Progress, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
 
@@ -201,16 +202,20 @@ def weibull(
     out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
 ) -> None:
     """Weibull fit (maximum likelihood) of wear samples with confidence bounds."""
-    import shaftline
+    import math
+
     from shaftline.commandline import console, emit_json, input_errors
-    from shaftline.pipeline import atomic_folder, dumps
+    from shaftline.errors import InputError
+    from shaftline.pipeline import write_folder
     from shaftline.report.blocks import Section
-    from shaftline.report.html import write_report
     from shaftline.wear import figures
     from shaftline.wear.reliability import fit_weibull, read_samples
 
     with input_errors():
-        fit = fit_weibull(read_samples(data_file), confidence)
+        if threshold is not None and not (math.isfinite(threshold) and threshold > 0):
+            raise InputError("--threshold", threshold, "", "a positive number in the unit of the data")
+        with located("", {"confidence": "--confidence"}):
+            fit = fit_weibull(read_samples(data_file), confidence)
     document: dict[str, Any] = {**weibull_json(fit), "samples": fit.samples.tolist()}
     lines = [weibull_text(fit)]
     if threshold is not None:
@@ -220,19 +225,15 @@ def weibull(
     if json_path != "-":
         for line in lines:
             console.print(line, markup=False, highlight=False)
-    emit_json(document, json_path)
     if out is not None:
         marks = {"threshold": threshold} if threshold is not None else None
-        section = Section(
-            "weibull",
-            "Weibull fit",
-            [*(Paragraph(line) for line in lines), Figure("weibull.png", figures.weibull, (fit, 1.0, "value", marks))],
-        )
-        with atomic_folder(out) as folder:
-            (folder / "results.json").write_text(dumps(document) + "\n", encoding="utf-8")
-            write_report(
-                folder, f"Weibull fit of {data_file.name}", "", str(data_file), [section], shaftline.__version__
-            )
+        blocks: list[Block] = [
+            *(Paragraph(line) for line in lines),
+            Figure("weibull.png", figures.weibull, (fit, 1.0, "value", marks)),
+        ]
+        section = Section("weibull", "Weibull fit", blocks)
+        write_folder(out, document, [section], f"Weibull fit of {data_file.name}", "", str(data_file), "data file")
+    emit_json(document, json_path)
 
 
 CAPABILITY = ServiceWear()

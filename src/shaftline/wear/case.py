@@ -7,7 +7,6 @@ from typing import TYPE_CHECKING, Annotated
 from pydantic import Field, model_validator
 
 from shaftline.cases.types import (
-    Length,
     PositiveFrequency,
     PositiveLength,
     PositivePressure,
@@ -42,8 +41,8 @@ class ServiceSection(Section):
 class ActiveControlSection(Section):
     """Active (MIMO) pitch control: an oscillation added to the pitch during free sailing (Sect. 6.3)."""
 
-    amplitude: Annotated[float, Quantity("dimensionless", gt=0)]
-    """Amplitude, % of design pitch."""
+    amplitude: Annotated[float, Quantity("percent", gt=0, lt=100)]
+    """Amplitude, % of design pitch (a number or e.g. "3 %")."""
     frequency: PositiveFrequency
     """Frequency of the oscillation."""
     start: Time
@@ -61,7 +60,7 @@ class ActiveControlSection(Section):
 class FrettingSection(Section):
     """Fretting at the blade bearing: 2 amplitude of sliding per shaft revolution (Eq. 6.8)."""
 
-    amplitude: Length
+    amplitude: PositiveLength
     """Fretting amplitude at the bearing radius."""
     shaft_speed: PositiveSpeed
     """Shaft speed while fretting."""
@@ -79,12 +78,18 @@ class WeibullSection(Section):
     confidence: Annotated[float, Quantity("dimensionless", gt=0.5, lt=1)] = 0.95
     """Two-sided level of the bounds."""
 
+    @model_validator(mode="after")
+    def _spread(self) -> WeibullSection:
+        if len(set(self.wear_depths)) == 1:
+            raise field_error("wear_depths", self.wear_depths[0], "depths that are not all equal", "m")
+        return self
+
 
 class WearSection(Section):
     """Service wear of a CPP blade bearing: sliding from pitch usage, wear over the overhaul period."""
 
-    design_pitch_angle: Annotated[float, Quantity("angle", gt=0)]
-    """Design pitch angle (100 % pitch)."""
+    design_pitch_angle: Annotated[float, Quantity("angle", gt=0, lt=1.5707963267948966)]
+    """Design pitch angle (100 % pitch), below 90 deg (a number is in radians)."""
     bearing_radius: PositiveLength
     """Radius of the blade bearing at which sliding is counted."""
     contact_pressure: PositivePressure
@@ -95,11 +100,12 @@ class WearSection(Section):
     """Specific wear rate (e.g. "0.54e-7 mm^3/(N*m)"); or material_pair."""
     material_pair: str | None = None
     """A material pair of the bundled data set (seed 000 Tables 5.4, 5.6, 5.12)."""
-    dead_band: Annotated[float, Quantity("dimensionless", gt=0, lt=50)] = 0.5
-    """Dead band of the stepwise-constant noise removal, % of design pitch (the actuation resolution)."""
+    dead_band: Annotated[float, Quantity("percent", gt=0, lt=50)] = 0.5
+    """Dead band of the stepwise-constant noise removal, % of design pitch (the actuation resolution;
+    a number or e.g. "0.5 %")."""
     pitch_log: str | None = None
     """CSV of one voyage: columns time (s), pitch (% of design pitch); path relative to the case file."""
-    pitch_travel_per_voyage: Annotated[float, Quantity("dimensionless", ge=0)] | None = None
+    pitch_travel_per_voyage: Annotated[float, Quantity("dimensionless", gt=0)] | None = None
     """Pitch travel of a voyage in design pitches, when there is no log."""
     service: ServiceSection
     """Service profile."""
@@ -149,10 +155,12 @@ def build_study(section: WearSection, context: BuildContext) -> WearStudy:
     mimo = None
     if section.mimo is not None:
         m = section.mimo
-        if log is not None and not log.time[0] <= m.start < m.end <= log.time[-1]:
-            raise InputError(
-                "mimo.end", m.end, "s", f"start < end within the log [{log.time[0]:g}, {log.time[-1]:g}] s"
-            )
+        if log is not None:
+            first, last = float(log.time[0]), float(log.time[-1])
+            if not first <= m.start < last:
+                raise InputError("mimo.start", m.start, "s", f"within the pitch log, [{first:g}, {last:g}) s")
+            if m.end > last:
+                raise InputError("mimo.end", m.end, "s", f"within the pitch log, <= {last:g} s")
         mimo = ActiveControl(m.amplitude, m.frequency, m.start, m.end)
     fretting = None
     if section.fretting is not None:

@@ -114,6 +114,8 @@ def read_samples(path) -> np.ndarray:
     path = Path(path)
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
+    except UnicodeDecodeError:
+        raise InputError("data file", str(path), "", "a CSV text file in UTF-8") from None
     except OSError:
         raise InputError("data file", str(path), "", "an existing CSV file") from None
     values = []

@@ -38,21 +38,21 @@ class PitchLog:
         time = np.asarray(self.time, dtype=float)
         pitch = np.asarray(self.pitch, dtype=float)
         if time.ndim != 1 or time.size != pitch.size or time.size < 2:
-            raise InputError("pitch_log", time.size, "samples", "at least 2 (time, pitch) pairs")
+            raise InputError("time", time.size, "samples", "at least 2 (time, pitch) pairs")
         for name, values in (("time", time), ("pitch", pitch)):
             bad = np.flatnonzero(~np.isfinite(values))
             if bad.size:
-                raise InputError(f"pitch_log: row {int(bad[0]) + 2}, {name}", "NaN", "", "a number")
+                raise InputError(f"{name}[{int(bad[0])}]", "NaN", "", "a number")
         steps = np.diff(time)
         if np.any(steps <= 0):
-            row = int(np.flatnonzero(steps <= 0)[0]) + 3
-            raise InputError(f"pitch_log: row {row}, time", float(time[row - 2]), "s", "times increasing row to row")
+            k = int(np.flatnonzero(steps <= 0)[0]) + 1
+            raise InputError(f"time[{k}]", float(time[k]), "s", "times increasing sample to sample")
         typical = float(np.median(steps))
         if np.any(steps > 10 * typical):
-            row = int(np.flatnonzero(steps > 10 * typical)[0]) + 3
+            k = int(np.flatnonzero(steps > 10 * typical)[0]) + 1
             raise InputError(
-                f"pitch_log: row {row}, time",
-                float(time[row - 2]),
+                f"time[{k}]",
+                float(time[k]),
                 "s",
                 f"no gap longer than 10 sampling intervals ({10 * typical:.3g} s)",
             )
@@ -65,9 +65,19 @@ class PitchLog:
 
 
 def read_pitch_log(path: str | Path) -> PitchLog:
-    """A pitch log from CSV with columns ``time`` (s) and ``pitch`` (% of design pitch)."""
-    columns = read_columns(path, ["time", "pitch"], "pitch_log")
-    return PitchLog(columns["time"], columns["pitch"])
+    """A pitch log from CSV with columns ``time`` (s) and ``pitch`` (% of design pitch);
+    an error names the file's row (the header is row 1)."""
+    path = Path(path)
+    columns = read_columns(path, ["time", "pitch"], "file")
+    try:
+        return PitchLog(columns["time"], columns["pitch"])
+    except InputError as error:
+        name, _, index = error.field.rstrip("]").partition("[")
+        if not index:
+            raise InputError("file", str(path), "", f"{error.allowed} (has {error.value})") from None
+        raise InputError(
+            f"{path.name}: row {int(index) + 2}, {name}", error.value, error.unit, error.allowed, in_file=True
+        ) from None
 
 
 def stepwise_constant(signal: np.ndarray, dead_band: float) -> np.ndarray:

@@ -119,6 +119,7 @@ class WearResult:
 
 def solve_wear(study: WearStudy, progress: Callable[[str], None] | None = None) -> WearResult:
     """Sliding distances (standard control, active control, fretting), depths and probabilities."""
+    from shaftline.errors import InputError, located
     from shaftline.wear.archard import allowable_rate
     from shaftline.wear.reliability import fit_weibull
     from shaftline.wear.service import (
@@ -158,7 +159,12 @@ def solve_wear(study: WearStudy, progress: Callable[[str], None] | None = None) 
         distances["standard control with fretting"] = standard + fretting_distance(
             f.amplitude, f.speed, study.voyage_duration
         )
-    weibull = fit_weibull(study.tests.rates, study.tests.confidence) if study.tests is not None else None
+    if travel == 0.0:
+        raise InputError("pitch_log", "no pitch change", "", "a voyage with pitch travel beyond the dead band")
+    weibull = None
+    if study.tests is not None:
+        with located("weibull", {"samples": "weibull.wear_depths"}):
+            weibull = fit_weibull(study.tests.rates, study.tests.confidence)
     scenarios = []
     voyages = study.service.voyages()
     per_year = study.service.voyages(1.0)
