@@ -182,3 +182,106 @@ def test_bad_film_profile_csv(tmp_path, text, fragment):
     with pytest.raises(InputError) as error:
         parse_case(with_change("bearing.film_profile", {"file": "wear.csv"}), tmp_path)
     assert fragment in str(error.value)
+
+
+WEAR = {
+    "wear": {
+        "design_pitch_angle": "28 deg",
+        "bearing_radius": "0.392 m",
+        "contact_pressure": "21 MPa",
+        "allowable_depth": "0.2 mm",
+        "wear_rate": "0.54e-7 mm^3/(N*m)",
+        "pitch_travel_per_voyage": 9.54,
+        "service": {"voyages_per_day": 10, "days_per_year": 340, "years": 5},
+    }
+}
+
+
+def test_percent_fields_take_percent_signs():
+    """dead_band is in % of design pitch: '0.5 %' is 0.5, as the number 0.5 is (pint alone
+    would make it 0.005, a dead band 100 times too fine)."""
+    data = copy.deepcopy(WEAR)
+    data["wear"]["dead_band"] = "0.5 %"
+    assert parse_case(data)["wear"].dead_band == pytest.approx(0.5)
+
+
+@pytest.mark.parametrize(
+    "change, field, fragment",
+    [
+        ({"design_pitch_angle": "90 deg"}, "wear.design_pitch_angle", "in (0, 1.5708)"),
+        ({"design_pitch_angle": 28}, "wear.design_pitch_angle", "in (0, 1.5708)"),  # radians
+        ({"pitch_travel_per_voyage": 0}, "wear.pitch_travel_per_voyage", "> 0"),
+        ({"fretting": {"amplitude": "-0.3 mm", "shaft_speed": "150 rpm"}}, "wear.fretting.amplitude", "> 0"),
+        (
+            {"weibull": {"wear_depths": ["0.1 mm"] * 3, "test_pressure": "48 MPa", "test_distance": "10 km"}},
+            "wear.weibull.wear_depths",
+            "not all equal",
+        ),
+        ({"dead_band": "0.5 mm"}, "wear.dead_band", "quantity of percent"),
+    ],
+)
+def test_wear_inputs(change, field, fragment):
+    data = copy.deepcopy(WEAR)
+    data["wear"].update(change)
+    with pytest.raises(InputError) as error:
+        parse_case(data)
+    assert error.value.field == field and fragment in str(error.value)
+
+
+@pytest.mark.parametrize(
+    "path, value, message",
+    [
+        ("bearing.lenght", "1 m", "bearing.lenght = '1 m': allowed no such field; did you mean 'length'?"),
+        (
+            "bearing.lubrication",
+            {"viscosity": 0.02},
+            "bearing.lubrication = '{...}': allowed no such field; did you mean",
+        ),
+        ("bearing.lubricant.density", "900 kg/m^3", "bearing.lubricant.density"),  # with a preset: see below
+        ("bearin", {}, "bearin = '{...}': allowed one of the tables"),
+    ],
+)
+def test_misspelt_keys_are_named(path, value, message):
+    data = with_change(path, value)
+    if path == "bearing.lenght":
+        data["bearing"].pop("length")
+    if path == "bearing.lubrication":
+        data["bearing"].pop("lubricant")
+    if path == "bearing.lubricant.density":
+        data["bearing"]["lubricant"] = {"preset": "ISO VG 68", "temperature": 40, "density": 900}
+    with pytest.raises(InputError) as error:
+        parse_case(data)
+    assert str(error.value).startswith(message)
+
+
+def test_a_variants_own_tilt_is_named_when_it_does_not_fit():
+    from shaftline.pipeline import run_case
+
+    data = with_change("bearing.variants", [{"name": "tilted", "tilt_vertical": "3 mrad"}])
+    with pytest.raises(InputError) as error:
+        run_case(parse_case(data))
+    assert error.value.field == "bearing.variants[0].tilt_vertical"
+
+
+def test_all_moved_tables_are_named():
+    with pytest.raises(InputError) as error:
+        parse_case({"bearing": {}, "operation": {}, "lubricant": {}, "shaft": {}})
+    text = str(error.value)
+    for old, new in (
+        ("operation", "bearing.operation"),
+        ("lubricant", "bearing.lubricant"),
+        ("shaft", "alignment.shaft"),
+    ):
+        assert f"[{old}] under [{new}]" in text
+
+
+def test_booleans_are_not_numbers():
+    from pathlib import Path
+
+    import tomllib
+
+    example = tomllib.loads((Path(__file__).parents[1] / "examples" / "cpp_blade_bearing.toml").read_text())
+    example["cpp"]["loads"]["harmonics"][0]["amplitude"] = True
+    with pytest.raises(InputError) as error:
+        parse_case(example, only=["cpp"])
+    assert error.value.field == "cpp.loads.harmonics[0].amplitude"

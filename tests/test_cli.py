@@ -109,3 +109,45 @@ def test_schema_verb_prints_the_json_schema():
     assert length["x-unit"] == "m" and length["exclusiveMinimum"] == 0
     markdown = invoke("schema", "--format", "markdown").stdout
     assert "#### `[bearing.operation]`" in markdown
+
+
+def test_json_inside_the_report_folder_is_kept(case, tmp_path):
+    out = tmp_path / "out"
+    result = invoke("bearing", "solve", str(case), "--out", str(out), "--json", str(out / "summary.json"))
+    assert result.exit_code == 0, result.output
+    assert json.loads((out / "summary.json").read_text())["case"] == "small bearing"
+    assert (out / "report.html").exists()
+
+
+def test_pitchlog_needs_a_wear_table(case, tmp_path):
+    log = tmp_path / "log.csv"
+    log.write_text("time,pitch\n0,0\n0.1,1\n")
+    result = invoke("wear", "pitchlog", str(log), "--case", str(case))
+    assert result.exit_code == 2 and "[wear]" in result.stderr
+
+
+@pytest.mark.parametrize("threshold", ["nan", "inf", "-1"])
+def test_weibull_threshold_must_be_a_positive_number(tmp_path, threshold):
+    data = tmp_path / "d.csv"
+    data.write_text("x\n0.1\n0.2\n0.15\n0.12\n")
+    result = invoke("wear", "weibull", str(data), "--threshold", threshold, "--json", "-")
+    assert result.exit_code == 2 and result.stderr.startswith("error: --threshold")
+
+
+def test_non_utf8_files_are_input_errors(tmp_path):
+    data = tmp_path / "d.csv"
+    data.write_bytes(b"x\n0.1\n\xff\n")
+    result = invoke("wear", "weibull", str(data))
+    assert result.exit_code == 2 and "UTF-8" in result.stderr
+    case = tmp_path / "c.toml"
+    case.write_bytes(b'[bearing]\nlength = "\xff"\n')
+    result = invoke("run", str(case))
+    assert result.exit_code == 2 and "UTF-8" in result.stderr
+
+
+def test_run_case_refuses_unknown_capabilities():
+    from shaftline.cases import parse_case
+    from shaftline.pipeline import run_case
+
+    with pytest.raises(ValueError, match="nonsense"):
+        run_case(parse_case({"wear": {}}, only=[]), only=["nonsense"])

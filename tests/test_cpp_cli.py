@@ -72,8 +72,26 @@ def test_load_table_ranking_and_study(tmp_path):
         'name = "CPP blade bearing, fretting check"', 'name = "calmer wake"'
     )
     (tmp_path / "calm.toml").write_text(calmer)
-    ranking = json.loads(shaftline("cpp", "fretting", str(EXAMPLE), str(tmp_path / "calm.toml"), "--json", "-").stdout)
-    assert [r["case"] for r in ranking["ranking"]] == ["CPP blade bearing, fretting check", "calmer wake"]
+    compared = shaftline(
+        "cpp",
+        "fretting",
+        str(EXAMPLE),
+        str(tmp_path / "calm.toml"),
+        str(EXAMPLE),
+        "--json",
+        "-",
+        "--out",
+        str(tmp_path / "rank"),
+    )
+    ranking = json.loads(compared.stdout)
+    # the same case twice is ranked twice, told apart by its file name
+    assert [r["case"] for r in ranking["ranking"]] == [
+        "CPP blade bearing, fretting check",
+        "CPP blade bearing, fretting check (cpp_blade_bearing.toml)",
+        "calmer wake",
+    ]
+    assert "Fretting risk" in (tmp_path / "rank" / "report.html").read_text()
+    assert json.loads((tmp_path / "rank" / "results.json").read_text()) == ranking
     study = json.loads(shaftline("cpp", "motion", str(EXAMPLE), "--json", "-").stdout)["cpp"]["study"]
     amplitudes = study["fretting_amplitude"]
     assert study["parameter"] == "backlash" and all(a < b for a, b in zip(amplitudes, amplitudes[1:], strict=False))

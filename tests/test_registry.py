@@ -102,3 +102,14 @@ def test_the_registry_is_restored_and_keys_are_unique(pin):
     registry.unregister("pin")
     assert "pin" not in registry.capabilities()
     registry.register(pin)  # the fixture removes it again
+
+
+def test_a_verb_cannot_shadow_another(pin):
+    from shaftline.cli import make_app
+
+    class Shadow(PinShear):
+        key = "shadow"
+        verbs = (Verb(("bearing", "solve"), "a second bearing solve"),)
+
+    with registry.registered(Shadow()), pytest.raises(ValueError, match="bearing solve"):
+        make_app()

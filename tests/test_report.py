@@ -14,7 +14,7 @@ from shaftline.report.blocks import Paragraph, Section, Table
 from shaftline.report.html import render
 
 CASE = {
-    "case": {"name": "<script>alert('case')</script>", "description": "a & b <i>"},
+    "case": {"name": "<script>alert('case')</script> price $x^$", "description": "a & b <i>"},
     "bearing": {
         "length": 0.1,
         "diameter": 0.1,
@@ -22,7 +22,7 @@ CASE = {
         "operation": {"speed": 60.0, "load": 5e3},
         "lubricant": {"viscosity": 0.02},
         "solver": {"axial_nodes": 15, "circumferential_nodes": 48},
-        "variants": [{"name": "<img src=x onerror=alert(1)>", "misalignment_ratio_vertical": 0.2}],
+        "variants": [{"name": "<img src=x onerror=alert(1)> $\\alpha$", "misalignment_ratio_vertical": 0.2}],
     },
 }
 
@@ -41,6 +41,7 @@ def test_user_text_is_escaped_everywhere(solved, tmp_path):
     html = (tmp_path / "out" / "report.html").read_text()
     assert "<script>" not in html and "<img src=x" not in html and "<i>" not in html
     assert "&lt;script&gt;" in html and "&lt;img src=x onerror=alert(1)&gt;" in html
+    assert "price $x^$" in html  # and the figures with these names in titles and labels were drawn
     assert "case &lt;file&gt;.toml" in html
     # the report drew its figures without pyplot and without switching the backend
     assert matplotlib.get_backend() == backend

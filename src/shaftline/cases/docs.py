@@ -36,6 +36,9 @@ def _type_text(annotation: Any) -> str:
             return f"{kind}{unit}{', ' + bounds if bounds else ''}"
     origin = get_origin(annotation)
     args = get_args(annotation)
+    bounds = _bounds(_metadata(annotation))
+    if bounds and args:  # Annotated[int, Field(ge=5)], Annotated[list[...], Field(min_length=2)]
+        return f"{_type_text(args[0])}, {bounds}"
     if origin is Literal:
         return "one of " + ", ".join(f"`{a}`" for a in args)
     if origin in (Union, types.UnionType):
@@ -50,6 +53,27 @@ def _type_text(annotation: Any) -> str:
     if isinstance(annotation, type) and issubclass(annotation, BaseModel):
         return "table"
     return {int: "integer", float: "number", str: "text", bool: "true/false"}.get(annotation, str(annotation))
+
+
+def _bounds(metadata: list[Any]) -> str:
+    """Range and length limits of annotated_types metadata, in words (``>= 5``, ``2 to 8 entries``)."""
+    import annotated_types as at
+    from pydantic.fields import FieldInfo
+
+    words = []
+    flat = [entry for item in metadata for entry in (item.metadata if isinstance(item, FieldInfo) else [item])]
+    for item in flat:
+        for cls, symbol, name in ((at.Gt, ">", "gt"), (at.Ge, ">=", "ge"), (at.Lt, "<", "lt"), (at.Le, "<=", "le")):
+            if isinstance(item, cls):
+                words.append(f"{symbol} {getattr(item, name)}")
+        if isinstance(item, at.MinLen):
+            words.append(f"at least {item.min_length} entries")
+        if isinstance(item, at.MaxLen):
+            words.append(f"at most {item.max_length} entries")
+    for n in range(1, 100):
+        if f"at least {n} entries" in words and f"at most {n} entries" in words:
+            words = [w for w in words if not w.endswith(f" {n} entries")] + [f"exactly {n} entries"]
+    return ", ".join(words)
 
 
 def _nested(annotation: Any) -> tuple[type[BaseModel], bool] | None:

@@ -8,11 +8,21 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from shaftline.registry import BuildContext, Capability, Comparison, Progress, Verb, no_progress
-from shaftline.report.blocks import Block, Figure, Heading, Table
+from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table
 
 if TYPE_CHECKING:
     from shaftline.cpp.case import CppSection
     from shaftline.cpp.study import BladeBearingResult, BladeBearingStudy
+
+
+#: Display unit and scale of the values of each study parameter.
+STUDY_DISPLAY = {
+    "holding_moment": ("kN m", 1e-3),
+    "backlash": ("mm", 1e3),
+    "oil_stiffness": ("MN/m", 1e-6),
+    "water_inertia": ("kg m²", 1.0),
+    "spindle_scale": ("", 1.0),
+}
 
 
 class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingResult"]):
@@ -109,19 +119,32 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
         if "motion" in s:
             m = s["motion"]
             rows += [
-                ["fretting amplitude at bearing radius [um]", f"{m['fretting_amplitude'] * 1e6:.1f}"],
+                ["fretting amplitude at bearing radius [µm]", f"{m['fretting_amplitude'] * 1e6:.1f}"],
                 ["sliding per revolution [mm]", f"{m['sliding_per_revolution'] * 1e3:.3f}"],
                 ["oil pressure fluctuation [bar]", f"{m['pressure_fluctuation'] / 1e5:.3f}"],
             ]
         return Table(["quantity", "value"], rows, "CPP blade bearing")
 
+    def _warnings(self, result: BladeBearingResult) -> list[Block]:
+        c = result.coefficient
+        if not c.fretting:
+            return []
+        return [
+            Paragraph(
+                f"Gross fretting in both directions every revolution: the spindle torque overcomes the friction "
+                f"torque (k_fret from {c.minimum:.2f} to {c.maximum:.2f}); the blade bearing slides back and forth.",
+                "warn",
+            )
+        ]
+
     def summary(self, result: BladeBearingResult) -> list[Block]:
-        return [self._table(result)]
+        return [*self._warnings(result), self._table(result)]
 
     def report(self, result: BladeBearingResult) -> list[Block]:
         from shaftline.cpp import figures
 
         blocks: list[Block] = [
+            *self._warnings(result),
             self._table(result),
             Figure("cpp_torques.png", figures.torques, (result,), caption="spindle and friction torque"),
         ]
@@ -129,11 +152,15 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
             blocks.append(Figure("cpp_motion.png", figures.motion, (result,), caption="fretting motion"))
         if result.parameter_study is not None and result.study.study is not None:
             parameter = result.study.study.parameter
-            blocks.append(Heading(f"Parameter study: {parameter}"))
+            unit, scale = STUDY_DISPLAY.get(parameter, ("", 1.0))
+            blocks.append(Heading(f"Parameter study: {parameter.replace('_', ' ')}"))
             blocks.append(
                 Table(
-                    [parameter, "fretting amplitude [um]"],
-                    [[str(v), f"{a * 1e6:.1f}"] for v, a in result.parameter_study],
+                    [f"{parameter.replace('_', ' ')}{f' [{unit}]' if unit else ''}", "fretting amplitude [µm]"],
+                    [
+                        [v if isinstance(v, str) else f"{v * scale:.4g}", f"{a * 1e6:.1f}"]
+                        for v, a in result.parameter_study
+                    ],
                 )
             )
         return blocks

@@ -212,6 +212,8 @@ class LubricantSection(Section):
             for name, value in zip(names, two_points, strict=True):
                 if value is None:
                     raise field_error(name, "missing", "all four two-point fields")
+        if self.preset is not None and self.density is not None:
+            raise field_error("density", self.density, "no density with a preset (the preset has its own)", "kg/m^3")
         if self.viscosity is None and self.temperature is None:
             raise field_error("temperature", "missing", "a film temperature with a preset or a two-point oil", "degC")
         return self

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from shaftline.report.plotting import figure_function
+from shaftline.report.plotting import figure_function, plain
 
 if TYPE_CHECKING:
     from shaftline.film.bearing import BearingState
@@ -44,7 +44,7 @@ def film_and_pressure_maps(state: BearingState, title: str = "", *, ax: Any) -> 
         axes.set_xlim(0, 360)
         axes.set_xticks(range(0, 361, 60))
     ax[0].plot(np.degrees(state.min_film_theta), state.min_film_z, "wx", ms=9, mew=2)
-    head = f"{title}: " if title else ""
+    head = f"{plain(title)}: " if title else ""
     ax[0].set_title(f"{head}h_min = {state.min_film_thickness * 1e6:.1f} µm")
     ax[1].plot(np.degrees(state.max_pressure_theta), state.max_pressure_z, "c+", ms=11, mew=2)
     ax[1].set_title(f"p_max = {state.max_pressure / 1e6:.2f} MPa")
@@ -64,7 +64,7 @@ def circumferential_profile(state: BearingState, title: str = "", *, ax: Any) ->
     twin = ax.twinx()
     twin.plot(theta, state.film[row, order] * 1e6, color="C0", label="film")
     twin.set_ylabel("film thickness [µm]", color="C0")
-    ax.set_title(f"{title + ': ' if title else ''}plane of p_max, z = {z[row]:.3f} m")
+    ax.set_title(f"{plain(title) + ': ' if title else ''}plane of p_max, z = {z[row]:.3f} m")
     return ax
 
 
@@ -80,7 +80,7 @@ def axial_profiles(state: BearingState, title: str = "", *, ax: Any) -> Any:
     twin.plot(z, state.pressure.max(axis=1) / 1e6, color="C3", marker=".", label="p_max(z)")
     twin.set_ylabel("largest pressure [MPa]", color="C3")
     ax.axvline(0.5 * z[-1] + state.load_centre_offset, color="k", ls="--", lw=0.8)
-    ax.set_title(f"{title + ': ' if title else ''}along the bearing (dashed: load centre)")
+    ax.set_title(f"{plain(title) + ': ' if title else ''}along the bearing (dashed: load centre)")
     return ax
 
 
@@ -89,7 +89,6 @@ def comparison(names: Sequence[str], states: Sequence[BearingState], *, ax: Any)
     """Bar charts of h_min, p_max and power loss across the variants of a study; ``ax`` is
     three axes."""
     positions = np.arange(len(names))
-    short = [name.split(",")[-1].strip() for name in names]
     data = (
         ([s.min_film_thickness * 1e6 for s in states], "h_min [µm]"),
         ([s.max_pressure / 1e6 for s in states], "p_max [MPa]"),
@@ -97,6 +96,6 @@ def comparison(names: Sequence[str], states: Sequence[BearingState], *, ax: Any)
     )
     for axes, (values, label) in zip(ax, data, strict=True):
         axes.bar(positions, values, color=[f"C{k}" for k in range(len(names))])
-        axes.set_xticks(positions, short, rotation=15)
+        axes.set_xticks(positions, [plain(name) for name in names], rotation=20, ha="right", fontsize=8)
         axes.set_ylabel(label)
     return ax

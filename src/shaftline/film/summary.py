@@ -106,9 +106,9 @@ def equilibrium_summary(equilibrium: Equilibrium, coefficients: DynamicCoefficie
             "force_residual": equilibrium.residual,
         }
     )
-    if coefficients is not None:
-        out["stiffness"] = coefficients.stiffness.tolist()
-        out["damping"] = coefficients.damping.tolist()
+    # Present but null where the film does not carry the load (no linearisation there).
+    out["stiffness"] = coefficients.stiffness.tolist() if coefficients is not None else None
+    out["damping"] = coefficients.damping.tolist() if coefficients is not None else None
     return {k: _clean(v) for k, v in out.items()}
 
 
@@ -119,8 +119,8 @@ EXTRA_FIELDS: list[tuple[str, str, str]] = [
     ("converged", "-", "equilibrium reached within the tolerance"),
     ("iterations", "-", "Newton iterations"),
     ("force_residual", "N", "magnitude of film force + load at the end"),
-    ("stiffness", "N/m, [[Kyy, Kyz], [Kzy, Kzz]]", "film stiffness matrix in (y, z)"),
-    ("damping", "N s/m, [[Cyy, Cyz], [Czy, Czz]]", "film damping matrix in (y, z)"),
+    ("stiffness", "N/m, [[Kyy, Kyz], [Kzy, Kzz]]", "film stiffness matrix in (y, z); null where the film fails"),
+    ("damping", "N s/m, [[Cyy, Cyz], [Czy, Czz]]", "film damping matrix in (y, z); null where the film fails"),
 ]
 EXTRA_UNITS = {key: unit for key, unit, _ in EXTRA_FIELDS}
 

@@ -47,3 +47,9 @@ def figure_function(
         return FigureFunction(function, layout, size, sharex)
 
     return wrap
+
+
+def plain(text: str) -> str:
+    """User text (a case, condition or bearing name) as matplotlib shows it literally: a
+    pair of ``$`` would otherwise start mathtext, and an unpaired one fails to draw."""
+    return text.replace("$", r"\$")

@@ -16,7 +16,7 @@ if TYPE_CHECKING:
 #: Display unit and scale of each rule quantity.
 RULE_UNITS = {
     "reaction": ("kN", 1e-3),
-    "reaction_share": ("-", 1.0),
+    "reaction_share": ("", 1.0),
     "mean_pressure": ("MPa", 1e-6),
     "relative_slope": ("mrad", 1e3),
 }
@@ -49,8 +49,8 @@ def rule_check_rows(checks: list[RuleCheck]) -> list[list[str]]:
                 c.rule.id,
                 c.condition,
                 c.bearing,
-                f"{c.value * scale:.4g} {unit}",
-                f"{c.rule.comparison} {c.rule.limit * scale:.4g}",
+                f"{c.value * scale:.4g} {unit}".rstrip(),
+                f"{c.rule.comparison} {c.rule.limit * scale:.4g} {unit}".rstrip(),
                 c.rule.society,
                 c.rule.confidence,
             ]
@@ -197,7 +197,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         return Paragraph(f"Class-rule checks: all {len(result.checks)} pass.")
 
     def summary(self, result: AlignmentResult) -> list[Block]:
-        blocks: list[Block] = [self._reactions(result), self._verdict(result)]
+        blocks: list[Block] = [self._verdict(result), self._reactions(result)]
         failed = [c for c in result.checks if not c.passed]
         if failed:
             blocks.append(Table(RULE_HEADERS, rule_check_rows(failed), "Failed class-rule checks"))

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from shaftline.report.plotting import figure_function
+from shaftline.report.plotting import figure_function, plain
 
 if TYPE_CHECKING:
     from shaftline.shaft.alignment import ConditionResult, InfluenceMatrix
@@ -25,7 +25,7 @@ if TYPE_CHECKING:
 def elastic_line(line: ShaftLine, results: Sequence[ConditionResult], *, ax: Any) -> Any:
     """Vertical elastic line per condition with each bearing's position and vertical clearance."""
     for k, result in enumerate(results):
-        ax.plot(result.x, result.deflection_y * 1e3, color=f"C{k}", label=result.name)
+        ax.plot(result.x, result.deflection_y * 1e3, color=f"C{k}", label=plain(result.name))
     for bearing in line.bearings:
         aft, fore = bearing.x - 0.5 * bearing.length, bearing.x + 0.5 * bearing.length
         bottom = bearing.offset_y * 1e3
@@ -33,7 +33,7 @@ def elastic_line(line: ShaftLine, results: Sequence[ConditionResult], *, ax: Any
         if math.isfinite(bearing.vertical_clearance):
             top = (bearing.offset_y + bearing.vertical_clearance) * 1e3
             ax.fill_between([aft, fore], top, top + 0.05, color="0.6")
-        ax.annotate(bearing.name, (bearing.x, bottom - 0.08), ha="center", va="top", fontsize=7, rotation=90)
+        ax.annotate(plain(bearing.name), (bearing.x, bottom - 0.08), ha="center", va="top", fontsize=7, rotation=90)
     ax.set_xlabel("x from the aft end [m]")
     ax.set_ylabel("vertical deflection [mm]")
     ax.set_title("Elastic line (bearings at their base offsets: bottom of bore dark, top light)")
@@ -47,7 +47,7 @@ def moment_and_shear(results: Sequence[ConditionResult], *, ax: Any) -> Any:
     is two axes."""
     top, bottom = ax
     for k, result in enumerate(results):
-        top.plot(result.x, result.moment_y / 1e3, color=f"C{k}", label=result.name)
+        top.plot(result.x, result.moment_y / 1e3, color=f"C{k}", label=plain(result.name))
         bottom.plot(result.x, result.shear_y / 1e3, color=f"C{k}")
     top.set_ylabel("bending moment [kN m]\n(+ sagging)")
     top.axhline(0, color="0.6", lw=0.8)
@@ -61,12 +61,12 @@ def moment_and_shear(results: Sequence[ConditionResult], *, ax: Any) -> Any:
 @figure_function(size=(11, 4))
 def reactions(results: Sequence[ConditionResult], *, ax: Any) -> Any:
     """Vertical bearing reactions per condition."""
-    names = [b.name for b in results[0].bearings]
+    names = [plain(b.name) for b in results[0].bearings]
     width = 0.8 / len(results)
     positions = np.arange(len(names))
     for k, result in enumerate(results):
         values = [b.reaction_y / 1e3 for b in result.bearings]
-        ax.bar(positions + (k - (len(results) - 1) / 2) * width, values, width, label=result.name)
+        ax.bar(positions + (k - (len(results) - 1) / 2) * width, values, width, label=plain(result.name))
     ax.axhline(0, color="k", lw=0.8)
     ax.set_xticks(positions, names, rotation=20, ha="right", fontsize=8)
     ax.set_ylabel("reaction [kN]")
@@ -82,8 +82,9 @@ def influence_heatmap(influence: InfluenceMatrix, *, ax: Any) -> Any:
     image = ax.imshow(matrix, cmap="RdBu_r", vmin=-limit, vmax=limit)
     ax.figure.colorbar(image, ax=ax, label="reaction change [kN] per mm offset")
     ticks = np.arange(len(influence.names))
-    ax.set_xticks(ticks, influence.names, rotation=45, ha="right", fontsize=8)
-    ax.set_yticks(ticks, influence.names, fontsize=8)
+    names = [plain(name) for name in influence.names]
+    ax.set_xticks(ticks, names, rotation=45, ha="right", fontsize=8)
+    ax.set_yticks(ticks, names, fontsize=8)
     ax.set_xlabel("bearing raised")
     ax.set_ylabel("reaction of")
     for i in range(matrix.shape[0]):
@@ -109,6 +110,6 @@ def jack_curve(
         ax.axhline(fit.knee_load / 1e3, color="C3", ls="--", label=f"measured knee {fit.knee_load / 1e3:.1f} kN")
     ax.set_xlabel("lift at the jack [mm]")
     ax.set_ylabel("jack load [kN]")
-    ax.set_title(f"Jack-up of {curve.bearing} (correction factor {curve.correction_factor:.3f})")
+    ax.set_title(f"Jack-up of {plain(curve.bearing)} (correction factor {curve.correction_factor:.3f})")
     ax.legend(fontsize=8)
     return ax

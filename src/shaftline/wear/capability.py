@@ -94,8 +94,8 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
             "scenario",
             "sliding per voyage [m]",
             f"sliding in {result.study.service.years:g} years [km]",
-            "wear depth [um]",
-            "allowable rate [mm3/Nm]",
+            "wear depth [µm]",
+            "allowable rate [mm³/(N·m)]",
             "years to limit",
             "P(rate > allowable)",
         ]
@@ -134,7 +134,7 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
     def summary(self, result: WearResult) -> list[Block]:
         blocks: list[Block] = [*self._warnings(result), self._table(result)]
         if result.weibull is not None:
-            blocks.append(Paragraph("Tested wear rates: " + weibull_text(result.weibull, 1 / MM3_PER_NM, "mm3/Nm")))
+            blocks.append(Paragraph("Tested wear rates: " + weibull_text(result.weibull, 1 / MM3_PER_NM, "mm³/(N·m)")))
         return blocks
 
     def report(self, result: WearResult) -> list[Block]:
@@ -148,20 +148,20 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
                 f"Blade bearing radius {study.bearing_radius:.3f} m, design pitch "
                 f"{study.design_pitch_angle * 180 / 3.141592653589793:.1f} deg, contact pressure "
                 f"{study.contact_pressure / 1e6:.1f} N/mm², specific wear rate {study.wear_rate / MM3_PER_NM:.3g} "
-                f"mm³/Nm (wear class {wear_class(study.wear_rate)}), allowable depth "
+                f"mm³/(N·m) (wear class {wear_class(study.wear_rate)}), allowable depth "
                 f"{study.allowable_depth * 1e6:.0f} µm; {study.service.voyages_per_day:g} voyages a day, "
                 f"{study.service.days_per_year:g} days a year, {study.service.years:g} years."
             ),
             self._table(result),
         ]
         if result.weibull is not None:
-            blocks.append(Paragraph("Tested wear rates: " + weibull_text(result.weibull, 1 / MM3_PER_NM, "mm³/Nm")))
+            blocks.append(Paragraph("Tested wear rates: " + weibull_text(result.weibull, 1 / MM3_PER_NM, "mm³/(N·m)")))
             marks = {f"allowable: {s.name}": s.allowable_rate for s in result.scenarios}
             blocks.append(
                 Figure(
                     "wear_weibull.png",
                     figures.weibull,
-                    (result.weibull, 1 / MM3_PER_NM, "wear rate [mm³/Nm]", marks),
+                    (result.weibull, 1 / MM3_PER_NM, "wear rate [mm³/(N·m)]", marks),
                     caption="Weibull distribution of the tested wear rates and the allowable rates",
                 )
             )

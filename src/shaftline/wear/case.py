@@ -99,7 +99,8 @@ class WearSection(Section):
     wear_rate: PositiveWearRate | None = None
     """Specific wear rate (e.g. "0.54e-7 mm^3/(N*m)"); or material_pair."""
     material_pair: str | None = None
-    """A material pair of the bundled data set (seed 000 Tables 5.4, 5.6, 5.12)."""
+    """A material pair of the bundled data set (seed 000 Tables 5.4, 5.6, 5.12): CuNiAl-42CrMo4,
+    CuNiAl-MnAl bronze, DP4-42CrMo4, DU-42CrMo4."""
     dead_band: Annotated[float, Quantity("percent", gt=0, lt=50)] = 0.5
     """Dead band of the stepwise-constant noise removal, % of design pitch (the actuation resolution;
     a number or e.g. "0.5 %")."""

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from shaftline.report.plotting import figure_function
+from shaftline.report.plotting import figure_function, plain
 
 if TYPE_CHECKING:
     from shaftline.wear.reliability import WeibullFit
@@ -38,7 +38,7 @@ def pitch_log(result: WearResult, *, ax: Any) -> Any:
     ax[1].plot(log.time[zoom], log.pitch[zoom], color="0.6", lw=0.8, label="measured")
     ax[1].step(log.time[zoom], result.corrected[zoom], where="post", color="C0", label="corrected")
     ax[1].set_ylabel("pitch [% design]")
-    ax[1].set_title("two minutes of free sailing")
+    ax[1].set_title("two minutes in the middle of the log")
     per_percent = study.design_pitch_angle * study.bearing_radius / 100.0
     for signal, label, color in (
         (log.pitch, "measured", "0.6"),
@@ -63,7 +63,7 @@ def depth_over_years(result: WearResult, *, ax: Any) -> Any:
     per_year = study.service.voyages(1.0)
     for k, scenario in enumerate(result.scenarios):
         depth = study.wear_rate * study.contact_pressure * scenario.distance_per_voyage * per_year * years
-        ax.plot(years, depth * 1e6, color=f"C{k}", label=scenario.name)
+        ax.plot(years, depth * 1e6, color=f"C{k}", label=plain(scenario.name))
     ax.axhline(study.allowable_depth * 1e6, color="k", ls="--", label="allowable depth")
     ax.set_xlabel("years in service")
     ax.set_ylabel("wear depth [µm]")
@@ -86,6 +86,7 @@ def weibull(
     density = fit.shape / fit.scale * (x / fit.scale) ** (fit.shape - 1) * np.exp(-((x / fit.scale) ** fit.shape))
     left.plot(x * scale, density / scale, "C0", label=f"Weibull β={fit.shape:.2f}")
     left.set_xlabel(unit)
+    left.set_ylabel("probability density")
     left.legend(fontsize=8)
     ordered = np.sort(fit.samples)
     median_rank = (np.arange(1, ordered.size + 1) - 0.3) / (ordered.size + 0.4)
@@ -93,7 +94,7 @@ def weibull(
     right.plot(x * scale, fit.cdf(x), "C0", label="fit")
     right.fill_between(x * scale, low, high, color="C0", alpha=0.2, label=f"{fit.confidence:.0%} bounds")
     for k, (name, value) in enumerate((marks or {}).items()):
-        right.axvline(value * scale, color=f"C{k + 1}", ls="--", lw=1, label=name)
+        right.axvline(value * scale, color=f"C{k + 1}", ls="--", lw=1, label=plain(name))
     right.set_xlabel(unit)
     right.set_ylabel("cumulative probability")
     right.legend(fontsize=7)
