@@ -276,9 +276,8 @@ def test_all_moved_tables_are_named():
 
 
 def test_booleans_are_not_numbers():
-    from pathlib import Path
-
     import tomllib
+    from pathlib import Path
 
     example = tomllib.loads((Path(__file__).parents[1] / "examples" / "cpp_blade_bearing.toml").read_text())
     example["cpp"]["loads"]["harmonics"][0]["amplitude"] = True
