@@ -151,3 +151,14 @@ def test_run_case_refuses_unknown_capabilities():
 
     with pytest.raises(ValueError, match="nonsense"):
         run_case(parse_case({"wear": {}}, only=[]), only=["nonsense"])
+
+
+def test_out_may_not_be_the_working_folder_or_hold_the_case(case, tmp_path, monkeypatch):
+    """Until issue 9 makes updating a folder safe, a report folder that would replace the
+    working folder or the case's own folder is refused, and nothing is touched."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "notes.txt").write_text("keep me")
+    for out in (".", str(tmp_path), str(tmp_path.parent)):
+        result = invoke("run", str(case), "--out", out)
+        assert result.exit_code == 2 and result.stderr.startswith("error: --out"), out
+    assert (tmp_path / "notes.txt").read_text() == "keep me" and case.exists()

@@ -43,6 +43,21 @@ def input_errors() -> Iterator[None]:
         fail(error)
 
 
+def check_out(out: Path | None) -> None:
+    """Refuse an output folder that is the working folder, the case's own folder or one
+    of their parents: the report folder is replaced as a whole when it is written.
+
+    (Issue 9 makes updating an existing folder safe in general; until then this keeps a
+    ``--out .`` from replacing the folder the user works in.)
+    """
+    if out is None:
+        return
+    target = out.resolve()
+    here = Path.cwd().resolve()
+    if not out.name or target == here or target in here.parents or target == Path(target.anchor):
+        raise InputError("--out", str(out), "", "a folder of its own (not the working folder or one above it)")
+
+
 def emit_json(document: Mapping[str, Any], json_path: str | None) -> None:
     """Write ``document`` to ``json_path`` (``-``: standard output; None: nowhere)."""
     from shaftline.pipeline import dumps, write_text_atomic
@@ -71,6 +86,10 @@ def run_cases(
 
     quiet = json_path == "-"
     with input_errors():
+        check_out(out)
+        holder = case_file.resolve().parent
+        if out is not None and out.resolve() in (holder, *holder.parents):
+            raise InputError("--out", str(out), "", "a folder that does not hold the case file")
         case = read_and_build(case_file, only, overrides)
         with error_console.status("solving") as status:
             result = run_case(case, only, options, progress=lambda text: status.update(text))
@@ -114,6 +133,7 @@ def compare_cases(
     capability = capabilities()[key]
     results: list[tuple[str, Any]] = []
     with input_errors():
+        check_out(out)
         for path in case_files:
             case = read_and_build(path, [key])
             result = run_case(case, [key], {key: options})

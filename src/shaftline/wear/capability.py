@@ -204,7 +204,7 @@ def weibull(
     """Weibull fit (maximum likelihood) of wear samples with confidence bounds."""
     import math
 
-    from shaftline.commandline import console, emit_json, input_errors
+    from shaftline.commandline import check_out, console, emit_json, input_errors
     from shaftline.errors import InputError
     from shaftline.pipeline import write_folder
     from shaftline.report.blocks import Section
@@ -212,6 +212,7 @@ def weibull(
     from shaftline.wear.reliability import fit_weibull, read_samples
 
     with input_errors():
+        check_out(out)
         if threshold is not None and not (math.isfinite(threshold) and threshold > 0):
             raise InputError("--threshold", threshold, "", "a positive number in the unit of the data")
         with located("", {"confidence": "--confidence"}):
