@@ -4,13 +4,20 @@
 does (see the README's "From Python").
 """
 
-from importlib.metadata import PackageNotFoundError, version
+from functools import lru_cache
 from typing import Any
 
-try:
-    __version__ = version("shaftline")
-except PackageNotFoundError:  # running from a source tree without installation
-    __version__ = "0.0.0+unknown"
+
+@lru_cache(maxsize=1)
+def _version() -> str:
+    # importlib.metadata costs about 0.05 s: paid by the commands that show the version.
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("shaftline")
+    except PackageNotFoundError:  # running from a source tree without installation
+        return "0.0.0+unknown"
+
 
 #: Names imported on first use, so that ``import shaftline`` stays cheap.
 _LAZY = {
@@ -25,6 +32,8 @@ __all__ = ["__version__", *_LAZY]
 
 
 def __getattr__(name: str) -> Any:
+    if name == "__version__":
+        return _version()
     if name in _LAZY:
         import importlib
 
