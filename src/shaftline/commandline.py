@@ -43,32 +43,57 @@ def input_errors() -> Iterator[None]:
         fail(error)
 
 
-def check_out(out: Path | None) -> None:
-    """Refuse an output folder that is the working folder, the case's own folder or one
-    of their parents: the report folder is replaced as a whole when it is written.
+@contextmanager
+def interruptible() -> Iterator[None]:
+    """Ctrl-C ends the command with exit status 130 and one line; outputs are written all at
+    once at the end (:mod:`shaftline.outputs`), so nothing half-written is left."""
+    try:
+        yield
+    except KeyboardInterrupt:
+        error_console.print("interrupted: nothing was written", markup=False, highlight=False)
+        raise typer.Exit(code=130) from None
 
-    (Issue 9 makes updating an existing folder safe in general; until then this keeps a
-    ``--out .`` from replacing the folder the user works in.)
+
+def check_outputs(out: Path | None, json_path: str | None, inputs: Sequence[Path]) -> None:
+    """Refuse output places that cannot be written or would replace an input or a foreign
+    folder, before anything is solved (raises :class:`InputError`)."""
+    from shaftline.outputs import check_file, check_folder
+
+    if out is not None:
+        check_folder(out, inputs)
+    if json_path not in (None, "-"):
+        json_file = Path(str(json_path))
+        check_file(json_file, inputs)
+        inside = out is not None and json_file.resolve().parent == out.resolve()
+        if inside and json_file.name in ("results.json", "report.html"):
+            raise InputError("--json", str(json_file), "", "a name other than the report folder's own files")
+
+
+def deliver(
+    document: Mapping[str, Any],
+    json_path: str | None,
+    out: Path | None,
+    sections: Sequence[Any],
+    title: str,
+    description: str = "",
+    source: str = "",
+    source_label: str = "case file",
+) -> None:
+    """Write the report folder, then the JSON file, then the JSON to standard output if asked.
+
+    Both places were checked before solving (:func:`check_outputs`); the folder is written
+    all at once and only then the JSON file, so a failure in the report leaves neither.
     """
-    if out is None:
-        return
-    target = out.resolve()
-    here = Path.cwd().resolve()
-    if not out.name or target == here or target in here.parents or target == Path(target.anchor):
-        raise InputError("--out", str(out), "", "a folder of its own (not the working folder or one above it)")
+    from shaftline.outputs import write_text
+    from shaftline.pipeline import dumps, write_folder
 
-
-def emit_json(document: Mapping[str, Any], json_path: str | None) -> None:
-    """Write ``document`` to ``json_path`` (``-``: standard output; None: nowhere)."""
-    from shaftline.pipeline import dumps, write_text_atomic
-
-    if json_path is None:
-        return
     text = dumps(document) + "\n"
+    if out is not None:
+        write_folder(out, document, list(sections), title, description, source, source_label)
+    if json_path not in (None, "-"):
+        write_text(Path(str(json_path)), text)
     if json_path == "-":
         sys.stdout.write(text)
-    else:
-        write_text_atomic(Path(json_path), text)
 
 
 def run_cases(
@@ -81,25 +106,21 @@ def run_cases(
 ) -> None:
     """Load ``case_file``, solve what it asks for (or the capabilities in ``only``), print
     the summaries, write the report folder and the JSON."""
-    from shaftline.pipeline import results_document, run_case, write_outputs
+    from shaftline.pipeline import report_sections, results_document, run_case
     from shaftline.report.terminal import print_blocks
 
     quiet = json_path == "-"
-    with input_errors():
-        check_out(out)
-        holder = case_file.resolve().parent
-        if out is not None and out.resolve() in (holder, *holder.parents):
-            raise InputError("--out", str(out), "", "a folder that does not hold the case file")
+    with interruptible(), input_errors():
         case = read_and_build(case_file, only, overrides)
+        check_outputs(out, json_path, case.inputs)
         with error_console.status("solving") as status:
             result = run_case(case, only, options, progress=lambda text: status.update(text))
-    if not quiet:
-        for capability, value in result.capabilities():
-            print_blocks(console, capability.summary(value))
-    # The folder first: a JSON file inside it, or beside it, is not lost when it is written.
-    if out is not None:
-        write_outputs(result, out, str(case_file))
-    emit_json(results_document(result), json_path)
+        if not quiet:
+            for capability, value in result.capabilities():
+                print_blocks(console, capability.summary(value))
+        with error_console.status("writing the report"):
+            sections = report_sections(result) if out is not None else []
+            deliver(results_document(result), json_path, out, sections, case.name, case.description, str(case_file))
     if out is not None and not quiet:
         console.print(f"report: {out / 'report.html'}", markup=False, highlight=False)
 
@@ -125,28 +146,29 @@ def compare_cases(
 ) -> None:
     """Solve capability ``key`` for each case file and show the capability's comparison;
     cases are named by their [case] name, made unique with the file name where needed."""
-    from shaftline.pipeline import run_case, write_folder
+    from shaftline.pipeline import run_case
     from shaftline.registry import capabilities
     from shaftline.report.blocks import Section
     from shaftline.report.terminal import print_blocks
 
     capability = capabilities()[key]
     results: list[tuple[str, Any]] = []
-    with input_errors():
-        check_out(out)
-        for path in case_files:
-            case = read_and_build(path, [key])
-            result = run_case(case, [key], {key: options})
-            names = [name for name, _ in results]
-            name = case.name if case.name not in names else f"{case.name} ({path.name})"
-            while name in names:
-                name += "'"
-            results.append((name, result[key]))
-    comparison = capability.compare(results)
-    if json_path != "-":
-        print_blocks(console, comparison.blocks)
-    if out is not None:
+    with interruptible(), input_errors():
+        cases = [read_and_build(path, [key]) for path in case_files]
+        check_outputs(out, json_path, [source for case in cases for source in case.inputs])
+        with error_console.status("solving") as status:
+            for path, case in zip(case_files, cases, strict=True):
+                status.update(f"solving {path.name}")
+                result = run_case(case, [key], {key: options})
+                names = [name for name, _ in results]
+                name = case.name if case.name not in names else f"{case.name} ({path.name})"
+                while name in names:
+                    name += "'"
+                results.append((name, result[key]))
+        comparison = capability.compare(results)
+        if json_path != "-":
+            print_blocks(console, comparison.blocks)
         section = Section(key, capability.title, comparison.blocks)
         title = f"{capability.title}: {len(results)} cases compared"
-        write_folder(out, comparison.document, [section], title, "", ", ".join(map(str, case_files)), "case files")
-    emit_json(comparison.document, json_path)
+        sources = ", ".join(map(str, case_files))
+        deliver(comparison.document, json_path, out, [section], title, "", sources, "case files")

@@ -13,11 +13,7 @@ capability by name.
 from __future__ import annotations
 
 import json
-import os
-import shutil
-import tempfile
 from collections.abc import Iterable, Iterator, Mapping
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -38,12 +34,16 @@ class Case:
         Capability key -> what its ``build`` made of the case-file table, in registry order.
     source : Path or None
         The case file, when read from one.
+    inputs : tuple of Path
+        Every file the case was read from: the case file and the data files it names (no
+        output may be one of them).
     """
 
     name: str
     description: str
     studies: Mapping[str, Any] = field(default_factory=dict)
     source: Path | None = None
+    inputs: tuple[Path, ...] = ()
 
     def __getitem__(self, key: str) -> Any:
         return self.studies[key]
@@ -122,41 +122,6 @@ def dumps(document: Mapping[str, Any]) -> str:
     return json.dumps(document, indent=2, allow_nan=False)
 
 
-def write_text_atomic(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` through a temporary file in the same folder."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
-            handle.write(text)
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
-
-
-@contextmanager
-def atomic_folder(out: Path) -> Iterator[Path]:
-    """Yield a temporary folder that replaces ``out`` only if the block completes."""
-    out = Path(out)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    temporary = Path(tempfile.mkdtemp(dir=out.parent, prefix=f".{out.name}."))
-    try:
-        yield temporary
-        if out.exists():
-            old = out.with_name(f".{out.name}.old")
-            shutil.rmtree(old, ignore_errors=True)
-            out.rename(old)
-            temporary.rename(out)
-            shutil.rmtree(old, ignore_errors=True)
-        else:
-            temporary.rename(out)
-    except BaseException:
-        shutil.rmtree(temporary, ignore_errors=True)
-        raise
-
-
 def report_sections(result: CaseResult) -> list[Any]:
     """One report section per capability of the run."""
     from shaftline.report.blocks import Section
@@ -177,11 +142,15 @@ def write_folder(
     source_label: str = "case file",
 ) -> Path:
     """Write ``results.json`` (``document``), the figures of ``sections`` and ``report.html``
-    into the folder ``out``, atomically: a failure leaves no half-written folder."""
+    into the result folder ``out`` (:mod:`shaftline.outputs`): all files or none, files of
+    others left alone. The command line checks ``out`` with
+    :func:`shaftline.outputs.check_folder` before solving; this function checks it again."""
+    from shaftline.outputs import check_folder, result_folder
     from shaftline.report.html import write_report
 
     out = Path(out)
-    with atomic_folder(out) as folder:
+    check_folder(out, field="out")
+    with result_folder(out) as folder:
         (folder / "results.json").write_text(dumps(document) + "\n", encoding="utf-8")
         write_report(folder, title, description, source, sections, shaftline.__version__, source_label)
     return out

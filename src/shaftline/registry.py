@@ -83,15 +83,22 @@ class BuildContext:
         The case's name and description.
     base_dir : Path
         Folder that relative file names in the case are read from (the case file's).
+    inputs : list of Path
+        The data files named by the case so far (:meth:`path` adds them), so that no output
+        of the run can replace one.
     """
 
     case: CaseInfo
     base_dir: Path
+    inputs: list[Path] = field(default_factory=list)
 
     def path(self, name: str) -> Path:
-        """A file named in the case, relative to the case file unless absolute."""
+        """A data file named in the case, relative to the case file unless absolute; the
+        file is recorded as an input of the run."""
         path = Path(name).expanduser()
-        return path if path.is_absolute() else self.base_dir / path
+        path = path if path.is_absolute() else self.base_dir / path
+        self.inputs.append(path)
+        return path
 
 
 @dataclass(frozen=True)

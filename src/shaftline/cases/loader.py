@@ -249,7 +249,8 @@ def parse_case(
         section = _validate(capability.schema(), document[key], key)
         with located(key):
             studies[key] = capability.build(section, context)
-    return Case(name=info.name, description=info.description, studies=studies, source=source)
+    inputs = tuple(dict.fromkeys([*([source] if source is not None else []), *context.inputs]))
+    return Case(name=info.name, description=info.description, studies=studies, source=source, inputs=inputs)
 
 
 def load_case(path: str | Path, only: Iterable[str] | None = None, overrides: Mapping[str, Any] | None = None) -> Case:

@@ -204,15 +204,14 @@ def weibull(
     """Weibull fit (maximum likelihood) of wear samples with confidence bounds."""
     import math
 
-    from shaftline.commandline import check_out, console, emit_json, input_errors
+    from shaftline.commandline import check_outputs, console, deliver, input_errors, interruptible
     from shaftline.errors import InputError
-    from shaftline.pipeline import write_folder
     from shaftline.report.blocks import Section
     from shaftline.wear import figures
     from shaftline.wear.reliability import fit_weibull, read_samples
 
-    with input_errors():
-        check_out(out)
+    with interruptible(), input_errors():
+        check_outputs(out, json_path, [data_file])
         if threshold is not None and not (math.isfinite(threshold) and threshold > 0):
             raise InputError("--threshold", threshold, "", "a positive number in the unit of the data")
         with located("", {"confidence": "--confidence"}):
@@ -226,15 +225,16 @@ def weibull(
     if json_path != "-":
         for line in lines:
             console.print(line, markup=False, highlight=False)
-    if out is not None:
-        marks = {"threshold": threshold} if threshold is not None else None
-        blocks: list[Block] = [
-            *(Paragraph(line) for line in lines),
-            Figure("weibull.png", figures.weibull, (fit, 1.0, "value", marks)),
-        ]
-        section = Section("weibull", "Weibull fit", blocks)
-        write_folder(out, document, [section], f"Weibull fit of {data_file.name}", "", str(data_file), "data file")
-    emit_json(document, json_path)
+    marks = {"threshold": threshold} if threshold is not None else None
+    blocks: list[Block] = [
+        *(Paragraph(line) for line in lines),
+        Figure("weibull.png", figures.weibull, (fit, 1.0, "value", marks)),
+    ]
+    section = Section("weibull", "Weibull fit", blocks)
+    with interruptible(), input_errors():
+        deliver(
+            document, json_path, out, [section], f"Weibull fit of {data_file.name}", "", str(data_file), "data file"
+        )
 
 
 CAPABILITY = ServiceWear()
