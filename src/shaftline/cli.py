@@ -17,7 +17,7 @@ import typer
 
 import shaftline
 from shaftline import registry
-from shaftline.commandline import CaseArgument, JsonOption, OutOption, compare_cases, run_cases
+from shaftline.commandline import CaseArgument, JsonOption, OutOption, StrictOption, compare_cases, run_cases
 from shaftline.registry import Capability, Verb
 
 
@@ -39,9 +39,10 @@ def run(
     case_file: CaseArgument,
     out: Annotated[Path | None, typer.Option("--out", help="Output folder (default results/<case file name>).")] = None,
     json_path: JsonOption = None,
+    strict: StrictOption = False,
 ) -> None:
     """The main job: every analysis the case file asks for, with the HTML report."""
-    run_cases(case_file, json_path, out or Path("results") / case_file.stem)
+    run_cases(case_file, json_path, out or Path("results") / case_file.stem, strict=strict)
 
 
 def schema(
@@ -60,8 +61,10 @@ def _case_verb(capability: Capability[Any, Any, Any], verb: Verb) -> Callable[..
     options = {key: dict(verb.options)}
     if not verb.many:
 
-        def one(case_file: CaseArgument, json_path: JsonOption = None, out: OutOption = None) -> None:
-            run_cases(case_file, json_path, out, only=[key], options=options)
+        def one(
+            case_file: CaseArgument, json_path: JsonOption = None, out: OutOption = None, strict: StrictOption = False
+        ) -> None:
+            run_cases(case_file, json_path, out, only=[key], options=options, strict=strict)
 
         one.__doc__ = verb.help
         return one
@@ -70,11 +73,12 @@ def _case_verb(capability: Capability[Any, Any, Any], verb: Verb) -> Callable[..
         case_files: Annotated[list[Path], typer.Argument(help="Case file(s) (TOML); several are compared.")],
         json_path: JsonOption = None,
         out: OutOption = None,
+        strict: StrictOption = False,
     ) -> None:
         if len(case_files) == 1:
-            run_cases(case_files[0], json_path, out, only=[key], options=options)
+            run_cases(case_files[0], json_path, out, only=[key], options=options, strict=strict)
             return
-        compare_cases(key, case_files, options[key], json_path, out)
+        compare_cases(key, case_files, options[key], json_path, out, strict)
 
     many.__doc__ = verb.help
     return many

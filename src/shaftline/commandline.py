@@ -26,6 +26,15 @@ JsonOption = Annotated[
 ]
 OutOption = Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")]
 CaseArgument = Annotated[Path, typer.Argument(help="Case file (TOML).")]
+StrictOption = Annotated[
+    bool,
+    typer.Option(
+        "--strict", help="Exit with status 3 also when a design criterion fails (a rule check, an allowable wear)."
+    ),
+]
+
+#: Exit status of a run that was solved but whose result is not acceptable.
+NOT_ACCEPTABLE = 3
 
 
 def fail(error: InputError) -> NoReturn:
@@ -103,10 +112,12 @@ def run_cases(
     only: Sequence[str] | None = None,
     options: Mapping[str, Mapping[str, Any]] | None = None,
     overrides: Mapping[str, Any] | None = None,
+    strict: bool = False,
 ) -> None:
     """Load ``case_file``, solve what it asks for (or the capabilities in ``only``), print
-    the summaries, write the report folder and the JSON."""
-    from shaftline.pipeline import report_sections, results_document, run_case
+    the findings and summaries, write the report folder and the JSON; exit with status 3
+    when the result is not acceptable (with ``strict`` also when a design criterion fails)."""
+    from shaftline.pipeline import acceptable, findings_blocks, report_sections, results_document, run_case
     from shaftline.report.terminal import print_blocks
 
     quiet = json_path == "-"
@@ -115,6 +126,8 @@ def run_cases(
         check_outputs(out, json_path, case.inputs)
         with error_console.status("solving") as status:
             result = run_case(case, only, options, progress=lambda text: status.update(text))
+        # What makes the result unacceptable comes first, on standard error if the JSON goes out.
+        print_blocks(error_console if quiet else console, findings_blocks(result))
         if not quiet:
             for capability, value in result.capabilities():
                 print_blocks(console, capability.summary(value))
@@ -123,6 +136,8 @@ def run_cases(
             deliver(results_document(result), json_path, out, sections, case.name, case.description, str(case_file))
     if out is not None and not quiet:
         console.print(f"report: {out / 'report.html'}", markup=False, highlight=False)
+    if not acceptable(result, strict):
+        raise typer.Exit(code=NOT_ACCEPTABLE)
 
 
 def read_and_build(
@@ -142,13 +157,18 @@ def read_and_build(
 
 
 def compare_cases(
-    key: str, case_files: Sequence[Path], options: Mapping[str, Any], json_path: str | None, out: Path | None
+    key: str,
+    case_files: Sequence[Path],
+    options: Mapping[str, Any],
+    json_path: str | None,
+    out: Path | None,
+    strict: bool = False,
 ) -> None:
     """Solve capability ``key`` for each case file and show the capability's comparison;
     cases are named by their [case] name, made unique with the file name where needed."""
     from shaftline.pipeline import run_case
     from shaftline.registry import capabilities
-    from shaftline.report.blocks import Section
+    from shaftline.report.blocks import Paragraph, Section
     from shaftline.report.terminal import print_blocks
 
     capability = capabilities()[key]
@@ -166,9 +186,17 @@ def compare_cases(
                     name += "'"
                 results.append((name, result[key]))
         comparison = capability.compare(results)
+        found = [(name, item) for name, value in results for item in capability.findings(value)]
+        warnings: list[Any] = [
+            Paragraph(f"{'' if item.criterion else 'NOT ACCEPTABLE: '}{name}: {item.text}", "warn")
+            for name, item in found
+        ]
+        print_blocks(error_console if json_path == "-" else console, warnings)
         if json_path != "-":
             print_blocks(console, comparison.blocks)
-        section = Section(key, capability.title, comparison.blocks)
+        section = Section(key, capability.title, [*warnings, *comparison.blocks])
         title = f"{capability.title}: {len(results)} cases compared"
         sources = ", ".join(map(str, case_files))
         deliver(comparison.document, json_path, out, [section], title, "", sources, "case files")
+    if any(strict or not item.criterion for _, item in found):
+        raise typer.Exit(code=NOT_ACCEPTABLE)

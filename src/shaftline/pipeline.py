@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 import shaftline
-from shaftline.registry import Capability, Progress, capabilities, no_progress
+from shaftline.registry import Capability, Finding, Progress, capabilities, no_progress
 
 
 @dataclass(frozen=True, eq=False)
@@ -109,9 +109,27 @@ def run_case(
     return CaseResult(case, results, solved_by)
 
 
+def findings(result: CaseResult) -> list[tuple[str, Finding]]:
+    """(capability key, finding) of every capability of the run, in report order."""
+    return [
+        (capability.key, item) for capability, value in result.capabilities() for item in capability.findings(value)
+    ]
+
+
+def acceptable(result: CaseResult, strict: bool = False) -> bool:
+    """No finding that makes the result unacceptable (with ``strict``, no finding at all)."""
+    return not any(strict or not item.criterion for _, item in findings(result))
+
+
 def results_document(result: CaseResult) -> dict[str, Any]:
-    """The JSON document of a run: version, case name and one entry per capability."""
-    document: dict[str, Any] = {"shaftline_version": shaftline.__version__, "case": result.case.name}
+    """The JSON document of a run: version, case name, the findings and one entry per capability."""
+    document: dict[str, Any] = {
+        "shaftline_version": shaftline.__version__,
+        "case": result.case.name,
+        "findings": [
+            {"capability": key, "text": item.text, "criterion": item.criterion} for key, item in findings(result)
+        ],
+    }
     for capability, value in result.capabilities():
         document[capability.key] = capability.to_json(value)
     return document
@@ -122,11 +140,28 @@ def dumps(document: Mapping[str, Any]) -> str:
     return json.dumps(document, indent=2, allow_nan=False)
 
 
+def findings_blocks(result: CaseResult) -> list[Any]:
+    """The findings as warnings, for the top of the terminal output and of the report."""
+    from shaftline.report.blocks import Paragraph
+
+    titles = {capability.key: capability.title for capability, _ in result.capabilities()}
+    return [
+        Paragraph(f"{'' if item.criterion else 'NOT ACCEPTABLE: '}{titles[key]}: {item.text}", "warn")
+        for key, item in findings(result)
+    ]
+
+
 def report_sections(result: CaseResult) -> list[Any]:
-    """One report section per capability of the run."""
+    """The findings first (if any), then one report section per capability of the run."""
     from shaftline.report.blocks import Section
 
-    return [
+    sections = []
+    blocks = findings_blocks(result)
+    if blocks:
+        unacceptable = not acceptable(result)
+        title = "The result is not acceptable" if unacceptable else "Design criteria not met"
+        sections.append(Section("findings", title, blocks))
+    return sections + [
         Section(capability.key, capability.title, capability.report(value))
         for capability, value in result.capabilities()
     ]

@@ -102,6 +102,25 @@ class BuildContext:
 
 
 @dataclass(frozen=True)
+class Finding:
+    """Something about a result the reader must not miss.
+
+    Attributes
+    ----------
+    text : str
+        One sentence, with the numbers.
+    criterion : bool
+        False: the result is not acceptable as it stands (no convergence, contact at the film
+        floor, a physically absurd value) — the command exits with status 3. True: a design
+        criterion is not met (a class-rule check, an allowable wear depth, an optimiser at its
+        bound) — shown the same way, and exit status 3 only with ``--strict``.
+    """
+
+    text: str
+    criterion: bool = False
+
+
+@dataclass(frozen=True)
 class Comparison:
     """Several cases' results set side by side (``shaftline cpp fretting A.toml B.toml``)."""
 
@@ -162,6 +181,11 @@ class Capability(Generic[SectionT, StudyT, ResultT]):
     def report(self, result: ResultT) -> list[Block]:
         """The body of the report section: notes, tables and figures."""
         raise NotImplementedError
+
+    def findings(self, result: ResultT) -> list[Finding]:
+        """What makes the result unacceptable, or fails a design criterion (shown at the top
+        of the terminal output and the report; sets the exit status)."""
+        return []
 
     def compare(self, results: Sequence[tuple[str, ResultT]]) -> Comparison:
         """Several cases' results side by side (for a verb with ``many=True``)."""

@@ -103,6 +103,7 @@ def test_run_matches_baseline(name):
     expected = new_layout(baseline(name))
     actual = json.loads(dumps(results_document(result)))
     actual["shaftline_version"] = expected["shaftline_version"]
+    del actual["findings"]  # new since the baseline: what the results are found to fail (tested apart)
     assert compare(actual, expected, rtol=RTOL_CARRIER if name == "cpp_blade_bearing" else RTOL) == []
 
 
@@ -122,4 +123,5 @@ def test_verbs_match_baseline(name, args, monkeypatch):
     actual = json.loads(outcome.stdout)
     if "shaftline_version" in expected:
         actual["shaftline_version"] = expected["shaftline_version"]
+    actual.pop("findings", None)  # new since the baseline (tested apart)
     assert compare(actual, expected) == []

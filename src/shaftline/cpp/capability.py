@@ -7,8 +7,8 @@ import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
-from shaftline.registry import BuildContext, Capability, Comparison, Progress, Verb, no_progress
-from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table
+from shaftline.registry import BuildContext, Capability, Comparison, Finding, Progress, Verb, no_progress
+from shaftline.report.blocks import Block, Figure, Heading, Table
 
 if TYPE_CHECKING:
     from shaftline.cpp.case import CppSection
@@ -125,26 +125,25 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
             ]
         return Table(["quantity", "value"], rows, "CPP blade bearing")
 
-    def _warnings(self, result: BladeBearingResult) -> list[Block]:
+    def findings(self, result: BladeBearingResult) -> list[Finding]:
         c = result.coefficient
         if not c.fretting:
             return []
         return [
-            Paragraph(
-                f"Gross fretting in both directions every revolution: the spindle torque overcomes the friction "
+            Finding(
+                f"gross fretting in both directions every revolution: the spindle torque overcomes the friction "
                 f"torque (k_fret from {c.minimum:.2f} to {c.maximum:.2f}); the blade bearing slides back and forth.",
-                "warn",
+                criterion=True,
             )
         ]
 
     def summary(self, result: BladeBearingResult) -> list[Block]:
-        return [*self._warnings(result), self._table(result)]
+        return [self._table(result)]
 
     def report(self, result: BladeBearingResult) -> list[Block]:
         from shaftline.cpp import figures
 
         blocks: list[Block] = [
-            *self._warnings(result),
             self._table(result),
             Figure("cpp_torques.png", figures.torques, (result,), caption="spindle and friction torque"),
         ]

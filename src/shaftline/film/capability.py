@@ -10,12 +10,18 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from shaftline.registry import BuildContext, Capability, Progress, Verb, no_progress
+from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
     from shaftline.film.case import BearingSection
     from shaftline.film.study import BearingStudy, BearingStudyResult
+
+#: Largest peak film pressure a class rule allows, Pa: NK's 40 MPa as quoted in seed 004
+#: Sect. 2.2.1 (line 497 of the text); above it a result is not a stern-tube bearing's.
+PEAK_PRESSURE_LIMIT = 40e6
+#: Smallest film the Bureau Veritas rule accepts, m (seed 004 Sect. 2.2.1): a design criterion.
+MIN_FILM_CRITERION = 30e-6
 
 #: (label, JSON key, scale, digits) of the rows of the results table.
 TABLE_ROWS = [
@@ -74,23 +80,39 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
             ],
         }
 
-    def _warnings(self, result: BearingStudyResult) -> list[Block]:
-        out: list[Block] = []
+    def findings(self, result: BearingStudyResult) -> list[Finding]:
+        out: list[Finding] = []
         for run in result.cases:
-            if run.equilibrium.contact:
+            name, equilibrium, state = run.case.name, run.equilibrium, run.equilibrium.state
+            if equilibrium.contact:
                 out.append(
-                    Paragraph(
-                        f"{run.case.name}: the film does not carry the load — the journal reaches the film floor "
-                        "(contact). Figures show the position at the floor.",
-                        "warn",
+                    Finding(
+                        f"{name}: the film does not carry the load — the journal reaches the film floor "
+                        f"(h_min {state.min_film_thickness * 1e6:.2g} µm, contact); the figures show the position "
+                        "at the floor."
                     )
                 )
-            elif not run.equilibrium.converged:
+            elif not equilibrium.converged:
                 out.append(
-                    Paragraph(
-                        f"{run.case.name}: the equilibrium did not converge (force residual "
-                        f"{run.equilibrium.residual:.3g} N); the results are not a solution.",
-                        "warn",
+                    Finding(
+                        f"{name}: the equilibrium did not converge (force residual {equilibrium.residual:.3g} N); "
+                        "the numbers are not a solution."
+                    )
+                )
+            if state.max_pressure > PEAK_PRESSURE_LIMIT:
+                out.append(
+                    Finding(
+                        f"{name}: p_max {state.max_pressure / 1e6:.4g} MPa is above {PEAK_PRESSURE_LIMIT / 1e6:g} MPa, "
+                        "the largest peak film pressure a class rule allows (NK, as quoted in seed 004 Sect. 2.2.1); "
+                        "no stern-tube liner carries it."
+                    )
+                )
+            if not equilibrium.contact and state.min_film_thickness < MIN_FILM_CRITERION:
+                out.append(
+                    Finding(
+                        f"{name}: h_min {state.min_film_thickness * 1e6:.3g} µm is below "
+                        f"{MIN_FILM_CRITERION * 1e6:g} µm (Bureau Veritas, as quoted in seed 004 Sect. 2.2.1).",
+                        criterion=True,
                     )
                 )
         return out
@@ -103,13 +125,12 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
         return Table(["quantity"] + [s["name"] for s in summaries], rows, "Bearing film at equilibrium")
 
     def summary(self, result: BearingStudyResult) -> list[Block]:
-        return [*self._warnings(result), self._table(result)]
+        return [self._table(result)]
 
     def report(self, result: BearingStudyResult) -> list[Block]:
         from shaftline.film import figures
 
         blocks: list[Block] = [
-            *self._warnings(result),
             Paragraph(
                 "Film equilibrium under the case load with the journal tilt held at the given misalignment. "
                 "Pressures are gauge; θ from the top of the bore in the sense of rotation; z from the aft edge."

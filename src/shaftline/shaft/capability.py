@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from shaftline.registry import BuildContext, Capability, Progress, Verb, no_progress
+from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
@@ -195,6 +195,37 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         if failed:
             return Paragraph(f"Class-rule checks: {len(failed)} of {len(result.checks)} fail.", "warn")
         return Paragraph(f"Class-rule checks: all {len(result.checks)} pass.")
+
+    def findings(self, result: AlignmentResult) -> list[Finding]:
+        out = []
+        failed = [c for c in result.checks if not c.passed]
+        if failed:
+            names = sorted({f"{c.rule.id} at {c.bearing} ({c.condition})" for c in failed})
+            shown = "; ".join(names[:3]) + (f"; and {len(names) - 3} more" if len(names) > 3 else "")
+            out.append(
+                Finding(f"{len(failed)} of {len(result.checks)} class-rule checks fail: {shown}.", criterion=True)
+            )
+        study = result.study
+        if result.plan is not None and study.optimise is not None:
+            bound = study.optimise.bound
+            at_bound = [name for name, value in result.plan.offsets.items() if abs(value) >= bound * (1 - 1e-6)]
+            if at_bound:
+                out.append(
+                    Finding(
+                        f"the offset optimisation sits on its bound of ±{bound * 1e3:g} mm at "
+                        + ", ".join(at_bound)
+                        + ": a wider bound may give a better alignment.",
+                        criterion=True,
+                    )
+                )
+            plan_failed = [c for c in result.plan_checks or [] if not c.passed]
+            if plan_failed:
+                out.append(
+                    Finding(
+                        f"with the optimised offsets {len(plan_failed)} class-rule checks still fail.", criterion=True
+                    )
+                )
+        return out
 
     def summary(self, result: AlignmentResult) -> list[Block]:
         blocks: list[Block] = [self._verdict(result), self._reactions(result)]

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 from shaftline.errors import located
-from shaftline.registry import BuildContext, Capability, Command, Progress, no_progress
+from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
 
 if TYPE_CHECKING:
@@ -118,21 +118,21 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
             )
         return Table(headers, rows, "Blade-bearing wear")
 
-    def _warnings(self, result: WearResult) -> list[Block]:
+    def findings(self, result: WearResult) -> list[Finding]:
         study = result.study
         return [
-            Paragraph(
+            Finding(
                 f"{s.name}: the wear depth after {study.service.years:g} years, {s.depth_total * 1e6:.0f} µm, "
                 f"exceeds the allowable {study.allowable_depth * 1e6:.0f} µm "
                 f"(reached after {s.years_to_limit:.1f} years).",
-                "warn",
+                criterion=True,
             )
             for s in result.scenarios
             if s.depth_total > study.allowable_depth
         ]
 
     def summary(self, result: WearResult) -> list[Block]:
-        blocks: list[Block] = [*self._warnings(result), self._table(result)]
+        blocks: list[Block] = [self._table(result)]
         if result.weibull is not None:
             blocks.append(Paragraph("Tested wear rates: " + weibull_text(result.weibull, 1 / MM3_PER_NM, "mm³/(N·m)")))
         return blocks
@@ -143,7 +143,6 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
 
         study = result.study
         blocks: list[Block] = [
-            *self._warnings(result),
             Paragraph(
                 f"Blade bearing radius {study.bearing_radius:.3f} m, design pitch "
                 f"{study.design_pitch_angle * 180 / 3.141592653589793:.1f} deg, contact pressure "

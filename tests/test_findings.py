@@ -1,0 +1,54 @@
+"""Failure says so: a result that is not acceptable is flagged at the top of the terminal
+output and of the report, listed in the JSON, and ends the command with exit status 3; a
+failed design criterion does so with --strict."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from tests.conftest import MINIMAL_CASE, invoke
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+def test_an_overloaded_film_is_not_acceptable(tmp_path):
+    """50 MN on the small bearing (a mean pressure of 5 GPa): the journal reaches the film floor;
+    the run reports it first, in the JSON and in the report, and exits 3."""
+    case = tmp_path / "case.toml"
+    case.write_text(MINIMAL_CASE.replace('load = "5 kN"', 'load = "50 MN"'))
+    out = tmp_path / "out"
+    result = invoke("bearing", "solve", str(case), "--out", str(out), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 3, result.output
+    assert result.stdout.startswith("NOT ACCEPTABLE: Stern-tube bearing film: small bearing: the film does not carry")
+    findings = json.loads((tmp_path / "r.json").read_text())["findings"]
+    assert findings and findings[0]["capability"] == "bearing" and findings[0]["criterion"] is False
+    html = (out / "report.html").read_text()
+    assert html.index("The result is not acceptable") < html.index("Stern-tube bearing film</h2>")
+
+
+def test_a_sound_film_exits_0_with_no_findings(tmp_path):
+    case = tmp_path / "case.toml"
+    case.write_text(MINIMAL_CASE)
+    result = invoke("bearing", "solve", str(case), "--json", "-")
+    assert result.exit_code == 0 and json.loads(result.stdout)["findings"] == []
+
+
+def test_failed_rule_checks_are_a_criterion_exit_3_only_when_strict():
+    example = str(EXAMPLES / "single_screw_alignment.toml")
+    plain = invoke("align", example, "--json", "-")
+    assert plain.exit_code == 0
+    findings = json.loads(plain.stdout)["findings"]
+    assert [f["criterion"] for f in findings] == [True] and "class-rule checks fail" in findings[0]["text"]
+    assert "class-rule checks fail" in plain.stderr  # with the JSON on stdout, the banner goes to stderr
+    assert invoke("align", example, "--strict", "--json", "-").exit_code == 3
+
+
+def test_an_optimiser_on_its_bound_says_so(tmp_path):
+    """The example's offsets need up to 3.7 mm; with a 1 mm bound the optimiser sits on it."""
+    text = (EXAMPLES / "single_screw_alignment.toml").read_text().replace('bound = "4 mm"', 'bound = "1 mm"')
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    result = invoke("align", str(case), "--json", "-")
+    texts = [f["text"] for f in json.loads(result.stdout)["findings"]]
+    assert any("sits on its bound of ±1 mm" in t for t in texts), texts
