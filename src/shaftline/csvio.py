@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -30,12 +31,17 @@ def read_columns(
     if (header if order_matters else sorted(header)) != expected:
         raise InputError(field, str(path), "", "columns " + ", ".join(columns))
     try:
-        # numpy's C reader: a day of 10 Hz samples reads in a fraction of a second.
-        table = np.loadtxt(path, delimiter=",", skiprows=1, dtype=float, ndmin=2)
+        # numpy's C reader: a day of 10 Hz samples reads in a fraction of a second. A file of
+        # a header alone is reported below, not warned about.
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)
+            table = np.loadtxt(path, delimiter=",", skiprows=1, dtype=float, ndmin=2)
     except UnicodeDecodeError:
         raise InputError(field, str(path), "", "a CSV text file in UTF-8") from None
     except ValueError as exc:
         raise InputError(field, str(path), "", f"numbers in every field ({exc})") from None
+    if table.shape[0] == 0 or table.shape[1] != len(header):
+        raise InputError(field, str(path), "", f"rows of {len(header)} numbers below the header")
     bad = np.argwhere(~np.isfinite(table))
     if bad.size:
         row, column = (int(v) for v in bad[0])
