@@ -37,6 +37,11 @@ class Case:
     inputs : tuple of Path
         Every file the case was read from: the case file and the data files it names (no
         output may be one of them).
+    tables : mapping
+        The case's tables as validated, in SI with every default filled in (the record of
+        what was solved).
+    fingerprints : tuple
+        (path, SHA-256, bytes) of every input file as read.
     """
 
     name: str
@@ -44,6 +49,8 @@ class Case:
     studies: Mapping[str, Any] = field(default_factory=dict)
     source: Path | None = None
     inputs: tuple[Path, ...] = ()
+    tables: Mapping[str, Any] = field(default_factory=dict)
+    fingerprints: tuple[tuple[str, str, int], ...] = ()
 
     def __getitem__(self, key: str) -> Any:
         return self.studies[key]
@@ -161,10 +168,37 @@ def report_sections(result: CaseResult) -> list[Any]:
         unacceptable = not acceptable(result)
         title = "The result is not acceptable" if unacceptable else "Design criteria not met"
         sections.append(Section("findings", title, blocks))
-    return sections + [
+    sections += [
         Section(capability.key, capability.title, capability.report(value))
         for capability, value in result.capabilities()
     ]
+    return sections + [inputs_section(result.case)]
+
+
+def inputs_section(case: Case) -> Any:
+    """The record of what was solved: the input files with their SHA-256, the case file as
+    written and the case as read (SI, every default and solver setting filled in)."""
+    import platform
+
+    from shaftline.report.blocks import Details, Paragraph, Preformatted, Section, Table
+
+    blocks: list[Any] = [
+        Paragraph(
+            f"shaftline {shaftline.__version__}, Python {platform.python_version()}, {platform.system()}. "
+            "The SHA-256 of a file identifies its content: the same hash, the same input."
+        )
+    ]
+    if case.fingerprints:
+        blocks.append(Table(["file", "SHA-256", "bytes"], [[p, h, str(n)] for p, h, n in case.fingerprints], "Inputs"))
+    if case.source is not None:
+        try:
+            blocks.append(Details("the case file as written", [Preformatted(case.source.read_text(encoding="utf-8"))]))
+        except (OSError, UnicodeDecodeError):
+            pass
+    if case.tables:
+        text = json.dumps(case.tables, indent=2, default=str)
+        blocks.append(Details("the case as read: SI units, every default and solver setting", [Preformatted(text)]))
+    return Section("inputs", "Inputs of this run", blocks)
 
 
 def write_folder(

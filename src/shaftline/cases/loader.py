@@ -244,13 +244,37 @@ def parse_case(
     wanted = present if only is None else [key for key in present if key in set(only)]
     context = BuildContext(case=info, base_dir=base_dir or Path.cwd())
     studies = {}
+    tables: dict[str, Any] = {"case": info.model_dump(mode="json")}
     for key in wanted:
         capability = capabilities[key]
         section = _validate(capability.schema(), document[key], key)
+        tables[key] = section.model_dump(mode="json")
         with located(key):
             studies[key] = capability.build(section, context)
     inputs = tuple(dict.fromkeys([*([source] if source is not None else []), *context.inputs]))
-    return Case(name=info.name, description=info.description, studies=studies, source=source, inputs=inputs)
+    return Case(
+        name=info.name,
+        description=info.description,
+        studies=studies,
+        source=source,
+        inputs=inputs,
+        tables=tables,
+        fingerprints=_fingerprints(inputs),
+    )
+
+
+def _fingerprints(paths: Iterable[Path]) -> tuple[tuple[str, str, int], ...]:
+    """(path, SHA-256, size in bytes) of each input file, for the report's record."""
+    import hashlib
+
+    out = []
+    for path in paths:
+        try:
+            data = Path(path).read_bytes()
+        except OSError:
+            continue
+        out.append((str(path), hashlib.sha256(data).hexdigest(), len(data)))
+    return tuple(out)
 
 
 def load_case(path: str | Path, only: Iterable[str] | None = None, overrides: Mapping[str, Any] | None = None) -> Case:

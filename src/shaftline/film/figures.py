@@ -37,7 +37,8 @@ def film_and_pressure_maps(state: BearingState, title: str = "", *, ax: Any) -> 
         (ax[0], film, "film thickness h [µm]", "viridis_r"),
         (ax[1], pressure, "pressure p [MPa]", "inferno"),
     ):
-        mesh = axes.contourf(theta, z, field, levels=30, cmap=cmap)
+        # the filled contours as an image inside the vector figure: a small, sharp SVG
+        mesh = axes.contourf(theta, z, field, levels=30, cmap=cmap, rasterized=True)
         axes.figure.colorbar(mesh, ax=axes, label=label)
         axes.set_xlabel("bearing angle θ from top, in sense of rotation [deg]")
         axes.set_ylabel("z from aft edge [m]")

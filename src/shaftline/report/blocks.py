@@ -33,11 +33,31 @@ class Heading:
 
 @dataclass(frozen=True)
 class Table:
-    """A table of text cells; cells that read as numbers are right-aligned."""
+    """A table of text cells; cells that read as numbers are right-aligned.
+
+    ``marks`` optionally gives each cell a mark, ``"pass"``, ``"fail"`` or ``""``, that the
+    report colours (a matrix of checks) and the terminal colours too.
+    """
 
     headers: Sequence[str]
     rows: Sequence[Sequence[str]]
     title: str = ""
+    marks: Sequence[Sequence[str]] | None = None
+
+
+@dataclass(frozen=True)
+class Details:
+    """Blocks shown on demand (folded in the report, left out of the terminal)."""
+
+    summary: str
+    blocks: Sequence[Block]
+
+
+@dataclass(frozen=True)
+class Preformatted:
+    """Text shown as written (the case file echoed in the report), in a fixed-width font."""
+
+    text: str
 
 
 @dataclass(frozen=True, eq=False)
@@ -67,7 +87,7 @@ class Figure:
     caption: str = ""
 
 
-Block = Paragraph | Heading | Table | Figure
+Block = Paragraph | Heading | Table | Figure | Details | Preformatted
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from shaftline.report.blocks import Figure, Heading, Paragraph, Section, Table
+from shaftline.report.blocks import Details, Figure, Heading, Paragraph, Preformatted, Section, Table
 
 
 def _is_number(text: str) -> bool:
@@ -22,8 +22,14 @@ def _is_number(text: str) -> bool:
     return True
 
 
+def svg_name(file: str) -> str:
+    """The name of the vector copy of a figure file (``maps.png`` -> ``maps.svg``)."""
+    return str(Path(file).with_suffix(".svg"))
+
+
 def draw_figure(figure: Figure, path: Path) -> Path:
-    """Draw ``figure`` and save it as a PNG at ``path``."""
+    """Draw ``figure`` and save it as a PNG at ``path`` and as an SVG beside it (the report
+    shows the SVG: vector graphics print sharply)."""
     from matplotlib.figure import Figure as MatplotlibFigure
 
     plot = figure.plot
@@ -31,14 +37,35 @@ def draw_figure(figure: Figure, path: Path) -> Path:
     axes = canvas.subplots(*plot.layout, sharex=plot.sharex)
     plot(*figure.args, ax=axes, **figure.kwargs)
     canvas.savefig(path, dpi=110)
+    canvas.savefig(path.with_suffix(".svg"))
     return path
 
 
+_KINDS: tuple[tuple[type, str], ...] = (
+    (Paragraph, "paragraph"),
+    (Heading, "heading"),
+    (Table, "table"),
+    (Figure, "figure"),
+    (Details, "details"),
+    (Preformatted, "preformatted"),
+)
+
+
 def _kind(block: object) -> str:
-    for cls, name in ((Paragraph, "paragraph"), (Heading, "heading"), (Table, "table"), (Figure, "figure")):
+    for cls, name in _KINDS:
         if isinstance(block, cls):
             return name
     raise TypeError(f"not a report block: {block!r}")
+
+
+def _figures(blocks: Sequence[object]) -> list[Figure]:
+    out: list[Figure] = []
+    for block in blocks:
+        if isinstance(block, Figure):
+            out.append(block)
+        elif isinstance(block, Details):
+            out += _figures(block.blocks)
+    return out
 
 
 def render(
@@ -48,9 +75,10 @@ def render(
     sections: Sequence[Section],
     version: str,
     source_label: str = "case file",
+    created: str = "",
 ) -> str:
     """The report page (figures are referred to as ``figures/<file>``); ``source`` is the
-    input file, named ``source_label`` in the page."""
+    input file, named ``source_label`` in the page; ``created`` the date and time of the run."""
     from jinja2 import Environment, PackageLoader, select_autoescape
 
     environment = Environment(
@@ -60,6 +88,7 @@ def render(
         lstrip_blocks=True,
     )
     environment.filters["kind"] = _kind
+    environment.filters["svg"] = svg_name
     environment.tests["number"] = _is_number
     return environment.get_template("report.html").render(
         title=title,
@@ -68,6 +97,7 @@ def render(
         source_label=source_label,
         version=version,
         sections=sections,
+        created=created,
     )
 
 
@@ -80,13 +110,17 @@ def write_report(
     version: str,
     source_label: str = "case file",
 ) -> Path:
-    """Draw every figure of ``sections`` into ``folder/figures`` and write ``folder/report.html``."""
+    """Draw every figure of ``sections`` into ``folder/figures`` (PNG and SVG) and write
+    ``folder/report.html``, dated now."""
+    from datetime import datetime
+
+    created = datetime.now().astimezone().isoformat(timespec="seconds")
     figures = folder / "figures"
     figures.mkdir(parents=True, exist_ok=True)
     for section in sections:
-        for block in section.blocks:
-            if isinstance(block, Figure):
-                draw_figure(block, figures / block.file)
+        for block in _figures(section.blocks):
+            draw_figure(block, figures / block.file)
     path = folder / "report.html"
-    path.write_text(render(title, description, source, sections, version, source_label), encoding="utf-8")
+    page = render(title, description, source, sections, version, source_label, created)
+    path.write_text(page, encoding="utf-8")
     return path

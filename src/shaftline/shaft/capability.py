@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
-from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
+from shaftline.report.blocks import Block, Details, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
     from shaftline.shaft.case import AlignmentSection
@@ -165,30 +165,42 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             out["offsets_from_reactions"] = {"offsets": result.reverse[0], "rms_misfit": result.reverse[1]}
         return out
 
-    def _reactions(self, result: AlignmentResult) -> Table:
-        headers = [
-            "condition",
-            "bearing",
-            "reaction [kN]",
-            "mean pressure [MPa]",
-            "contact",
-            "shaft slope [mrad]",
-            "relative slope [mrad]",
-        ]
-        rows = [
-            [
-                r.name,
-                b.name,
-                fmt(b.reaction_y, 1e-3),
-                fmt(b.mean_pressure, 1e-6),
-                b.contact,
-                fmt(b.shaft_slope, 1e3),
-                fmt(b.relative_slope, 1e3),
-            ]
+    def _reactions(self, result: AlignmentResult) -> list[Block]:
+        """One table per condition, narrow enough for an 80-column terminal."""
+        headers = ["bearing", "reaction [kN]", "mean p [MPa]", "contact", "slope [mrad]", "rel. slope [mrad]"]
+        return [
+            Table(
+                headers,
+                [
+                    [
+                        b.name,
+                        fmt(b.reaction_y, 1e-3),
+                        fmt(b.mean_pressure, 1e-6),
+                        b.contact,
+                        fmt(b.shaft_slope, 1e3),
+                        fmt(b.relative_slope, 1e3),
+                    ]
+                    for b in r.bearings
+                ],
+                f"Shaft alignment: {r.name}",
+            )
             for r in result.conditions
-            for b in r.bearings
         ]
-        return Table(headers, rows, "Shaft alignment")
+
+    def _rule_matrix(self, result: AlignmentResult) -> Table:
+        """Rule checks as a matrix of conditions by bearings: pass, or FAIL with the rules failed."""
+        bearings = [b.name for b in result.model.line.bearings]
+        rows, marks = [], []
+        for r in result.conditions:
+            row, mark = [r.name], [""]
+            for name in bearings:
+                checks = [c for c in result.checks if c.condition == r.name and c.bearing == name]
+                failed = [c.rule.id for c in checks if not c.passed]
+                row.append("FAIL: " + ", ".join(failed) if failed else ("pass" if checks else "-"))
+                mark.append("fail" if failed else "pass" if checks else "")
+            rows.append(row)
+            marks.append(mark)
+        return Table(["condition", *bearings], rows, "Class-rule checks by condition and bearing", marks)
 
     def _verdict(self, result: AlignmentResult) -> Paragraph:
         failed = [c for c in result.checks if not c.passed]
@@ -228,7 +240,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         return out
 
     def summary(self, result: AlignmentResult) -> list[Block]:
-        blocks: list[Block] = [self._verdict(result), self._reactions(result)]
+        blocks: list[Block] = [self._verdict(result), *self._reactions(result)]
         failed = [c for c in result.checks if not c.passed]
         if failed:
             blocks.append(Table(RULE_HEADERS, rule_check_rows(failed), "Failed class-rule checks"))
@@ -245,9 +257,13 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 f"{result.model.mesh.nodes - 1} {line.beam_theory.replace('_', '-')} elements. Reactions + up; "
                 "slopes dy/dx; the relative slope is the shaft's across the bearing less the bearing's own."
             ),
-            self._reactions(result),
+            *self._reactions(result),
             Heading("Class-rule checks"),
-            Table(RULE_HEADERS, rule_check_rows(result.checks)),
+            self._rule_matrix(result),
+            Details(
+                f"every check ({len(result.checks)}): value, limit and source",
+                [Table(RULE_HEADERS, rule_check_rows(result.checks))],
+            ),
             Paragraph(
                 "Slope-boring angle that would make the aft stern-tube bearing parallel to the shaft: "
                 + ", ".join(f"{name}: {value * 1e3:.3f} mrad" for name, value in result.slope_boring_angle().items())

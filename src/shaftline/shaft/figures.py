@@ -23,20 +23,34 @@ if TYPE_CHECKING:
 
 @figure_function(size=(11, 4.5))
 def elastic_line(line: ShaftLine, results: Sequence[ConditionResult], *, ax: Any) -> Any:
-    """Vertical elastic line per condition with each bearing's position and vertical clearance."""
+    """Vertical elastic line per condition, with each bearing where it is in that condition
+    (base offset plus the condition's offset): bottom of the bore as a thick bar, top of the
+    clearance dashed, in the condition's colour."""
+    conditions = {c.name: c for c in line.all_conditions()}
     for k, result in enumerate(results):
-        ax.plot(result.x, result.deflection_y * 1e3, color=f"C{k}", label=plain(result.name))
-    for bearing in line.bearings:
-        aft, fore = bearing.x - 0.5 * bearing.length, bearing.x + 0.5 * bearing.length
-        bottom = bearing.offset_y * 1e3
-        ax.fill_between([aft, fore], bottom - 0.05, bottom, color="0.35", step="mid")
-        if math.isfinite(bearing.vertical_clearance):
-            top = (bearing.offset_y + bearing.vertical_clearance) * 1e3
-            ax.fill_between([aft, fore], top, top + 0.05, color="0.6")
-        ax.annotate(plain(bearing.name), (bearing.x, bottom - 0.08), ha="center", va="top", fontsize=7, rotation=90)
+        color = f"C{k}"
+        ax.plot(result.x, result.deflection_y * 1e3, color=color, label=plain(result.name))
+        offsets = conditions[result.name].offsets_y if result.name in conditions else {}
+        for bearing in line.bearings:
+            aft, fore = bearing.x - 0.5 * bearing.length, bearing.x + 0.5 * bearing.length
+            bottom = (bearing.offset_y + offsets.get(bearing.name, 0.0)) * 1e3
+            ax.hlines(bottom, aft, fore, color=color, lw=3, alpha=0.7)
+            if math.isfinite(bearing.vertical_clearance):
+                ax.hlines(bottom + bearing.vertical_clearance * 1e3, aft, fore, color=color, lw=1.2, ls="--")
+    for bearing in line.bearings:  # names along the bottom edge of the axes, clear of the lines' labels
+        ax.annotate(
+            plain(bearing.name),
+            (bearing.x, 0.02),
+            xycoords=("data", "axes fraction"),
+            ha="center",
+            va="bottom",
+            fontsize=7,
+            rotation=90,
+            color="0.3",
+        )
     ax.set_xlabel("x from the aft end [m]")
     ax.set_ylabel("vertical deflection [mm]")
-    ax.set_title("Elastic line (bearings at their base offsets: bottom of bore dark, top light)")
+    ax.set_title("Elastic line; bearings in each condition: bottom of the bore (bar), top of the clearance (dashed)")
     ax.legend(fontsize=8)
     return ax
 

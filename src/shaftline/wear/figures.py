@@ -27,10 +27,20 @@ def pitch_log(result: WearResult, *, ax: Any) -> Any:
     log = study.pitch_log
     if log is None or result.corrected is None:
         raise ValueError("the study has no pitch log")
-    ax[0].plot(log.time, log.pitch, color="0.6", lw=0.6, label="measured")
-    ax[0].plot(log.time, result.corrected, color="C0", lw=1.0, label=f"corrected ({study.dead_band:g} % dead band)")
+    # tens of thousands of samples per line: drawn as an image inside the vector figure
+    ax[0].plot(log.time, log.pitch, color="0.6", lw=0.6, label="measured", rasterized=True)
+    ax[0].plot(
+        log.time,
+        result.corrected,
+        color="C0",
+        lw=1.0,
+        label=f"corrected ({study.dead_band:g} % dead band)",
+        rasterized=True,
+    )
     if result.mimo_signal is not None:
-        ax[0].plot(log.time, result.mimo_signal, color="C3", lw=0.5, alpha=0.6, label="active (MIMO) control")
+        ax[0].plot(
+            log.time, result.mimo_signal, color="C3", lw=0.5, alpha=0.6, label="active (MIMO) control", rasterized=True
+        )
     ax[0].set_ylabel("pitch [% design]")
     ax[0].legend(fontsize=8)
     middle = 0.5 * (log.time[0] + log.time[-1])
@@ -48,7 +58,7 @@ def pitch_log(result: WearResult, *, ax: Any) -> Any:
         if signal is None:
             continue
         cumulative = np.concatenate([[0.0], np.cumsum(np.abs(np.diff(signal)))]) * per_percent
-        ax[2].plot(log.time, cumulative, color=color, label=f"{label}: {cumulative[-1]:.2f} m")
+        ax[2].plot(log.time, cumulative, color=color, label=f"{label}: {cumulative[-1]:.2f} m", rasterized=True)
     ax[2].set_xlabel("time [s]")
     ax[2].set_ylabel("sliding distance [m]")
     ax[2].legend(fontsize=8)
