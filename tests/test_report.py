@@ -91,3 +91,35 @@ def test_figure_block_is_drawn(tmp_path, solved):
     state = solved["bearing"].cases[0].equilibrium.state
     path = draw_figure(FigureBlock("maps.png", figures.film_and_pressure_maps, (state, "x")), tmp_path / "maps.png")
     assert path.stat().st_size > 10_000
+
+
+def test_units_survive_the_terminal():
+    """rich would read '[kN]' or '[mrad]' as markup and drop it: every header and cell of every
+    example's terminal tables is printed as written."""
+    import re
+    from pathlib import Path
+
+    from rich.console import Console
+
+    from shaftline.cases import load_case
+    from shaftline.report.blocks import Table
+    from shaftline.report.terminal import print_blocks
+
+    examples = Path(__file__).resolve().parents[1] / "examples"
+    for name in ("ntua_stern_tube", "single_screw_alignment", "ferry_wear"):
+        result = run_case(load_case(examples / f"{name}.toml"))
+        for capability, value in result.capabilities():
+            blocks = capability.summary(value)
+            console = Console(record=True, width=400)
+            print_blocks(console, blocks)
+            text = console.export_text()
+            units = {
+                u
+                for block in blocks
+                if isinstance(block, Table)
+                for h in block.headers
+                for u in re.findall(r"\[[^\]]+\]", h)
+            }
+            assert units, name
+            for unit in units:
+                assert unit in text, (name, unit)

@@ -19,6 +19,23 @@ def _version() -> str:
         return "0.0.0+unknown"
 
 
+def example(name: str) -> Any:
+    """The path of an example case or data file of the source repository's ``examples``
+    folder (found relative to this package, so it works from any working folder).
+
+    >>> example("ntua_stern_tube.toml").name
+    'ntua_stern_tube.toml'
+    """
+    from pathlib import Path
+
+    folder = Path(__file__).resolve().parents[2] / "examples"
+    path = folder / name
+    if not path.is_file():
+        known = ", ".join(sorted(p.name for p in folder.glob("*.*"))) if folder.is_dir() else "none here"
+        raise FileNotFoundError(f"no example {name!r} in {folder} (examples: {known})")
+    return path
+
+
 #: Names imported on first use, so that ``import shaftline`` stays cheap.
 _LAZY = {
     "load_case": "shaftline.cases",
@@ -28,7 +45,7 @@ _LAZY = {
     "write_outputs": "shaftline.pipeline",
 }
 
-__all__ = ["__version__", *_LAZY]
+__all__ = ["__version__", "example", *_LAZY]
 
 
 def __getattr__(name: str) -> Any:
