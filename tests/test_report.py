@@ -113,13 +113,8 @@ def test_units_survive_the_terminal():
             console = Console(record=True, width=400)
             print_blocks(console, blocks)
             text = console.export_text()
-            units = {
-                u
-                for block in blocks
-                if isinstance(block, Table)
-                for h in block.headers
-                for u in re.findall(r"\[[^\]]+\]", h)
-            }
+            labels = [t for b in blocks if isinstance(b, Table) for t in [*b.headers, *(row[0] for row in b.rows)]]
+            units = {u for t in labels for u in re.findall(r"\[[^\]]+\]", t)}
             assert units, name
             for unit in units:
                 assert unit in text, (name, unit)
