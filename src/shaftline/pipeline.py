@@ -38,12 +38,17 @@ class Case:
         Capability key -> what its ``build`` made of the case-file table, in registry order.
     source : Path or None
         The case file, when read from one.
+    unusual : tuple of str
+        Fields whose plausibility guard the case lowered (``[case] unusual``: dotted
+        case-file paths such as ``"bearing.length"``), in the order given; the report should
+        say so, as their values were accepted outside the plausible range.
     """
 
     name: str
     description: str
     studies: Mapping[str, Any] = field(default_factory=dict)
     source: Path | None = None
+    unusual: tuple[str, ...] = ()
 
     def __getitem__(self, key: str) -> Any:
         return self.studies[key]
