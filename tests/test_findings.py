@@ -16,7 +16,11 @@ def test_an_overloaded_film_is_not_acceptable(tmp_path):
     """50 MN on the small bearing (a mean pressure of 5 GPa): the journal reaches the film floor;
     the run reports it first, in the JSON and in the report, and exits 3."""
     case = tmp_path / "case.toml"
-    case.write_text(MINIMAL_CASE.replace('load = "5 kN"', 'load = "50 MN"'))
+    # 5 GPa is no real stern tube's mean pressure: the plausibility guard is lowered on purpose
+    unusual = '[case]\nname = "small bearing"\nunusual = ["bearing.operation.load"]\n'
+    case.write_text(
+        MINIMAL_CASE.replace('load = "5 kN"', 'load = "50 MN"').replace('[case]\nname = "small bearing"\n', unusual)
+    )
     out = tmp_path / "out"
     result = invoke("bearing", "solve", str(case), "--out", str(out), "--json", str(tmp_path / "r.json"))
     assert result.exit_code == 3, result.output
@@ -25,6 +29,7 @@ def test_an_overloaded_film_is_not_acceptable(tmp_path):
     assert findings and findings[0]["capability"] == "bearing" and findings[0]["criterion"] is False
     html = (out / "report.html").read_text()
     assert html.index("The result is not acceptable") < html.index("Stern-tube bearing film</h2>")
+    assert "bearing.operation.load" in html[: html.index("Stern-tube bearing film</h2>")]  # the lowered guard
 
 
 def test_a_sound_film_exits_0_with_no_findings(tmp_path):

@@ -118,6 +118,7 @@ def run_cases(
     the findings and summaries, write the report folder and the JSON; exit with status 3
     when the result is not acceptable (with ``strict`` also when a design criterion fails)."""
     from shaftline.pipeline import acceptable, findings_blocks, report_sections, results_document, run_case
+    from shaftline.report.blocks import Paragraph
     from shaftline.report.terminal import print_blocks
 
     quiet = json_path == "-"
@@ -127,7 +128,11 @@ def run_cases(
         with error_console.status("solving") as status:
             result = run_case(case, only, options, progress=lambda text: status.update(text))
         # What makes the result unacceptable comes first, on standard error if the JSON goes out.
-        print_blocks(error_console if quiet else console, findings_blocks(result))
+        notes = findings_blocks(result)
+        if case.unusual:
+            text = "accepted outside the plausible range ([case] unusual): " + ", ".join(case.unusual)
+            notes.insert(0, Paragraph(text, "warn"))
+        print_blocks(error_console if quiet else console, notes)
         if not quiet:
             for capability, value in result.capabilities():
                 print_blocks(console, capability.summary(value))

@@ -42,6 +42,10 @@ class Case:
         what was solved).
     fingerprints : tuple
         (path, SHA-256, bytes) of every input file as read.
+    unusual : tuple of str
+        Fields whose plausibility guard the case lowered (``[case] unusual``: dotted
+        case-file paths such as ``"bearing.length"``), in the order given; the report should
+        say so, as their values were accepted outside the plausible range.
     """
 
     name: str
@@ -51,6 +55,7 @@ class Case:
     inputs: tuple[Path, ...] = ()
     tables: Mapping[str, Any] = field(default_factory=dict)
     fingerprints: tuple[tuple[str, str, int], ...] = ()
+    unusual: tuple[str, ...] = ()
 
     def __getitem__(self, key: str) -> Any:
         return self.studies[key]
@@ -159,10 +164,17 @@ def findings_blocks(result: CaseResult) -> list[Any]:
 
 
 def report_sections(result: CaseResult) -> list[Any]:
-    """The findings first (if any), then one report section per capability of the run."""
-    from shaftline.report.blocks import Section
+    """The lowered plausibility guards and the findings first (if any), then one report
+    section per capability of the run, then the record of its inputs."""
+    from shaftline.report.blocks import Paragraph, Section
 
     sections = []
+    if result.case.unusual:
+        text = (
+            "These values lie outside the range a ship's shaft line has and were accepted because the case "
+            "lists them under [case] unusual: " + ", ".join(result.case.unusual) + "."
+        )
+        sections.append(Section("unusual", "Values accepted outside the plausible range", [Paragraph(text, "warn")]))
     blocks = findings_blocks(result)
     if blocks:
         unacceptable = not acceptable(result)

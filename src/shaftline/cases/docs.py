@@ -138,7 +138,8 @@ def markdown_tables() -> str:
 
 def json_schema() -> dict[str, Any]:
     """The JSON Schema of a case file (quantities: a number in SI or a string with a unit;
-    ``x-unit`` gives the SI unit)."""
+    ``x-unit`` gives the SI unit, ``x-plausible`` the plausible range in it and
+    ``x-plausible-source`` where that comes from)."""
     return case_model().model_json_schema()
 
 
@@ -152,9 +153,18 @@ def _bearing_json_fields() -> str:
     return field_table()
 
 
+def plausibility_table() -> str:
+    """The plausible range of every field that has one, and the cross-field checks, with
+    their sources (:mod:`shaftline.cases.plausibility`)."""
+    from shaftline.cases.plausibility import ranges_table
+
+    return ranges_table(case_model())
+
+
 #: Generated parts of the README: the name in their markers and what makes them.
 GENERATED: dict[str, Callable[[], str]] = {
     "case-file tables": markdown_tables,
+    "plausibility ranges": plausibility_table,
     "bearing JSON fields": _bearing_json_fields,
 }
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 from collections.abc import Iterable, Mapping
 from functools import lru_cache
 from pathlib import Path
@@ -20,6 +21,7 @@ from pydantic import BaseModel, Field, ValidationError, create_model
 
 from shaftline import registry
 from shaftline.cases.files import read_case_file
+from shaftline.cases.plausibility import check_table
 from shaftline.cases.types import CaseInfo, Section
 from shaftline.errors import InputError, located
 from shaftline.pipeline import Case
@@ -197,6 +199,21 @@ def _set(data: dict[str, Any], dotted: str, value: Any) -> None:
     node[last] = value
 
 
+def _unusual(paths: list[str], present: list[str]) -> dict[str, list[tuple[int, str]]]:
+    """The entries of ``[case] unusual`` per table (with their index), refusing wildcards and
+    paths outside the tables of the case; the tables check the rest (:func:`check_table`)."""
+    per_table: dict[str, list[tuple[int, str]]] = {}
+    for k, path in enumerate(paths):
+        if "*" in path or "?" in path:
+            raise InputError(f"case.unusual[{k}]", path, "", "one field per entry (no wildcards)")
+        table = re.split(r"[.\[]", path.strip(), maxsplit=1)[0]
+        if table not in present:
+            tables = ", ".join(f"[{key}]" for key in present)
+            raise InputError(f"case.unusual[{k}]", path, "", f"the path of a field of a table of the case ({tables})")
+        per_table.setdefault(table, []).append((k, path.strip()))
+    return per_table
+
+
 def parse_case(
     data: Mapping[str, Any],
     base_dir: Path | None = None,
@@ -222,7 +239,9 @@ def parse_case(
     Raises
     ------
     InputError
-        Naming the first bad field by its path in the file.
+        Naming the first bad field by its path in the file; a value outside its plausible
+        range (and not listed in ``[case] unusual``) is one too
+        (:class:`~shaftline.cases.plausibility.ImplausibleInput`).
     """
     document: dict[str, Any] = {key: value for key, value in data.items()}
     for dotted, value in (overrides or {}).items():
@@ -242,6 +261,7 @@ def parse_case(
             "one of the tables " + ", ".join(f"[{k}]" for k in capabilities),
         )
     wanted = present if only is None else [key for key in present if key in set(only)]
+    unusual = _unusual(info.unusual, present)
     context = BuildContext(case=info, base_dir=base_dir or Path.cwd())
     studies = {}
     tables: dict[str, Any] = {"case": info.model_dump(mode="json")}
@@ -249,9 +269,13 @@ def parse_case(
         capability = capabilities[key]
         section = _validate(capability.schema(), document[key], key)
         tables[key] = section.model_dump(mode="json")
+        # after validation (paths are the file's) and before building: values a real shaft
+        # line has; the entries of [case] unusual of tables not wanted are not checked here
+        check_table(section, document[key], key, unusual.get(key, ()))
         with located(key):
             studies[key] = capability.build(section, context)
     inputs = tuple(dict.fromkeys([*([source] if source is not None else []), *context.inputs]))
+    lowered = tuple(dict.fromkeys(path for entries in unusual.values() for _, path in entries))
     return Case(
         name=info.name,
         description=info.description,
@@ -260,6 +284,7 @@ def parse_case(
         inputs=inputs,
         tables=tables,
         fingerprints=_fingerprints(inputs),
+        unusual=lowered,
     )
 
 

@@ -17,8 +17,9 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Annotated, Any
+from typing import Annotated, Any, ClassVar
 
 from pydantic import BaseModel, ConfigDict, Field, GetCoreSchemaHandler, GetJsonSchemaHandler
 from pydantic.json_schema import JsonSchemaValue
@@ -59,6 +60,15 @@ class Quantity:
             return f"{'<' if high[0] == ')' else '<='} {_number(high[1])}"
         return ""
 
+    def inside(self, number: float) -> bool:
+        """Whether ``number`` (SI) lies in the allowed range."""
+        return (
+            (self.gt is None or number > self.gt)
+            and (self.ge is None or number >= self.ge)
+            and (self.lt is None or number < self.lt)
+            and (self.le is None or number <= self.le)
+        )
+
     def convert(self, value: Any) -> float:
         try:
             number = to_si(value, self.kind)
@@ -66,13 +76,7 @@ class Quantity:
             raise PydanticCustomError(
                 "quantity", "{allowed}", {"unit": error.unit, "allowed": error.allowed, "value": error.value}
             ) from None
-        inside = (
-            (self.gt is None or number > self.gt)
-            and (self.ge is None or number >= self.ge)
-            and (self.lt is None or number < self.lt)
-            and (self.le is None or number <= self.le)
-        )
-        if not inside:
+        if not self.inside(number):
             raise PydanticCustomError(
                 "quantity", "{allowed}", {"unit": self.unit, "allowed": self.allowed(), "value": number}
             )
@@ -92,6 +96,106 @@ class Quantity:
             if value is not None and math.isfinite(value):
                 out[name] = value
         return out
+
+
+@dataclass(frozen=True)
+class Plausible:
+    """The plausible range of a quantity field, in SI units, and where it comes from.
+
+    Declared beside the field's :class:`Quantity`, for the domain of marine propulsion
+    shaft lines::
+
+        length: Annotated[PositiveLength, Plausible(0.02, 4.0, "seed 004 Table 5-1 ...")]
+
+    The allowed range of the :class:`Quantity` is what the model can compute; the plausible
+    range is what a real machine has. A value outside it is most likely a unit slip (a bare
+    number is SI: ``length = 1050`` is a 1050 m bearing) and is refused, with the unit that
+    would bring it into range, unless the case lists the field in ``[case] unusual``
+    (:mod:`shaftline.cases.plausibility`). The range must catch slips of a factor of 25.4
+    or 1000, not legitimate unusual machines: it is generous, and ``source`` says why.
+    """
+
+    low: float
+    high: float
+    source: str
+
+    def __post_init__(self) -> None:
+        if not self.low < self.high:
+            raise ValueError(f"a plausible range needs low < high, got {self.low} and {self.high}")
+
+    def contains(self, value: float) -> bool:
+        return self.low <= value <= self.high
+
+    def sizeable(self, value: float) -> bool:
+        """Whether ``value`` is not negligible in a range that holds zero (offsets, forces):
+        in such a range every small unit fits, and a value a thousandth of the range's size is
+        no likely meaning of a number written."""
+        return not self.low <= 0.0 <= self.high or abs(value) >= 1e-3 * max(-self.low, self.high)
+
+    def text(self, unit: str) -> str:
+        """The range in words, ``"0.02 to 4 m"``."""
+        return f"{_number(self.low)} to {_number(self.high)}{' ' + unit if unit else ''}"
+
+    def __get_pydantic_json_schema__(
+        self, schema: core_schema.CoreSchema, handler: GetJsonSchemaHandler
+    ) -> JsonSchemaValue:
+        out = handler(schema)
+        out["x-plausible"] = [self.low, self.high]
+        out["x-plausible-source"] = self.source
+        return out
+
+
+@dataclass(frozen=True)
+class PlausibleRatio:
+    """A cross-field plausibility check of a table: a ratio of its fields in a plausible range.
+
+    Declared in the table's model as ``plausible_ratios`` (a class variable); the check names
+    ``field``, the field most likely to hold a unit slip, and tries the usual units of that
+    field for the suggestion. Listing ``field`` in ``[case] unusual`` lowers this check too.
+
+    Attributes
+    ----------
+    field : str
+        Path of the named field relative to the table (``"radial_clearance"``,
+        ``"operation.load"``); the check is skipped when it is not given.
+    name : str
+        The ratio as written in the message (``"c/R"``).
+    ratio : callable
+        ``ratio(table, value)``: the ratio with ``value`` in place of the named field (SI).
+    low, high : float
+        Plausible range of the ratio.
+    source : str
+        Where the range comes from.
+    meaning : str
+        What the ratio is, in words, for the README.
+    uses : tuple of str
+        The other fields of the ratio (relative paths), shown in the message.
+    unit : str
+        SI unit of the ratio (``"Pa"``), ``""`` for a number.
+    """
+
+    field: str
+    name: str
+    ratio: Callable[[Any, float], float]
+    low: float
+    high: float
+    source: str
+    meaning: str
+    uses: tuple[str, ...] = ()
+    unit: str = ""
+
+    def text(self) -> str:
+        return Plausible(self.low, self.high, self.source).text(self.unit)
+
+
+#: The plausible shaft speed of a marine propulsion line, shared by the capabilities.
+SHAFT_SPEED = Plausible(
+    0.1 * math.pi / 30,
+    1500 * math.pi / 30,
+    "0.1 to 1500 rpm: turning gear (about 1 rpm), slow-speed two-stroke (50-120 rpm, seed 004: 90 rpm), geared "
+    "medium-speed (up to about 300 rpm), fast ferries and naval craft (up to about 1500 rpm); seed 001 runs "
+    "15-215 rpm (engineering judgement); rpm written as a bare number (rad/s) is above from 157 rpm on",
+)
 
 
 # The common kinds, unbounded and with their usual bounds.
@@ -135,6 +239,9 @@ class Section(BaseModel):
 
     model_config = ConfigDict(extra="forbid", frozen=True, use_attribute_docstrings=True)
 
+    #: Cross-field plausibility checks of the table (see :class:`PlausibleRatio`).
+    plausible_ratios: ClassVar[tuple[PlausibleRatio, ...]] = ()
+
 
 class CaseInfo(Section):
     """Labels of the case."""
@@ -143,6 +250,9 @@ class CaseInfo(Section):
     """Name of the case (report title; the base case of a bearing study)."""
     description: str = ""
     """What the case is, for the report."""
+    unusual: list[str] = []
+    """Fields whose plausible range is lowered, for a genuinely unusual machine: dotted case-file paths, one
+    field each (e.g. "bearing.length", "alignment.bearings[3].x"); the report lists them."""
 
 
 def default_of(cls: type, name: str) -> Any:
@@ -164,4 +274,14 @@ def field_error(field: str, value: Any, allowed: str, unit: str = "") -> Pydanti
     return PydanticCustomError("field", "{allowed}", {"field": field, "value": value, "unit": unit, "allowed": allowed})
 
 
-__all__ = ["CaseInfo", "Field", "Quantity", "Section", "default_of", "field_error"]
+__all__ = [
+    "SHAFT_SPEED",
+    "CaseInfo",
+    "Field",
+    "Plausible",
+    "PlausibleRatio",
+    "Quantity",
+    "Section",
+    "default_of",
+    "field_error",
+]

@@ -20,12 +20,15 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 from pydantic import Field, StrictFloat, StrictInt, model_validator
 
 from shaftline.cases.types import (
+    SHAFT_SPEED,
     Angle,
     Force,
     Length,
     Moment,
     NonNegativeInertia,
     NonNegativeLength,
+    Plausible,
+    PlausibleRatio,
     PositiveArea,
     PositiveInertia,
     PositiveLength,
@@ -77,6 +80,36 @@ STUDY_KINDS = {
 }
 
 
+# Plausible ranges of a CPP blade bearing (the README's table of plausible ranges is made from
+# them): generous, to catch a unit slip, not an unusual propeller ([case] unusual).
+_SEED = "seed 000"
+_EXAMPLE = "examples/cpp_blade_bearing.toml"
+BLADE_FORCE = Plausible(
+    -3e7,
+    3e7,
+    "thrust per blade of the largest CPPs is about 1 MN and the centrifugal force of a 10-20 t blade a few MN "
+    f"({_EXAMPLE}: 95 kN); 30 MN is ten times beyond (engineering judgement)",
+)
+BLADE_MOMENT = Plausible(
+    -5e7,
+    5e7,
+    f"blade-root moments of the largest CPPs are a few MN m ({_EXAMPLE}: 190 kN m; {_SEED} Sect. 4.7: "
+    "hydraulic moments up to 0.3 MN m); 50 MN m is ten times beyond (engineering judgement)",
+)
+BLADE_RADIUS = Plausible(
+    0.02,
+    2.0,
+    f"blade-bearing radii are about 0.1-0.2 of the propeller diameter ({_SEED} Ch. 6: 0.392 m); 2 m would fit a "
+    "15 m propeller (engineering judgement); mm written as m is far above",
+)
+PITCH_ANGLE = Plausible(
+    0.05,
+    1.05,
+    f"3 to 60 deg: design pitch angles at 0.7 R are about 13-36 deg for P/D 0.6-1.6 ({_SEED}: 28 deg) "
+    "(engineering judgement)",
+)
+
+
 class HarmonicSection(Section):
     """A harmonic of a blade-load component over the blade angle: amplitude cos(order angle + phase)."""
 
@@ -86,7 +119,12 @@ class HarmonicSection(Section):
     """Order (per revolution)."""
     amplitude: StrictFloat | StrictInt | str
     """Amplitude: a force (N) for force components, a moment (N m) for moment components."""
-    phase: Angle = 0.0
+    phase: Annotated[
+        Angle,
+        Plausible(
+            -2 * math.pi, 2 * math.pi, "a phase: a turn either way; deg as a bare number (rad) is beyond from 7 deg on"
+        ),
+    ] = 0.0
     """Phase."""
 
 
@@ -96,19 +134,48 @@ class LoadsSection(Section):
     table: str | None = None
     """CSV: angle_deg, force_x, force_y, force_z (N), moment_x, moment_y, moment_z (N m), one row per
     blade angle within one turn; path relative to the case file."""
-    mean_force: Annotated[list[Force], Field(min_length=3, max_length=3)] | None = None
+    mean_force: Annotated[list[Annotated[Force, BLADE_FORCE]], Field(min_length=3, max_length=3)] | None = None
     """Mean hydrodynamic force (x, y, z), without a table."""
-    mean_moment: Annotated[list[Moment], Field(min_length=3, max_length=3)] | None = None
+    mean_moment: Annotated[list[Annotated[Moment, BLADE_MOMENT]], Field(min_length=3, max_length=3)] | None = None
     """Mean hydrodynamic moment (x, y, z), without a table."""
     harmonics: list[HarmonicSection] = []
     """Harmonics added to the mean values."""
-    centrifugal_force: Annotated[list[Force], Field(min_length=3, max_length=3)] | None = None
+    centrifugal_force: Annotated[list[Annotated[Force, BLADE_FORCE]], Field(min_length=3, max_length=3)] | None = None
     """Centrifugal force (x, y, z); or blade_mass and centre_of_gravity."""
-    centrifugal_moment: Annotated[list[Moment], Field(min_length=3, max_length=3)] | None = None
+    centrifugal_moment: Annotated[list[Annotated[Moment, BLADE_MOMENT]], Field(min_length=3, max_length=3)] | None = (
+        None
+    )
     """Centrifugal moment (x, y, z)."""
-    blade_mass: PositiveMass | None = None
+    blade_mass: (
+        Annotated[
+            PositiveMass,
+            Plausible(
+                0.5,
+                1e5,
+                f"CPP blades weigh from about a kg (small craft) to some tens of t ({_EXAMPLE}: 2.6 t); the "
+                "cross-field check below catches a mass in t written in kg (engineering judgement)",
+            ),
+        ]
+        | None
+    ) = None
     """Blade mass (centrifugal load of a point mass)."""
-    centre_of_gravity: Annotated[list[Length], Field(min_length=3, max_length=3)] | None = None
+    centre_of_gravity: (
+        Annotated[
+            list[
+                Annotated[
+                    Length,
+                    Plausible(
+                        -10.0,
+                        10.0,
+                        f"within the blade: less than the propeller radius ({_EXAMPLE}: up to 0.55 m); mm written "
+                        "as m is beyond",
+                    ),
+                ]
+            ],
+            Field(min_length=3, max_length=3),
+        ]
+        | None
+    ) = None
     """Blade centre of gravity from the bearing centre (x, y, z)."""
     points: Annotated[int, Field(ge=36)] = 720
     """Blade angles per revolution of harmonic loads."""
@@ -131,59 +198,143 @@ class LoadsSection(Section):
 class BladeBearingSection(Section):
     """The blade bearing: flange (radial part) and cylindrical seat (axial part)."""
 
-    radius: PositiveLength
+    radius: Annotated[PositiveLength, BLADE_RADIUS]
     """Mean radius of the flange (where sliding and fretting are counted)."""
-    friction_coefficient: Annotated[float, Quantity("dimensionless", gt=0, lt=1)]
+    friction_coefficient: Annotated[
+        float,
+        Quantity("dimensionless", gt=0, lt=1),
+        Plausible(
+            0.005,
+            0.6,
+            f"bronze on steel, lubricated to dry, about 0.05-0.3 ({_SEED} Tables 4.1-4.2, Ch. 5) (engineering "
+            "judgement)",
+        ),
+    ]
     """Coefficient of friction of the bearing."""
-    axial_radius: PositiveLength
+    axial_radius: Annotated[PositiveLength, BLADE_RADIUS]
     """Radius of the bore of the axial part."""
-    carrier_radius: PositiveLength
+    carrier_radius: Annotated[PositiveLength, BLADE_RADIUS]
     """Radius of the blade carrier in it."""
-    thickness: PositiveLength
+    thickness: Annotated[
+        PositiveLength,
+        Plausible(
+            0.001, 0.5, f"the axial part of the bearing is some cm thick ({_EXAMPLE}: 0.12 m); mm written as m is above"
+        ),
+    ]
     """Thickness of the axial part."""
-    youngs_modulus: PositivePressure = default_of(BladeBearing, "youngs_modulus")
+    youngs_modulus: Annotated[
+        PositivePressure,
+        Plausible(
+            5e8,
+            5e11,
+            "bronzes about 100-130 GPa (CuNiAl 120 GPa), steels 210, polymer-lined bearings down to about 1 GPa "
+            "(engineering judgement); GPa written as a bare number (Pa) is far below",
+        ),
+    ] = default_of(BladeBearing, "youngs_modulus")
     """Young's modulus of the bearing material."""
 
 
 class HydraulicsSection(Section):
     """The pitch-control hydraulics behind the yoke."""
 
-    bulk_modulus: PositivePressure = 1.5e9
+    bulk_modulus: Annotated[
+        PositivePressure,
+        Plausible(
+            1e8,
+            5e9,
+            f"mineral oil about 1.5-2 GPa, with entrained air ten times less ({_SEED} Sect. 4.7.3); GPa written as "
+            "a bare number (Pa) is far below",
+        ),
+    ] = 1.5e9
     """Bulk modulus of the oil."""
-    oil_volume: PositiveVolume
+    oil_volume: Annotated[
+        PositiveVolume,
+        Plausible(
+            1e-4,
+            10.0,
+            f"from about a litre in a small hub to some m^3 ({_EXAMPLE}: 250 l) (engineering judgement); litres "
+            "written as a bare number (m^3) are above 10 m^3",
+        ),
+    ]
     """Oil volume behind the yoke."""
-    yoke_area: PositiveArea
+    yoke_area: Annotated[
+        PositiveArea,
+        Plausible(
+            1e-3,
+            10.0,
+            f"yoke pistons from about 10 cm^2 to a few m^2 ({_EXAMPLE}: 0.95 m^2) (engineering judgement); cm^2 "
+            "written as a bare number (m^2) is above",
+        ),
+    ]
     """Piston (yoke) area."""
-    pin_radius: PositiveLength
+    pin_radius: Annotated[PositiveLength, BLADE_RADIUS]
     """Eccentricity of the crank pin."""
-    backlash: NonNegativeLength = 0.0
+    backlash: Annotated[
+        NonNegativeLength,
+        Plausible(
+            0.0,
+            0.005,
+            f"free play of tenths of a mm ({_SEED} Sect. 4.7: 0.2 mm); 5 mm is 25 times that, mm written as a bare "
+            "number (m) is far above",
+        ),
+    ] = 0.0
     """Total free play in the pin-slot-yoke chain."""
-    other_friction: Force = 0.0
+    other_friction: Annotated[Force, BLADE_FORCE] = 0.0
     """Friction of the other parts of the mechanism."""
-    counterbalance_pressure: Pressure = 0.0
+    counterbalance_pressure: Annotated[
+        Pressure,
+        Plausible(
+            -1e5,
+            1e7,
+            f"counterbalance valves open at a few bar ({_EXAMPLE}: 5 bar), pitch-control hydraulics run up to about "
+            "100 bar (engineering judgement)",
+        ),
+    ] = 0.0
     """Counterbalance pressure."""
-    column_length: PositiveLength | None = None
+    column_length: (
+        Annotated[PositiveLength, Plausible(0.01, 20.0, "an oil column in the hub and shaft (engineering judgement)")]
+        | None
+    ) = None
     """Length of the oil column (default: volume / area)."""
+
+
+SPINDLE_INERTIA = Plausible(
+    1e-3,
+    1e5,
+    "blade and carrier about the spindle: from about 0.01 kg m^2 of small blades to about 2e4 kg m^2 of the "
+    f"largest (20 t at a radius of gyration of 1 m; {_EXAMPLE}: 650 kg m^2) (engineering judgement); t m^2 "
+    "written as a bare number (kg m^2) is above",
+)
+_LUGRE = "a fitted model parameter: " + _SEED + " Table 4.2 gives {}; four decades either way (engineering judgement)"
 
 
 class MotionSection(Section):
     """The blade-carrier fretting motion (Sect. 4.6): inertia, friction law and run length."""
 
-    inertia: PositiveInertia
+    inertia: Annotated[PositiveInertia, SPINDLE_INERTIA]
     """Blade and carrier inertia about the spindle axis."""
-    water_inertia: NonNegativeInertia = 0.0
+    water_inertia: Annotated[NonNegativeInertia, Plausible(0.0, SPINDLE_INERTIA.high, SPINDLE_INERTIA.source)] = 0.0
     """Entrained-water inertia."""
     friction: Literal["lugre", "static"] = default_of(CarrierModel, "friction")
     """LuGre (Eq. 4.13-4.15) or the finite-slope static law (Eq. 4.8)."""
     revolutions: Annotated[int, Field(ge=1, le=10000)] = 10
     """Shaft revolutions simulated (the last one is reported)."""
-    stiffness: Annotated[float, Quantity("rotational_stiffness", gt=0)] = default_of(CarrierModel, "stiffness")
+    stiffness: Annotated[
+        float, Quantity("rotational_stiffness", gt=0), Plausible(5e6, 5e14, _LUGRE.format("sigma_0 = 5e10 N m"))
+    ] = default_of(CarrierModel, "stiffness")
     """LuGre bristle stiffness sigma_0 (Table 4.2)."""
-    damping: Annotated[float, Quantity("rotational_damping", ge=0)] = default_of(CarrierModel, "damping")
+    damping: Annotated[
+        float, Quantity("rotational_damping", ge=0), Plausible(0.0, 1e12, _LUGRE.format("sigma_1 = 1e8 N m s"))
+    ] = default_of(CarrierModel, "damping")
     """LuGre bristle damping sigma_1 (Table 4.2)."""
-    stribeck_velocity: PositiveSpeed = default_of(CarrierModel, "stribeck_velocity")
+    stribeck_velocity: Annotated[PositiveSpeed, Plausible(2e-7, 20.0, _LUGRE.format("v_s = 0.002 rad/s"))] = default_of(
+        CarrierModel, "stribeck_velocity"
+    )
     """Stribeck velocity (rotational)."""
-    threshold_velocity: PositiveSpeed = default_of(CarrierModel, "threshold_velocity")
+    threshold_velocity: Annotated[
+        PositiveSpeed,
+        Plausible(1e-8, 1.0, "1e-4 rad/s from the creep the seed reports (cpp/motion.py); four decades either way"),
+    ] = default_of(CarrierModel, "threshold_velocity")
     """Threshold velocity of the static law (rotational)."""
 
 
@@ -201,13 +352,36 @@ class StudySection(Section):
 class CppSection(Section):
     """A CPP blade bearing: friction torque, fretting coefficient, hydraulics and carrier motion."""
 
+    plausible_ratios = (
+        PlausibleRatio(
+            "loads.blade_mass",
+            "m/(rho D^3)",
+            lambda s, mass: mass / (7600.0 * s.propeller_diameter**3),
+            3e-4,
+            5e-2,
+            "blade mass grows with the cube of the propeller diameter: about 2e-3 to 8e-3 with rho = 7600 kg/m^3 "
+            f"(bronze; {_EXAMPLE}: 3.8e-3); the range is six times beyond either way, a mass in t written as a bare "
+            "number (kg) is far below (engineering judgement)",
+            "blade mass / (7600 kg/m^3 x cube of the propeller diameter)",
+            uses=("propeller_diameter",),
+        ),
+    )
+
     blades: Annotated[int, Field(ge=2, le=8)]
     """Number of blades."""
-    shaft_speed: PositiveSpeed
+    shaft_speed: Annotated[PositiveSpeed, SHAFT_SPEED]
     """Shaft speed."""
-    propeller_diameter: PositiveLength
+    propeller_diameter: Annotated[
+        PositiveLength,
+        Plausible(
+            0.2,
+            15.0,
+            f"propellers from about 0.3 m (small craft) to about 10-11 m (the largest ships; {_EXAMPLE}: 4.5 m) "
+            "(engineering judgement); mm written as m is far above",
+        ),
+    ]
     """Propeller diameter (R0.7 = 0.35 D)."""
-    pitch_angle: Annotated[float, Quantity("angle", gt=0, lt=1.5707963267948966)]
+    pitch_angle: Annotated[float, Quantity("angle", gt=0, lt=1.5707963267948966), PITCH_ANGLE]
     """Design pitch angle, below 90 deg (a number is in radians)."""
     bearing: BladeBearingSection
     """The blade bearing."""

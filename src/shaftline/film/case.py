@@ -15,16 +15,20 @@ Layout::
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import numpy as np
 from pydantic import BeforeValidator, Field, model_validator
 
 from shaftline.cases.types import (
+    SHAFT_SPEED,
     Angle,
     Force,
     Length,
     Number,
+    Plausible,
+    PlausibleRatio,
     PositiveDensity,
     PositiveFraction,
     PositiveKinematicViscosity,
@@ -70,6 +74,38 @@ ROTATION_ALIASES = {
 }
 
 
+# Plausible ranges of a marine stern-tube bearing (the README's table of plausible ranges is
+# made from them). They are generous: they catch a unit slip (a factor of 25.4 or 1000, a
+# bare number read as SI), not an unusual bearing, which a case lists in [case] unusual.
+_SEEDS = "seed 004 Table 5-1 (L = 1.05 m, D = 0.52 m, c = 0.45 mm), seed 001 Table 1 (L = 1.2 m, D = 0.324 m)"
+SLOPE = Plausible(
+    -0.01,
+    0.01,
+    "relative slopes in stern-tube bearings are about 0.1-0.5 mrad (class limit about 0.3 mrad, rules.toml; "
+    "seed 004 tilts 0.3-0.6 x 2c/L, 0.26-0.51 mrad); 10 mrad (0.57 deg) is 20 times that, a slope in mrad or "
+    "deg written as a bare number (rad) is far above it",
+)
+CLEARANCE_SHARE = Plausible(
+    -3.0,
+    3.0,
+    "seed 004 optimises slopes and tilts of 0.1-0.6 x 2c/L; 1 brings the journal edge onto the bore, 3 is "
+    "three times that (engineering judgement); a share written in % (30 for 0.3) is far outside",
+)
+EDGE_PRESSURE = Plausible(
+    -1.1e5,
+    1e6,
+    "sea-water head at the stern (draught up to about 25 m: 2.5 bar), header tanks and feed pumps are a few bar; "
+    "seed 001 feeds water at 1.3 bar; below -1 bar gauge is vacuum (engineering judgement); a pressure in "
+    "bar written as MPa is above 10 bar",
+)
+BEARING_LOAD = Plausible(
+    0.0,
+    3e7,
+    "the heaviest aft stern-tube bearings carry a few MN (a 130 t propeller is 1.3 MN; seed 004: 0.31 MN); "
+    "30 MN is ten times that (engineering judgement)",
+)
+
+
 def _rotation_alias(value: Any) -> Any:
     if isinstance(value, str):
         key = value.strip().lower()
@@ -82,11 +118,11 @@ class BoreSegmentSection(Section):
 
     length_fraction: PositiveFraction
     """Share of the bearing length; the shares of all segments sum to 1."""
-    slope: Angle | None = None
+    slope: Annotated[Angle, SLOPE] | None = None
     """Slope of the bore axis in the vertical plane (+ rising forward); or give slope_ratio."""
-    slope_ratio: Number | None = None
+    slope_ratio: Annotated[Number, CLEARANCE_SHARE] | None = None
     """Slope as a share of 2c/L (the dimensionless slope of seed 004)."""
-    slope_horizontal: Angle = default_of(BoreSegment, "slope_horizontal")
+    slope_horizontal: Annotated[Angle, SLOPE] = default_of(BoreSegment, "slope_horizontal")
     """Slope in the horizontal plane (+ towards starboard going forward)."""
 
     @model_validator(mode="after")
@@ -96,14 +132,22 @@ class BoreSegmentSection(Section):
         return self
 
 
+JOURNAL_OFFSET = Plausible(
+    -0.01,
+    0.01,
+    "the journal's bend within a bearing is of the order of its clearance (seed 004 Table 5-29: up to 0.7 mm); "
+    "10 mm is ten times the largest clearances (engineering judgement); mm written as m is above it",
+)
+
+
 class BentJournalSection(Section):
     """Journal centre line along the bearing (from a shaft model), linearly interpolated."""
 
-    z: list[Length]
+    z: list[Annotated[Length, Plausible(0.0, 4.0, "stations within the bearing: as its length")]]
     """Stations from the aft edge."""
-    dy: list[Length]
+    dy: list[Annotated[Length, JOURNAL_OFFSET]]
     """Vertical offsets of the journal centre at the stations."""
-    dz: list[Length] | None = None
+    dz: list[Annotated[Length, JOURNAL_OFFSET]] | None = None
     """Horizontal offsets (default zero)."""
 
 
@@ -119,9 +163,16 @@ class FilmProfileSection(Section):
 class GrooveSection(Section):
     """An axial supply groove."""
 
-    angle: Angle
+    angle: Annotated[
+        Angle,
+        Plausible(
+            -2 * math.pi,
+            2 * math.pi,
+            "a place around the bore: a turn either way; deg as a bare number (rad) is beyond from 7 deg on",
+        ),
+    ]
     """Angle of the groove centre from the top, in the sense of rotation."""
-    pressure: Pressure = default_of(SupplyGroove, "pressure")
+    pressure: Annotated[Pressure, EDGE_PRESSURE] = default_of(SupplyGroove, "pressure")
     """Supply pressure above ambient."""
     length_fraction: PositiveFraction = default_of(SupplyGroove, "length_fraction")
     """Axial length of the groove, share of the bearing length (centred)."""
@@ -130,25 +181,25 @@ class GrooveSection(Section):
 class OperationSection(Section):
     """Running condition, load and misalignment."""
 
-    speed: Annotated[float, Quantity("speed", ge=0)]
+    speed: Annotated[float, Quantity("speed", ge=0), SHAFT_SPEED]
     """Shaft speed."""
-    load: Annotated[float, Quantity("force", ge=0)]
+    load: Annotated[float, Quantity("force", ge=0), BEARING_LOAD]
     """Magnitude of the downward load on the journal."""
-    load_horizontal: Force = 0.0
+    load_horizontal: Annotated[Force, Plausible(-BEARING_LOAD.high, BEARING_LOAD.high, BEARING_LOAD.source)] = 0.0
     """Horizontal load on the journal (+ starboard)."""
-    tilt_vertical: Angle | None = None
+    tilt_vertical: Annotated[Angle, SLOPE] | None = None
     """Journal tilt relative to the bore, vertical plane (+ journal rising forward); or misalignment_ratio_vertical."""
-    tilt_horizontal: Angle | None = None
+    tilt_horizontal: Annotated[Angle, SLOPE] | None = None
     """Journal tilt, horizontal plane; or misalignment_ratio_horizontal."""
-    misalignment_ratio_vertical: Number | None = None
+    misalignment_ratio_vertical: Annotated[Number, CLEARANCE_SHARE] | None = None
     """Tilt as a share of 2c/L (psi of seed 004)."""
-    misalignment_ratio_horizontal: Number | None = None
+    misalignment_ratio_horizontal: Annotated[Number, CLEARANCE_SHARE] | None = None
     """Horizontal tilt as a share of 2c/L."""
-    aft_pressure: Pressure = default_of(OperatingPoint, "aft_pressure")
+    aft_pressure: Annotated[Pressure, EDGE_PRESSURE] = default_of(OperatingPoint, "aft_pressure")
     """Pressure at the aft edge above ambient."""
-    fore_pressure: Pressure = default_of(OperatingPoint, "fore_pressure")
+    fore_pressure: Annotated[Pressure, EDGE_PRESSURE] = default_of(OperatingPoint, "fore_pressure")
     """Pressure at the forward edge above ambient."""
-    cavitation_pressure: Pressure = default_of(OperatingPoint, "cavitation_pressure")
+    cavitation_pressure: Annotated[Pressure, EDGE_PRESSURE] = default_of(OperatingPoint, "cavitation_pressure")
     """Pressure at which the film ruptures, above ambient."""
     grooves: list[GrooveSection] = []
     """Axial supply grooves."""
@@ -173,25 +224,75 @@ class OperationSection(Section):
 PRESET_TEXT = "ISO VG 68, ISO VG 100, ISO VG 150, SAE 30, water, sea water"
 
 
+REFERENCE_TEMPERATURE = Plausible(
+    -20.0,
+    150.0,
+    "the reference temperatures of oil data are 40 and 100 degC (ISO 3448, ASTM D341); degF written as degC "
+    "(212 for 100 degC) is above 150",
+)
+KINEMATIC_VISCOSITY = Plausible(
+    2e-7,
+    5e-3,
+    "0.2 to 5000 cSt: water at 100 degC is 0.3 cSt, ISO VG 68-150 oils are about 10-150 cSt at 40-100 degC "
+    "(ISO 3448) and a few thousand at 0 degC (engineering judgement); cSt written as a bare number (m^2/s) is "
+    "far above",
+)
+
+
 class LubricantSection(Section):
     """The lubricant: a constant viscosity, a preset at a temperature, or an oil given by
     two kinematic viscosities (ASTM D341) at a temperature."""
 
-    viscosity: PositiveViscosity | None = None
+    viscosity: (
+        Annotated[
+            PositiveViscosity,
+            Plausible(
+                1e-4,
+                5.0,
+                "0.1 mPa s to 5 Pa s: water at 100 degC is 0.28 mPa s, sea water at 0 degC 1.9 mPa s, seed 004's "
+                "SAE 30 at 40 degC 0.07 Pa s, ISO VG 150 at 0 degC about 2 Pa s (engineering judgement); Pa s "
+                "written as mPa s (the seed's own slip: 0.07 mPa s) or cP of an oil as a bare number is outside",
+            ),
+        ]
+        | None
+    ) = None
     """Effective dynamic viscosity of the film."""
     preset: str | None = None
     """Named lubricant: ISO VG 68, ISO VG 100, ISO VG 150, SAE 30, water, sea water."""
-    temperature: Temperature | None = None
+    temperature: (
+        Annotated[
+            Temperature,
+            Plausible(
+                -5.0,
+                120.0,
+                "sea water from -2 degC; stern-tube oil runs at about 30-70 degC (seed 004: 40 degC, robustness test "
+                "hotter) with alarms near 65-80 degC (engineering judgement); degF written as degC (140 for 60 degC) "
+                "is above 120",
+            ),
+        ]
+        | None
+    ) = None
     """Effective film temperature (with a preset or two-point oil)."""
-    density: PositiveDensity | None = None
+    density: (
+        Annotated[
+            PositiveDensity,
+            Plausible(
+                600.0,
+                1400.0,
+                "mineral and synthetic oils 820-1000 kg/m^3, water 1000-1030 (seed 004: 890); g/cm^3 as a bare number "
+                "is far below",
+            ),
+        ]
+        | None
+    ) = None
     """Density (with viscosity; density at 15 degC of a two-point oil); default 880 kg/m^3."""
-    kinematic_viscosity_1: PositiveKinematicViscosity | None = None
+    kinematic_viscosity_1: Annotated[PositiveKinematicViscosity, KINEMATIC_VISCOSITY] | None = None
     """Kinematic viscosity at temperature_1 of a two-point oil."""
-    temperature_1: Temperature | None = None
+    temperature_1: Annotated[Temperature, REFERENCE_TEMPERATURE] | None = None
     """First reference temperature (e.g. 40 degC)."""
-    kinematic_viscosity_2: PositiveKinematicViscosity | None = None
+    kinematic_viscosity_2: Annotated[PositiveKinematicViscosity, KINEMATIC_VISCOSITY] | None = None
     """Kinematic viscosity at temperature_2."""
-    temperature_2: Temperature | None = None
+    temperature_2: Annotated[Temperature, REFERENCE_TEMPERATURE] | None = None
     """Second reference temperature (e.g. 100 degC)."""
     name: str | None = None
     """Label of the lubricant."""
@@ -253,9 +354,9 @@ class VariantSection(Section):
     """Label of the variant."""
     bore: list[BoreSegmentSection] | None = None
     """Slope-bored segments replacing the base case's bore."""
-    misalignment_ratio_vertical: Number | None = None
+    misalignment_ratio_vertical: Annotated[Number, CLEARANCE_SHARE] | None = None
     """Vertical tilt as a share of 2c/L, replacing the base case's."""
-    tilt_vertical: Angle | None = None
+    tilt_vertical: Annotated[Angle, SLOPE] | None = None
     """Vertical tilt replacing the base case's."""
 
     @model_validator(mode="after")
@@ -267,16 +368,94 @@ class VariantSection(Section):
         return self
 
 
+_CLEARANCE = (
+    "seed 004: c = 0.45 mm, seed 001: 0.5 mm; from about 10 um on a small journal to several mm in worn "
+    "water-lubricated bearings (engineering judgement); the clearance ratio c/R below is the sharper check"
+)
+_CLEARANCE_RATIO = (
+    "oil-lubricated white metal typically 0.5e-3 to 2e-3 (seed 004: 1.7e-3); water-lubricated polymer and rubber "
+    "bearings more, seed 001: 3.1e-3, small-craft rubber bearings 1e-3 to 2e-3 new and about 5e-3 at the wear "
+    "limit (ABYC practice); 1e-4 and 2e-2 are four times beyond, a clearance in mm written as m or um, or in "
+    "inches written as mm, is outside"
+)
+
+
 class BearingSection(Section):
     """A stern-tube journal bearing film at equilibrium under its load."""
 
-    length: PositiveLength
+    plausible_ratios = (
+        PlausibleRatio(
+            "radial_clearance",
+            "c/R",
+            lambda s, c: 2.0 * c / s.diameter,
+            1e-4,
+            2e-2,
+            _CLEARANCE_RATIO,
+            "radial clearance / journal radius",
+            uses=("diameter",),
+        ),
+        PlausibleRatio(
+            "diametral_clearance",
+            "c/R",
+            lambda s, clearance: clearance / s.diameter,
+            1e-4,
+            2e-2,
+            _CLEARANCE_RATIO,
+            "diametral clearance / journal diameter",
+            uses=("diameter",),
+        ),
+        PlausibleRatio(
+            "length",
+            "L/D",
+            lambda s, length: length / s.diameter,
+            0.2,
+            6.0,
+            "class rules ask L >= 2 D of oil-lubricated white-metal (down to about 1.5 D) and >= 4 D of "
+            "water-lubricated aft stern-tube bearings (e.g. LR Rules for Ships Pt 5 Ch 6; seed 004 Ch. 2: L/D about 2, "
+            "seed 001: 3.7; Nielsen 1978 found 1-1.5 optimal); intermediate bearings down to about 0.5 "
+            "(engineering judgement)",
+            "bearing length / journal diameter",
+            uses=("diameter",),
+        ),
+        PlausibleRatio(
+            "operation.load",
+            "W/(L D)",
+            lambda s, load: math.hypot(load, s.operation.load_horizontal) / (s.length * s.diameter),
+            1e3,
+            5e6,
+            "class limits of the nominal pressure: 0.8 MPa white metal (some societies accept 1.0-1.2 MPa), 0.6 MPa "
+            "synthetic (seed 004 Ch. 2; rules.toml); seed 004: 0.57 MPa. 5 MPa is six times the limit, 1 kPa a "
+            "nearly unloaded forward bearing (engineering judgement); a load in N written as kN, or kN as N, is "
+            "outside",
+            "load magnitude / projected area",
+            uses=("length", "diameter"),
+            unit="Pa",
+        ),
+    )
+
+    length: Annotated[
+        PositiveLength,
+        Plausible(
+            0.02,
+            4.0,
+            f"{_SEEDS}; the largest aft stern-tube bearings are about 2-2.5 m (shafts up to about 1.2 m, L/D about 2); "
+            "20 mm covers small-craft bearings (engineering judgement)",
+        ),
+    ]
     """Bearing length L."""
-    diameter: PositiveLength
+    diameter: Annotated[
+        PositiveLength,
+        Plausible(
+            0.02,
+            2.0,
+            f"{_SEEDS}; propeller shafts of the largest ships are about 1-1.2 m, of small craft 25 mm "
+            "(engineering judgement); mm written as a bare number (m) is far above",
+        ),
+    ]
     """Journal diameter D."""
-    radial_clearance: PositiveLength | None = None
+    radial_clearance: Annotated[PositiveLength, Plausible(1e-5, 0.02, _CLEARANCE)] | None = None
     """Radial clearance c; or diametral_clearance."""
-    diametral_clearance: PositiveLength | None = None
+    diametral_clearance: Annotated[PositiveLength, Plausible(2e-5, 0.04, _CLEARANCE)] | None = None
     """Diametral clearance 2c."""
     rotation: Annotated[Literal["clockwise", "anticlockwise"], BeforeValidator(_rotation_alias)] = "clockwise"
     """Sense of rotation seen from aft."""

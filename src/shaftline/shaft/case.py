@@ -30,6 +30,8 @@ from shaftline.cases.types import (
     Moment,
     NonNegativeLength,
     Number,
+    Plausible,
+    PlausibleRatio,
     PositiveAcceleration,
     PositiveDensity,
     PositiveFraction,
@@ -66,26 +68,111 @@ Comparison = Literal[">", ">=", "<", "<="]
 Objective = Literal["aft_slope", "load_spread"]
 
 
+# Plausible ranges of a ship's shaft line (the README's table of plausible ranges is made
+# from them): generous, to catch a unit slip (a bare number is SI: 2200 meant in mm is 2.2 km),
+# not an unusual line, which a case lists in [case] unusual.
+_EXAMPLE = "examples/single_screw_alignment.toml"
+X = Annotated[
+    Length,
+    Plausible(
+        -30.0,
+        300.0,
+        "stations from the aft end of the model: the propeller overhangs a few m aft, the longest lines (engine "
+        f"room amidships) are about 100 m; {_EXAMPLE}: 0.55-28.8 m (engineering judgement); mm written as m is "
+        "beyond 300 m",
+    ),
+]
+SHAFT_DIAMETER = Plausible(
+    0.02,
+    3.0,
+    "propeller shafts from about 25 mm (small craft) to about 1.2 m (the largest ships), flanges up to about "
+    f"2 m; {_EXAMPLE}: 0.62-1.25 m (engineering judgement)",
+)
+BORE = Plausible(0.0, 2.5, "a hollow shaft's bore is smaller than its outer diameter (the larger range above)")
+YOUNGS_MODULUS = Plausible(
+    1e9,
+    1e12,
+    "shaft steels about 206 GPa, composite shafts 20-150 GPa (engineering judgement); GPa or MPa written as a "
+    "bare number (Pa) is far below",
+)
+SHAFT_DENSITY = Plausible(
+    1000.0,
+    30000.0,
+    "steel 7850 kg/m^3, composite shafts about 1600; an equivalent crankshaft may take a modified density "
+    "(engineering judgement); g/cm^3 as a bare number is far below",
+)
+OFFSET = Annotated[
+    Length,
+    Plausible(
+        -0.05,
+        0.05,
+        f"bearing offsets from the reference line are a few mm ({_EXAMPLE}: up to 1.6 mm plus 0.9 mm of hull and "
+        "thermal change); 50 mm is ten times the largest (engineering judgement), an offset in mm written as a "
+        "bare number (m) is above it",
+    ),
+]
+LINE_FORCE = Plausible(
+    -3e7,
+    3e7,
+    "forces on a shaft line are at most a few MN (the largest propellers weigh 1.3 MN); 30 MN is ten times "
+    "that (engineering judgement)",
+)
+LINE_MOMENT = Plausible(
+    -1e8,
+    1e8,
+    f"eccentric-thrust moments of the largest propellers are a few MN m ({_EXAMPLE}: 0.35 MN m); 100 MN m is "
+    "ten times beyond (engineering judgement)",
+)
+#: Density of shaft steel, kg/m^3: the scale of the propeller-mass check (not the model's density).
+STEEL = 7850.0
+
+
+def _shaft_diameter_at(section: AlignmentSection, x: float) -> float:
+    """Outer diameter of the shaft model at station ``x`` (clamped to the model)."""
+    start = 0.0
+    for segment in section.shaft.segments:
+        if x <= start + segment.length or segment is section.shaft.segments[-1]:
+            share = min(max((x - start) / segment.length, 0.0), 1.0)
+            end = segment.outer_diameter_end if segment.outer_diameter_end is not None else segment.outer_diameter
+            return segment.outer_diameter + share * (end - segment.outer_diameter)
+        start += segment.length
+    raise AssertionError("a shaft has at least one segment")  # checked by the schema
+
+
 class SegmentSection(Section):
     """A length of shaft, straight or conical, solid or hollow; flanges as short thick segments."""
 
-    length: PositiveLength
+    length: Annotated[
+        PositiveLength,
+        Plausible(
+            0.005,
+            60.0,
+            "flanges and steps from a few mm, intermediate and propeller shafts up to about 15-25 m in one piece "
+            f"(engineering judgement; {_EXAMPLE}: 0.14-12 m); mm written as m is above 60 m",
+        ),
+    ]
     """Segment length."""
-    outer_diameter: PositiveLength
+    outer_diameter: Annotated[PositiveLength, SHAFT_DIAMETER]
     """Outer diameter at the aft end."""
-    inner_diameter: NonNegativeLength = default_of(ShaftSegment, "inner_diameter")
+    inner_diameter: Annotated[NonNegativeLength, BORE] = default_of(ShaftSegment, "inner_diameter")
     """Bore at the aft end (0: solid)."""
-    outer_diameter_end: PositiveLength | None = None
+    outer_diameter_end: Annotated[PositiveLength, SHAFT_DIAMETER] | None = None
     """Outer diameter at the forward end of a conical segment."""
-    inner_diameter_end: NonNegativeLength | None = None
+    inner_diameter_end: Annotated[NonNegativeLength, BORE] | None = None
     """Bore at the forward end of a conical segment."""
-    youngs_modulus: PositivePressure | None = None
+    youngs_modulus: Annotated[PositivePressure, YOUNGS_MODULUS] | None = None
     """Young's modulus (default: the shaft's)."""
-    shear_modulus: PositivePressure | None = None
+    shear_modulus: (
+        Annotated[
+            PositivePressure,
+            Plausible(4e8, 4e11, "steel about 80 GPa; as Young's modulus above, divided by 2(1 + nu)"),
+        ]
+        | None
+    ) = None
     """Shear modulus (default: from Young's modulus and Poisson's ratio)."""
     poisson_ratio: Annotated[float, Field(gt=-1, lt=0.5)] | None = None
     """Poisson's ratio (default: the shaft's)."""
-    density: PositiveDensity | None = None
+    density: Annotated[PositiveDensity, SHAFT_DENSITY] | None = None
     """Density (default: the shaft's)."""
     shear_area_factor: PositiveFraction | None = None
     """Shear area / area of the Timoshenko element (default: Cowper's value for a hollow circle)."""
@@ -100,30 +187,55 @@ class ShaftSection(Section):
     """Segments aft to forward."""
     beam_theory: BeamTheory = default_of(ShaftLine, "beam_theory")
     """Beam elements."""
-    element_length: PositiveLength = default_of(ShaftLine, "element_length")
+    element_length: Annotated[
+        PositiveLength,
+        Plausible(0.001, 10.0, "a mesh of mm to m elements (default 0.25 m); mm written as m is above 10 m"),
+    ] = default_of(ShaftLine, "element_length")
     """Largest element length of the mesh."""
     self_weight: bool = default_of(ShaftLine, "self_weight")
     """Include the shaft's own weight."""
-    gravity: PositiveAcceleration = default_of(ShaftLine, "gravity")
+    gravity: Annotated[
+        PositiveAcceleration,
+        Plausible(5.0, 20.0, "9.81 m/s^2 (standard gravity 9.80665); up to twice that for a ship's motion"),
+    ] = default_of(ShaftLine, "gravity")
     """Acceleration of gravity."""
-    youngs_modulus: PositivePressure = default_of(ShaftSegment, "youngs_modulus")
+    youngs_modulus: Annotated[PositivePressure, YOUNGS_MODULUS] = default_of(ShaftSegment, "youngs_modulus")
     """Young's modulus of segments that give none."""
     poisson_ratio: Annotated[float, Field(gt=-1, lt=0.5)] = default_of(ShaftSegment, "poisson_ratio")
     """Poisson's ratio of segments that give none."""
-    density: PositiveDensity = default_of(ShaftSegment, "density")
+    density: Annotated[PositiveDensity, SHAFT_DENSITY] = default_of(ShaftSegment, "density")
     """Density of segments that give none."""
 
 
 class PropellerSection(Section):
     """The propeller: its weight less buoyancy acts at its centre of gravity."""
 
-    x: Length
+    x: X
     """Centre of gravity (x < 0 beyond the aft end of the shaft)."""
-    mass: PositiveMass
+    mass: Annotated[
+        PositiveMass,
+        Plausible(
+            5.0,
+            3e5,
+            "from a few kg (small craft) to about 130 t (the largest container-ship propellers; the example: 62 t) "
+            "(engineering judgement); the cross-field check below catches a mass in t written in kg",
+        ),
+    ]
     """Mass in air."""
-    material_density: PositiveDensity = default_of(Propeller, "material_density")
+    material_density: Annotated[
+        PositiveDensity,
+        Plausible(
+            1000.0,
+            12000.0,
+            "nickel-aluminium and manganese bronzes about 7600 kg/m^3, stainless steel 7800, composite propellers "
+            "about 1500-2000 (engineering judgement)",
+        ),
+    ] = default_of(Propeller, "material_density")
     """Density of the propeller material (buoyancy)."""
-    water_density: PositiveDensity = default_of(Propeller, "water_density")
+    water_density: Annotated[
+        PositiveDensity,
+        Plausible(950.0, 1100.0, "fresh water 1000 kg/m^3, sea water about 1025 (default)"),
+    ] = default_of(Propeller, "water_density")
     """Density of the water."""
     immersed_fraction: Fraction = default_of(Propeller, "immersed_fraction")
     """Share of the propeller under water (conditions may change it)."""
@@ -134,21 +246,53 @@ class SupportSection(Section):
 
     name: str
     """Name (conditions, rules and procedures refer to it)."""
-    x: Length
+    x: X
     """Centre of the bearing."""
-    length: PositiveLength
+    length: Annotated[
+        PositiveLength,
+        Plausible(
+            0.02,
+            4.0,
+            "aft stern-tube bearings up to about 2-2.5 m (L/D about 2 on the largest shafts), engine and "
+            f"intermediate bearings 0.2-0.6 m ({_EXAMPLE}: 0.45-1.5 m); 20 mm covers small craft "
+            "(engineering judgement)",
+        ),
+    ]
     """Bearing length."""
-    offset_y: Length = default_of(Bearing, "offset_y")
+    offset_y: OFFSET = default_of(Bearing, "offset_y")
     """Vertical offset of the bearing from the reference line (+ up)."""
-    offset_z: Length = default_of(Bearing, "offset_z")
+    offset_z: OFFSET = default_of(Bearing, "offset_z")
     """Horizontal offset (+ starboard)."""
-    vertical_clearance: PositiveLength | None = None
+    vertical_clearance: (
+        Annotated[
+            PositiveLength,
+            Plausible(
+                2e-5,
+                0.04,
+                f"diametral clearances are about 1e-3 to 2e-3 of the diameter ({_EXAMPLE}: 0.6-1.2 mm; seed 004: "
+                "0.9 mm), several mm in worn water-lubricated bearings (engineering judgement); mm written as m is "
+                "far above",
+            ),
+        ]
+        | None
+    ) = None
     """Diametral clearance: the shaft touches the top of the bore after it (none: no top)."""
     material: Material = default_of(Bearing, "material")
     """Lining material (selects the class rules that apply); engine: limits of the engine maker."""
     support: SupportModel = default_of(Bearing, "support")
     """Rigid point, spring, or several points along a long bearing."""
-    stiffness: PositiveStiffness | None = None
+    stiffness: (
+        Annotated[
+            PositiveStiffness,
+            Plausible(
+                1e6,
+                1e12,
+                f"bearing and foundation stiffnesses of ship lines are about 1e8 to 1e10 N/m ({_EXAMPLE}: 2.5e9) "
+                "(engineering judgement); kN/mm written as a bare number (N/m) is far below",
+            ),
+        ]
+        | None
+    ) = None
     """Support stiffness of a spring support."""
     points: Annotated[int, Field(ge=1, le=50)] = default_of(Bearing, "points")
     """Support points of a multi-point support."""
@@ -156,22 +300,31 @@ class SupportSection(Section):
     """Where a point support acts: the centre or a third of the length from the aft end."""
     one_sided: bool = default_of(Bearing, "one_sided")
     """The shaft can lift off (the bearing only pushes up)."""
-    slope: Angle = default_of(Bearing, "slope")
+    slope: Annotated[
+        Angle,
+        Plausible(
+            -0.01,
+            0.01,
+            "slope-bored stern-tube bearings are inclined by about 0.1-1 mrad (class limit of the relative slope "
+            "about 0.3 mrad, rules.toml); 10 mrad (0.57 deg) is ten times that, mrad or deg written as a bare "
+            "number (rad) is far above (engineering judgement)",
+        ),
+    ] = default_of(Bearing, "slope")
     """The bearing's own slope (slope boring)."""
 
 
 class PointLoadSection(Section):
     """A point force and moment on the shaft."""
 
-    x: Length
+    x: X
     """Station."""
-    force_y: Force = default_of(PointLoad, "force_y")
+    force_y: Annotated[Force, LINE_FORCE] = default_of(PointLoad, "force_y")
     """Vertical force (+ up)."""
-    force_z: Force = default_of(PointLoad, "force_z")
+    force_z: Annotated[Force, LINE_FORCE] = default_of(PointLoad, "force_z")
     """Horizontal force (+ starboard)."""
-    moment_vertical: Moment = default_of(PointLoad, "moment_vertical")
+    moment_vertical: Annotated[Moment, LINE_MOMENT] = default_of(PointLoad, "moment_vertical")
     """Moment in the vertical plane (+ turning +x towards +y)."""
-    moment_horizontal: Moment = default_of(PointLoad, "moment_horizontal")
+    moment_horizontal: Annotated[Moment, LINE_MOMENT] = default_of(PointLoad, "moment_horizontal")
     """Moment in the horizontal plane (+ turning +x towards +z)."""
     name: str = ""
     """Label."""
@@ -180,24 +333,39 @@ class PointLoadSection(Section):
 class MassSection(Section):
     """A point mass (flywheel, coupling): its weight acts at x."""
 
-    x: Length
+    x: X
     """Station."""
-    mass: PositiveMass
+    mass: Annotated[
+        PositiveMass,
+        Plausible(
+            0.1,
+            5e5,
+            "couplings, flywheels, gears and rotors from kg to some tens of t (the example's flywheel: 14 t); "
+            "500 t is beyond any shaft-line mass (engineering judgement)",
+        ),
+    ]
     """Mass."""
     name: str = ""
     """Label."""
 
 
+DISTRIBUTED_LOAD = Plausible(
+    -1e6,
+    1e6,
+    "the weight of a 1.2 m steel shaft is about 87 kN/m; 1 MN/m is ten times any line's (engineering judgement)",
+)
+
+
 class DistributedLoadSection(Section):
     """A load spread uniformly over a length of shaft."""
 
-    x_start: Length
+    x_start: X
     """Aft end of the loaded length."""
-    x_end: Length
+    x_end: X
     """Forward end."""
-    load_y: ForcePerLength = default_of(DistributedLoad, "load_y")
+    load_y: Annotated[ForcePerLength, DISTRIBUTED_LOAD] = default_of(DistributedLoad, "load_y")
     """Vertical load per length (+ up)."""
-    load_z: ForcePerLength = default_of(DistributedLoad, "load_z")
+    load_z: Annotated[ForcePerLength, DISTRIBUTED_LOAD] = default_of(DistributedLoad, "load_z")
     """Horizontal load per length (+ starboard)."""
     name: str = ""
     """Label."""
@@ -208,9 +376,9 @@ class ConditionSection(Section):
 
     name: str
     """Name (cold/hot, ballast/laden, static/running, ...)."""
-    offsets_y: dict[str, Length] = {}
+    offsets_y: dict[str, OFFSET] = {}
     """Vertical offsets added per bearing name, e.g. { "intermediate" = "0.2 mm" }."""
-    offsets_z: dict[str, Length] = {}
+    offsets_z: dict[str, OFFSET] = {}
     """Horizontal offsets added per bearing name."""
     propeller_immersion: Fraction | None = None
     """Immersed share of the propeller in this condition."""
@@ -250,7 +418,10 @@ class OptimiseSection(Section):
     """Minimise the aft bearing's relative slope, or the spread of the load ratios."""
     adjustable: list[str] | None = None
     """Bearings whose offsets may change (default: all but the aft- and forward-most)."""
-    bound: PositiveLength = 5e-3
+    bound: Annotated[
+        PositiveLength,
+        Plausible(1e-5, 0.05, "offsets are a few mm (the offsets above); the default bound is 5 mm"),
+    ] = 5e-3
     """Largest added offset either way."""
 
 
@@ -259,18 +430,18 @@ class TemporarySupportSection(Section):
 
     name: str
     """Label."""
-    x: Length
+    x: X
     """Station."""
-    offset_y: Length = 0.0
+    offset_y: OFFSET = 0.0
     """Vertical offset (+ up)."""
 
 
 class SagGapSection(Section):
     """Sag and gap at an uncoupled flange."""
 
-    flange_x: Length
+    flange_x: X
     """Station of the flange."""
-    flange_diameter: PositiveLength | None = None
+    flange_diameter: Annotated[PositiveLength, SHAFT_DIAMETER] | None = None
     """Flange diameter (default: the larger shaft diameter at the flange)."""
     condition: str | None = None
     """Condition (default: the first)."""
@@ -283,7 +454,7 @@ class JackUpSection(Section):
 
     bearing: str
     """The bearing jacked."""
-    jack_x: Length
+    jack_x: X
     """Station of the jack."""
     condition: str | None = None
     """Condition (default: the first)."""
@@ -294,7 +465,7 @@ class JackUpSection(Section):
 class MeasuredReactionsSection(Section):
     """Offsets that explain measured reactions (reverse engineering of the alignment)."""
 
-    values: dict[str, Force]
+    values: dict[str, Annotated[Force, LINE_FORCE]]
     """Measured reaction per bearing name."""
     condition: str | None = None
     """Condition of the measurement (default: the first)."""
@@ -304,6 +475,21 @@ class MeasuredReactionsSection(Section):
 
 class AlignmentSection(Section):
     """A shaft alignment: the shaft line on its bearings in every load condition."""
+
+    plausible_ratios = (
+        PlausibleRatio(
+            "propeller.mass",
+            "m/(rho d^3)",
+            lambda s, mass: mass / (STEEL * _shaft_diameter_at(s, s.propeller.x) ** 3),
+            2.0,
+            200.0,
+            "propeller mass grows with the cube of the shaft diameter: about 20-40 from small craft (a 0.4 m, 5 kg "
+            f"propeller on a 25 mm shaft) to the largest ships (130 t on about 1 m; {_EXAMPLE}: 24); 2 and 200 are "
+            "ten times beyond, a mass in t written as a bare number (kg) is far below (engineering judgement)",
+            "propeller mass / (7850 kg/m^3 x cube of the shaft diameter at the propeller)",
+            uses=(),
+        ),
+    )
 
     shaft: ShaftSection
     """The shaft."""
