@@ -133,3 +133,26 @@ def test_errors_name_the_field_relative_to_the_checker():
         with pytest.raises(InputError) as error:
             call()
         assert error.value.field == field
+
+
+def test_blade_bearing_study_reports_the_motion_in_per_cent():
+    """The command line shows "solving blade-carrier motion 35 %": the study turns the
+    motion's share done into whole per cents, each once, up to 100 %."""
+    from dataclasses import replace
+    from pathlib import Path
+
+    from shaftline.cases import load_case
+    from shaftline.cpp.study import ParameterStudy, solve_blade_bearing
+
+    example = Path(__file__).parents[1] / "examples" / "cpp_blade_bearing.toml"
+    study = load_case(example).studies["cpp"]
+    assert study.motion is not None
+    study = replace(
+        study, motion=replace(study.motion, revolutions=3), study=ParameterStudy("backlash", (0.0, 1e-4), 1)
+    )
+    told: list[str] = []
+    solve_blade_bearing(study, progress=told.append)
+    motion = [t for t in told if t.startswith("blade-carrier motion ")]
+    percents = [int(t.split()[-2]) for t in motion]
+    assert percents[-1] == 100 and percents == sorted(set(percents)) and len(percents) > 2
+    assert told[told.index("parameter study of backlash") + 1 :][-1] == "parameter study of backlash 100 %"

@@ -68,3 +68,28 @@ def test_jfo_equilibrium():
     eq = bearing.equilibrium(load_y=-5e3)
     assert eq.converged
     assert eq.state.force_y == pytest.approx(5e3, rel=1e-6)
+
+
+def test_newton_iterations_are_reported_without_changing_the_result(bearing):
+    """Issue 9: a fine grid takes minutes per equilibrium; ``progress`` hears each Newton
+    iteration (its number and the force residual as a share of the load) and the answer is
+    the same bits as without it."""
+    told: list[tuple[int, float]] = []
+    quiet = bearing.equilibrium(load_y=-2e4)
+    heard = bearing.equilibrium(load_y=-2e4, progress=lambda k, r: told.append((k, r)))
+    assert [k for k, _ in told] == list(range(1, heard.iterations + 1)) and heard.iterations > 1
+    assert told[-1][1] == pytest.approx(heard.residual / 2e4, rel=1e-12)
+    assert told[-1][1] < told[0][1]
+    assert heard.state.position == quiet.state.position
+
+
+def test_the_film_study_reports_iterations_and_coefficients():
+    from shaftline.film.study import BearingCase, BearingStudy, solve_study
+
+    b = make_bearing(1.0, axial_nodes=21, circumferential_nodes=60)
+    case = BearingCase("base", b.geometry, b.operating, b.options, load_y=-2e4)
+    told: list[str] = []
+    solve_study(BearingStudy((case,)), told.append)
+    assert told[0] == "base" and told[-1] == "base: stiffness and damping"
+    assert told[1].startswith("base: Newton iteration 1, force residual ")
+    assert all("Newton iteration" in t for t in told[1:-1])

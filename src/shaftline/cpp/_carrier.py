@@ -17,8 +17,11 @@ through the pin: yoke travel r_pin (sin(phi_0 + phi) - sin phi_0) less half the 
 either side (dead zone), force k_oil times that, moment force * r_pin cos(phi_0 + phi).
 
 :func:`rhs` and :func:`jacobian` (the analytic, exact Jacobian of the right-hand side) serve
-scipy's Radau through thin Python wrappers; :func:`backward_euler` calls the same
-:func:`rates` and :func:`rates_jacobian` inside its Newton loop. Backward Euler is L-stable:
+scipy's Radau through thin Python wrappers; :func:`advance` (backward Euler over a range of
+steps) calls the same :func:`rates` and :func:`rates_jacobian` inside its Newton loop.
+:mod:`shaftline.cpp.motion` calls :func:`advance` in chunks of about 0.1 s, carrying the
+state between them, because Python handles Ctrl-C only when compiled code returns to it;
+:func:`backward_euler` is the same integration in one call. Backward Euler is L-stable:
 steps far longer than the bristle period (2 pi / sqrt(sigma_0 / I), about 1 ms) stay stable,
 and the pre-sliding state relaxes without the ringing an explicit method shows. numba
 compiles all of it because the per-step work is a 3 x 3 Newton solve, which in Python costs
@@ -239,8 +242,9 @@ def _residual(y_new, y, spindle, coulomb, step, p, f, out):
 
 
 @njit(cache=True)
-def backward_euler(p, step, steps, every):
-    """Backward Euler from rest (y = 0 at t = 0) over ``steps`` steps of ``step`` s.
+def advance(p, step, y, first, last, every, phi_out, w_out, force_out):
+    """Backward Euler from step ``first`` to step ``last`` (times ``first * step`` to
+    ``last * step``, s), carrying the state ``y`` in place.
 
     Each step solves y_new - y - step * y'(t_new, y_new) = 0 by Newton's method with the exact
     Jacobian, until the corrections of w and z fall below 1e-9 relative (1e-12 rad/s absolute
@@ -248,28 +252,45 @@ def backward_euler(p, step, steps, every):
     the friction law (at |w| = v_th) and the dead zone have kinks across which plain Newton can
     cycle, and an accepted unconverged step is an error of the size of the correction.
 
+    The step number k is absolute (the time is ``k * step``) and a step depends only on ``y``
+    and k, so integrating 0 to N in one call or in any number of consecutive calls is the same
+    arithmetic, bit for bit: :mod:`shaftline.cpp.motion` calls it in chunks so that Python can
+    handle Ctrl-C and report progress between them.
+
+    Parameters
+    ----------
+    p : CarrierParameters
+    step : float
+        Time step, s.
+    y : ndarray
+        State (phi rad, w rad/s[, z rad]) at step ``first``; overwritten with that at ``last``.
+    first, last : int
+        Step numbers at the start and end of the chunk, ``0 <= first <= last``.
+    every : int
+        Steps between output samples: sample ``k // every`` is written after each step k that
+        is a multiple of ``every``.
+    phi_out, w_out, force_out : ndarray
+        Rotation (rad), rotation rate (rad/s) and oil-spring force (N) per sample, filled in.
+
     Returns
     -------
-    phi, w, force : ndarray
-        Rotation (rad), rotation rate (rad/s) and oil-spring force (N) every ``every`` steps,
-        from t = 0.
-    unconverged : int
-        Number of steps accepted unconverged after :data:`NEWTON_ITERATIONS` iterations.
+    int
+        Number of steps of the chunk accepted unconverged after :data:`NEWTON_ITERATIONS`
+        iterations.
     """
     n = states(p)
-    y = np.zeros(n)
+    # Work on a local copy of the state, written back at the end: LLVM may then assume that no
+    # output array aliases it, which the caller's array does not allow (5-10 % of the time).
+    y_start = y
+    y = y_start.copy()
     y_new = np.empty(n)
     trial = np.empty(n)
     f = np.empty(n)
     jac = np.empty((n, n))
     residual = np.empty(n)
     delta = np.empty(n)
-    samples = steps // every + 1
-    phi_out = np.zeros(samples)
-    w_out = np.zeros(samples)
-    force_out = np.zeros(samples)
     unconverged = 0
-    for k in range(1, steps + 1):
+    for k in range(first + 1, last + 1):
         spindle, coulomb = forcing(k * step, p)
         y_new[:] = y
         size = _residual(y_new, y, spindle, coulomb, step, p, f, residual)
@@ -307,4 +328,26 @@ def backward_euler(p, step, steps, every):
             phi_out[sample] = y[0]
             w_out[sample] = y[1]
             force_out[sample] = spring(y[0], p)[0]
+    y_start[:] = y
+    return unconverged
+
+
+@njit(cache=True)
+def backward_euler(p, step, steps, every):
+    """Backward Euler from rest (y = 0 at t = 0) over ``steps`` steps of ``step`` s, in one
+    compiled call (:func:`advance` from 0 to ``steps``; it cannot be interrupted).
+
+    Returns
+    -------
+    phi, w, force : ndarray
+        Rotation (rad), rotation rate (rad/s) and oil-spring force (N) every ``every`` steps,
+        from t = 0.
+    unconverged : int
+        Number of steps accepted unconverged after :data:`NEWTON_ITERATIONS` iterations.
+    """
+    samples = steps // every + 1
+    phi_out = np.zeros(samples)
+    w_out = np.zeros(samples)
+    force_out = np.zeros(samples)
+    unconverged = advance(p, step, np.zeros(states(p)), 0, steps, every, phi_out, w_out, force_out)
     return phi_out, w_out, force_out, unconverged

@@ -20,7 +20,9 @@ only when integrating, so that reading a case (which takes defaults from
 from __future__ import annotations
 
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass, replace
+from time import perf_counter
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -29,6 +31,15 @@ from shaftline.errors import InputError, require_positive
 
 if TYPE_CHECKING:
     from shaftline.cpp._carrier import CarrierParameters
+
+#: Wall time, s, that one compiled chunk of the backward-Euler integration aims at. Python
+#: handles Ctrl-C (and reports progress) only between chunks, so this is how long an interrupt
+#: waits; 0.1 s leaves room for steps ten times slower than those the chunk size was measured
+#: on before Ctrl-C takes more than a second.
+CHUNK_SECONDS = 0.1
+
+#: Steps of the first chunk, before a chunk's duration is known (about 2 ms at ~1 us a step).
+FIRST_CHUNK_STEPS = 2048
 
 
 @dataclass(frozen=True, eq=False)
@@ -172,8 +183,14 @@ def simulate_carrier(
     samples_per_revolution: int = 720,
     steps_per_revolution: int = 7200,
     method: str = "compiled",
+    progress: Callable[[float], None] | None = None,
 ) -> CarrierMotion:
     """Integrate the carrier motion from rest over ``revolutions`` shaft turns.
+
+    The compiled integration runs in chunks of about :data:`CHUNK_SECONDS` (0.1 s), carrying
+    the state from one to the next, so that Ctrl-C (``KeyboardInterrupt``) stops a long run
+    within a fraction of a second and ``progress`` hears how far it is; the chunks do not
+    change the result, which is that of one uninterrupted integration bit for bit.
 
     Parameters
     ----------
@@ -190,6 +207,9 @@ def simulate_carrier(
         ``"compiled"`` (default): backward Euler with a Newton solve per step, compiled;
         ``"radau"``: scipy's adaptive Radau IIA at rtol 1e-6 (reference, slower). Both integrate
         the same compiled equations of motion.
+    progress : callable, optional
+        Called with the share of the simulated time done, in (0, 1], after each chunk (compiled)
+        or every 1 % of the time (Radau), and with 1.0 at the end.
     """
     if method not in ("compiled", "radau"):
         raise InputError("method", method, "", "compiled or radau")
@@ -202,11 +222,11 @@ def simulate_carrier(
             raise InputError(name, value, "", "a positive integer")
     revolutions, samples = int(revolutions), int(samples_per_revolution)
     if method == "radau":
-        return _simulate_radau(model, revolutions, samples)
+        return _simulate_radau(model, revolutions, samples, progress)
     steps = int(steps_per_revolution)
     if steps % samples:
         raise InputError("steps_per_revolution", steps, "", f"a multiple of {samples} samples")
-    return _simulate_compiled(model, revolutions, samples, steps)
+    return _simulate_compiled(model, revolutions, samples, steps, progress)
 
 
 def _parameters(model: CarrierModel) -> CarrierParameters:
@@ -233,13 +253,13 @@ def _parameters(model: CarrierModel) -> CarrierParameters:
     )
 
 
-def _simulate_compiled(model: CarrierModel, revolutions: int, samples: int, steps: int) -> CarrierMotion:
-    from shaftline.cpp._carrier import backward_euler
-
+def _simulate_compiled(
+    model: CarrierModel, revolutions: int, samples: int, steps: int, progress: Callable[[float], None] | None
+) -> CarrierMotion:
     period = 2 * np.pi / model.speed
     step = period / steps
     every = steps // samples
-    phi, w, force, unconverged = backward_euler(_parameters(model), step, revolutions * steps, every)
+    phi, w, force, unconverged = _integrate_in_chunks(_parameters(model), step, revolutions * steps, every, progress)
     if unconverged:
         # none in the tested cases; say so rather than return a silently degraded motion
         warnings.warn(
@@ -252,7 +272,46 @@ def _simulate_compiled(model: CarrierModel, revolutions: int, samples: int, step
     return _motion(model, time, phi, w, force, revolutions, samples)
 
 
-def _simulate_radau(model: CarrierModel, revolutions: int, samples: int) -> CarrierMotion:
+def _integrate_in_chunks(
+    params: CarrierParameters,
+    step: float,
+    steps: int,
+    every: int,
+    progress: Callable[[float], None] | None,
+    chunk_steps: int | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+    """Backward Euler from rest over ``steps`` steps of ``step`` s, in compiled chunks.
+
+    Returns what :func:`shaftline.cpp._carrier.backward_euler` returns (samples every
+    ``every`` steps, and the count of unconverged steps), with the same bits. A chunk holds
+    ``chunk_steps`` steps when given (tests), else as many as take about :data:`CHUNK_SECONDS`,
+    judged from the last chunk; the size may at most quadruple from one chunk to the next, so
+    that cheap steps at the start (the carrier at rest) do not size a chunk for harder ones.
+    """
+    from shaftline.cpp._carrier import advance, states
+
+    samples = steps // every + 1
+    phi, w, force = np.zeros(samples), np.zeros(samples), np.zeros(samples)
+    y = np.zeros(states(params))
+    unconverged = 0
+    done = 0
+    chunk = chunk_steps or FIRST_CHUNK_STEPS
+    while done < steps:
+        end = min(steps, done + chunk)
+        started = perf_counter()
+        unconverged += advance(params, step, y, done, end, every, phi, w, force)
+        elapsed = perf_counter() - started
+        done = end
+        if progress is not None:
+            progress(done / steps)
+        if chunk_steps is None:
+            chunk = max(1, min(4 * chunk, int(chunk * CHUNK_SECONDS / max(elapsed, 1e-6))))
+    return phi, w, force, unconverged
+
+
+def _simulate_radau(
+    model: CarrierModel, revolutions: int, samples: int, progress: Callable[[float], None] | None
+) -> CarrierMotion:
     from scipy.integrate import solve_ivp
 
     from shaftline.cpp._carrier import jacobian, rhs, spring_force
@@ -261,8 +320,20 @@ def _simulate_radau(model: CarrierModel, revolutions: int, samples: int) -> Carr
     lugre = model.friction == "lugre"
     period = 2 * np.pi / model.speed
     t_eval = np.linspace(0.0, revolutions * period, revolutions * samples + 1)
+    end = float(t_eval[-1])
+    next_report = 0.01 * end
+
+    def right_hand_side(t: float, y: np.ndarray) -> np.ndarray:
+        # solve_ivp has no progress hook; its right-hand side sees the time. Radau's loop is
+        # Python, so Ctrl-C needs nothing here.
+        nonlocal next_report
+        if progress is not None and t >= next_report:
+            progress(min(t / end, 1.0))
+            next_report = t + 0.01 * end
+        return rhs(t, y, params)
+
     solution = solve_ivp(
-        lambda t, y: rhs(t, y, params),
+        right_hand_side,
         (0.0, t_eval[-1]),
         np.zeros(3 if lugre else 2),
         method="Radau",
@@ -276,6 +347,8 @@ def _simulate_radau(model: CarrierModel, revolutions: int, samples: int) -> Carr
         raise RuntimeError(f"carrier motion integration failed: {solution.message}")
     phi = np.ascontiguousarray(solution.y[0])
     force = spring_force(phi, params)
+    if progress is not None:
+        progress(1.0)
     return _motion(model, solution.t, phi, solution.y[1], force, revolutions, samples)
 
 
@@ -313,7 +386,11 @@ STUDY_PARAMETERS = ("holding_moment", "spindle_scale", "backlash", "friction", "
 
 
 def parameter_study(
-    model: CarrierModel, parameter: str, values: list[Any], revolutions: int = 10
+    model: CarrierModel,
+    parameter: str,
+    values: list[Any],
+    revolutions: int = 10,
+    progress: Callable[[float], None] | None = None,
 ) -> list[CarrierMotion]:
     """Fretting motion for each value of one parameter (seed Sect. 4.7).
 
@@ -328,16 +405,27 @@ def parameter_study(
         ``"spindle_scale"``, ``"lugre"``/``"static"`` for ``"friction"``).
     revolutions : int
         Revolutions simulated for each value.
+    progress : callable, optional
+        Called with the share of the whole study done, in (0, 1], as each motion advances
+        (see :func:`simulate_carrier`).
     """
     if parameter not in STUDY_PARAMETERS:
         raise InputError("parameter", parameter, "", "one of " + ", ".join(STUDY_PARAMETERS))
     if not values:
         raise InputError("values", "[]", "", "at least one value")
     results = []
-    for value in values:
+    for index, value in enumerate(values):
         if parameter == "spindle_scale":
             changed = replace(model, spindle_torque=float(value) * model.spindle_torque)
         else:
             changed = replace(model, **{parameter: value})
-        results.append(simulate_carrier(changed, revolutions))
+        results.append(simulate_carrier(changed, revolutions, progress=_share(progress, index, len(values))))
     return results
+
+
+def _share(progress: Callable[[float], None] | None, index: int, count: int) -> Callable[[float], None] | None:
+    """The progress of run ``index`` of ``count`` equal runs as a share of all of them."""
+    if progress is None:
+        return None
+    report = progress
+    return lambda fraction: report((index + fraction) / count)

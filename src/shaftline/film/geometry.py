@@ -323,6 +323,19 @@ class Grid:
         return (self.axial_nodes, self.circumferential_nodes)
 
 
+def coarse_shape(shape: tuple[int, int]) -> tuple[int, int] | None:
+    """Shape of the grid halved in both directions below a grid of ``shape`` (nz, nt), or None.
+
+    The Reynolds solver predicts the cavitated set on this coarser grid (and that one on a
+    coarser one, down to about 9 x 16 nodes); the memory estimate of a problem counts the same
+    grids. Halving needs at least 9 axial nodes and an even number, >= 16, round the bore.
+    """
+    nz, nt = shape
+    if nz < 9 or nt < 16 or nt % 2:
+        return None
+    return (nz + 1) // 2, nt // 2
+
+
 @dataclass(frozen=True)
 class JournalPosition:
     """Journal centre and tilt relative to the bore.

@@ -12,7 +12,10 @@ Errors name the field relative to the object that checks it (``"speed"``,
 
 from __future__ import annotations
 
+import math
+import os
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Literal, get_args
 
 from shaftline.errors import InputError, require_finite, require_positive
@@ -28,6 +31,7 @@ from shaftline.film.geometry import (
     FilmProfile,
     JournalPosition,
     Rotation,
+    coarse_shape,
     require_nodes,
 )
 
@@ -62,11 +66,124 @@ __all__ = [
     "Rotation",
     "SolverOptions",
     "SupplyGroove",
+    "default_memory_limit",
+    "estimated_memory",
 ]
 
 
 def _one_of(choices: tuple[str, ...]) -> str:
     return "one of " + ", ".join(choices)
+
+
+# -- memory of a film solution --------------------------------------------------------------
+# Calibrated in docs/validation.md ("Memory of a film solution"): peak resident memory of an
+# equilibrium with its stiffness and damping, grids 21 x 60 to 2561 x 120 and 641 x 480.
+
+#: Bytes per node of a grid level for the dense arrays (film, stencil, pressures, masks, the
+#: slot maps of the sparsity pattern, right-hand sides of the Jacobian, the result's fields).
+_DENSE_BYTES = 500.0
+#: Bytes per nonzero of the qdldl LDL^T factor (int64 row index, float64 value, workspace):
+#: measured 20.4-22.2.
+_FACTOR_BYTES = 22.0
+#: Further bytes per fine-grid node of the mass-conserving ("jfo") model: the unsymmetric
+#: system assembled with scipy.sparse each active-set iteration ...
+_JFO_DENSE_BYTES = 400.0
+#: ... and its SuperLU factors (about 1.75 times the nonzeros of the LDL^T factor), per
+#: nonzero of the LDL^T factor of the fine grid.
+_JFO_FACTOR_BYTES = 28.0
+#: Default grid of SolverOptions (the refusal names the node count furthest above it).
+_DEFAULT_AXIAL_NODES = 41
+_DEFAULT_CIRCUMFERENTIAL_NODES = 120
+#: The limit when the machine's memory cannot be read, bytes.
+_FALLBACK_MEMORY_LIMIT = 4 * 1024**3
+#: Share of the machine's memory a film solution may take by default.
+_MEMORY_SHARE = 0.5
+
+
+def _factor_fill(axial_nodes: int, circumferential_nodes: int) -> float:
+    """Nonzeros of the LDL^T factor of the Reynolds operator on one grid, estimated.
+
+    The factor of a 2-D five-point operator under a fill-reducing ordering (qdldl orders with
+    AMD) holds about ``n (a log2 w - b)`` nonzeros, ``w`` the width of the grid across its
+    longer direction (nested-dissection growth, ``n log n`` for a square grid, ``n log w`` for
+    a long strip). Fitted to qdldl's factors on 72 grids from 5 x 16 to 1281 x 960 (the
+    circumference counts half, as it is periodic): within -2 % / +25 % of the measured count
+    above 2000 nodes, -2 % / +19 % above 100 000 (docs/validation.md).
+    """
+    width = min(0.68 * axial_nodes, 0.5 * circumferential_nodes)
+    return axial_nodes * circumferential_nodes * max(8.5 * math.log2(width + 8.0) - 22.0, 1.0)
+
+
+def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: Cavitation = "reynolds") -> int:
+    """Peak memory of one film solution on a grid, bytes, estimated before anything is allocated.
+
+    Counts what :class:`shaftline.film.bearing.JournalBearing` holds while it finds an
+    equilibrium and its stiffness and damping: the dense arrays of every node and the sparse
+    LDL^T factor, on the grid and on the coarser grids that predict the cavitated set, and for
+    the mass-conserving model its sparse LU. The factor grows faster than the node count
+    (about ``n log n``), so a grid twice as fine each way takes more than four times the memory.
+    Calibrated against the measured peak (docs/validation.md): from 5 000 to 300 000 nodes the
+    estimate is 3 % below to 27 % above it, on the high side by design.
+
+    Parameters
+    ----------
+    axial_nodes, circumferential_nodes : int
+        The grid (:class:`SolverOptions`).
+    cavitation : Cavitation
+        The cavitation model; ``"jfo"`` needs about twice the memory of the others.
+
+    Returns
+    -------
+    int
+        Bytes.
+
+    Examples
+    --------
+    >>> round(estimated_memory(41, 120) / 2**20, 1)  # the default grid, MiB
+    5.9
+    >>> round(estimated_memory(2561, 120) / 2**20)  # measured peak 392 MiB
+    431
+    """
+    total = 0.0
+    shape: tuple[int, int] | None = (int(axial_nodes), int(circumferential_nodes))
+    while shape is not None:
+        total += _DENSE_BYTES * shape[0] * shape[1] + _FACTOR_BYTES * _factor_fill(*shape)
+        shape = coarse_shape(shape)
+    if cavitation == "jfo":
+        nodes = int(axial_nodes) * int(circumferential_nodes)
+        total += _JFO_DENSE_BYTES * nodes + _JFO_FACTOR_BYTES * _factor_fill(axial_nodes, circumferential_nodes)
+    return int(total)
+
+
+@lru_cache(maxsize=1)
+def default_memory_limit() -> int:
+    """The memory a film solution may take unless ``SolverOptions.memory_limit`` says, bytes.
+
+    Half the machine's physical memory (``os.sysconf``), or half the container's limit where a
+    Linux control group sets a smaller one (``/sys/fs/cgroup/memory.max``), so that the rest of
+    the run, the operating system and other programs keep room; 4 GiB where neither can be
+    read (Windows). Read once per process.
+    """
+    total: float | None = None
+    try:
+        total = float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+    except (AttributeError, ValueError, OSError):
+        pass
+    try:
+        with open("/sys/fs/cgroup/memory.max") as file:
+            text = file.read().strip()
+        if text.isdigit():
+            total = min(total or math.inf, float(text))
+    except OSError:
+        pass
+    if not total or total <= 0:
+        return _FALLBACK_MEMORY_LIMIT
+    return int(_MEMORY_SHARE * total)
+
+
+def _bytes(value: float) -> str:
+    """``value`` bytes in GiB or MiB, for a message."""
+    return f"{value / 2**30:.1f} GiB" if value >= 2**30 else f"{value / 2**20:.0f} MiB"
 
 
 @dataclass(frozen=True)
@@ -175,21 +292,35 @@ class SolverOptions:
         Relative force residual at which the equilibrium is accepted.
     max_iterations : int
         Newton iterations allowed for the equilibrium (>= 1).
+    memory_limit : float or None
+        Largest estimated memory of a film solution on this grid, bytes
+        (:func:`estimated_memory`); a finer grid is refused when the options are made, before
+        anything is allocated. ``None`` (default): :func:`default_memory_limit`, half the
+        machine's memory.
+
+    The time of a solution grows faster than the node count, as the memory does: on a 2-core
+    machine an equilibrium with stiffness and damping took 0.07 s on the default 41 x 120
+    grid, 8 s on 321 x 240, 33 s on 1281 x 120 and 2 min on 2561 x 120 (6 to 13 times as long
+    with ``cavitation = "jfo"``).
 
     Raises
     ------
     InputError
-        Naming the attribute, e.g. ``"cavitation"`` or ``"axial_nodes"``.
+        Naming the attribute, e.g. ``"cavitation"`` or ``"axial_nodes"``; a grid whose
+        estimated memory exceeds the limit names the node count to reduce (the axial or the
+        circumferential one, whichever is further above its default) and gives the estimate
+        and the limit.
     """
 
-    axial_nodes: int = 41
-    circumferential_nodes: int = 120
+    axial_nodes: int = _DEFAULT_AXIAL_NODES
+    circumferential_nodes: int = _DEFAULT_CIRCUMFERENTIAL_NODES
     cavitation: Cavitation = "reynolds"
     film_start: FilmStart = "periodic"
     cavitated_shear: CavitatedShear = "film_fraction"
     min_film_floor: float = 1e-3
     tolerance: float = 1e-8
     max_iterations: int = 60
+    memory_limit: float | None = None
 
     def __post_init__(self) -> None:
         require_nodes("axial_nodes", self.axial_nodes, MIN_AXIAL_NODES)
@@ -207,6 +338,37 @@ class SolverOptions:
         if not 0.0 < tolerance < 1e-2:
             raise InputError("tolerance", tolerance, "", "in (0, 0.01)")
         require_nodes("max_iterations", self.max_iterations, 1, "an integer >= 1")
+        if self.memory_limit is not None:
+            require_positive("memory_limit", self.memory_limit, "B")
+        self._check_memory()
+
+    @property
+    def estimated_memory(self) -> int:
+        """Estimated peak memory of a film solution with these options, bytes
+        (:func:`estimated_memory` of the grid and the cavitation model)."""
+        return estimated_memory(self.axial_nodes, self.circumferential_nodes, self.cavitation)
+
+    def _check_memory(self) -> None:
+        """Refuse a grid whose film solution would not fit in the memory limit."""
+        needed = self.estimated_memory
+        if self.memory_limit is None:
+            limit, source = default_memory_limit(), "half the machine's memory; memory_limit sets another"
+        else:
+            limit, source = int(self.memory_limit), "memory_limit"
+        if needed <= limit:
+            return
+        # Name the count that is further above its default: the one to reduce first.
+        axial_share = self.axial_nodes / _DEFAULT_AXIAL_NODES
+        round_share = self.circumferential_nodes / _DEFAULT_CIRCUMFERENTIAL_NODES
+        name = "axial_nodes" if axial_share >= round_share else "circumferential_nodes"
+        raise InputError(
+            name,
+            getattr(self, name),
+            "",
+            f"a grid that fits in memory: {self.axial_nodes} x {self.circumferential_nodes} nodes "
+            f"({self.cavitation}) need about {_bytes(needed)} for a film solution, above the limit of "
+            f"{_bytes(limit)} ({source})",
+        )
 
 
 @dataclass(frozen=True)

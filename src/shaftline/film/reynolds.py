@@ -43,6 +43,7 @@ import qdldl
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from shaftline.film.geometry import coarse_shape
 from shaftline.film.problem import CAVITATION_MODELS, Cavitation
 
 __all__ = [
@@ -305,10 +306,11 @@ class ReynoldsSolver:
         nodes around it.
         """
         nz, nt = self.shape
-        if nz < 9 or nt < 16 or nt % 2:
+        halved = coarse_shape(self.shape)
+        if halved is None:
             return None
         if self._coarse_cache is None:
-            nz_c, nt_c = (nz + 1) // 2, nt // 2
+            nz_c, nt_c = halved
             z_coarse = np.linspace(0.0, 1.0, nz_c)
             position = z_coarse * (nz - 1)
             z_index = np.minimum(np.floor(position).astype(int), nz - 2)

@@ -82,27 +82,41 @@ class BearingStudyResult:
     cases: tuple[BearingResult, ...]
 
 
-def solve_case(case: BearingCase) -> BearingResult:
-    """Equilibrium under the case load, then stiffness and damping there (not at contact)."""
+def solve_case(case: BearingCase, progress: Callable[[str], None] | None = None) -> BearingResult:
+    """Equilibrium under the case load, then stiffness and damping there (not at contact).
+
+    ``progress``, when given, is told each Newton iteration of the equilibrium
+    (``"base: Newton iteration 3, force residual 2.1e-04 of the load"``) and the start of the
+    stiffness and damping: on a fine grid each takes seconds to minutes.
+    """
     from shaftline.errors import located
     from shaftline.film.bearing import JournalBearing
     from shaftline.film.dynamics import dynamic_coefficients
 
+    def newton(iteration: int, residual: float) -> None:
+        if progress is not None:
+            progress(f"{case.name}: Newton iteration {iteration}, force residual {residual:.1e} of the load")
+
     bearing = JournalBearing(case.geometry, case.operating, case.options)
     # A tilt that does not fit in the clearance is found only here; name it as the case file does.
     with located("", case.error_fields):
-        equilibrium = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
+        equilibrium = bearing.equilibrium(
+            case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z, progress=newton
+        )
     coefficients = None
     if equilibrium.converged and not equilibrium.contact:
+        if progress is not None:
+            progress(f"{case.name}: stiffness and damping")
         coefficients = dynamic_coefficients(bearing, equilibrium.state)
     return BearingResult(case, equilibrium, coefficients)
 
 
 def solve_study(study: BearingStudy, progress: Callable[[str], None] | None = None) -> BearingStudyResult:
-    """Solve the base case and every variant."""
+    """Solve the base case and every variant; ``progress`` is told each case's name, then its
+    Newton iterations (:func:`solve_case`)."""
     results = []
     for case in study.cases:
         if progress is not None:
             progress(case.name)
-        results.append(solve_case(case))
+        results.append(solve_case(case, progress))
     return BearingStudyResult(tuple(results))
