@@ -59,3 +59,20 @@ def test_an_optimiser_on_its_bound_says_so(tmp_path):
     result = invoke("align", str(case), "--json", "-")
     texts = [f["text"] for f in json.loads(result.stdout)["findings"]]
     assert any("sits on its bound of ±1 mm" in t for t in texts), texts
+
+
+def test_a_solver_failure_is_one_line_and_exit_3(tmp_path, monkeypatch):
+    """A numerical method that does not settle on accepted inputs: one line, exit 3, no output."""
+    import shaftline.film.study as study
+    from shaftline.film.reynolds import ReynoldsConvergenceError
+
+    def fails(*args, **kwargs):
+        raise ReynoldsConvergenceError("Reynolds-condition active set did not settle")
+
+    monkeypatch.setattr(study, "solve_case", fails)
+    case = tmp_path / "case.toml"
+    case.write_text(MINIMAL_CASE)
+    result = invoke("run", str(case), "--out", str(tmp_path / "out"))
+    assert result.exit_code == 3
+    assert result.stderr.strip() == "not solved: Reynolds-condition active set did not settle; nothing was written"
+    assert not (tmp_path / "out").exists()

@@ -54,13 +54,19 @@ def input_errors() -> Iterator[None]:
 
 @contextmanager
 def interruptible() -> Iterator[None]:
-    """Ctrl-C ends the command with exit status 130 and one line; outputs are written all at
-    once at the end (:mod:`shaftline.outputs`), so nothing half-written is left."""
+    """Ctrl-C ends the command with exit status 130 and one line, a solver that fails on
+    accepted inputs with 3 and one line; outputs are written all at once at the end
+    (:mod:`shaftline.outputs`), so nothing half-written is left."""
+    from shaftline.errors import SolverFailure
+
     try:
         yield
     except KeyboardInterrupt:
         error_console.print("interrupted: nothing was written", markup=False, highlight=False)
         raise typer.Exit(code=130) from None
+    except SolverFailure as failure:
+        error_console.print(f"not solved: {failure}; nothing was written", markup=False, highlight=False)
+        raise typer.Exit(code=NOT_ACCEPTABLE) from None
 
 
 def check_outputs(out: Path | None, json_path: str | None, inputs: Sequence[Path]) -> None:

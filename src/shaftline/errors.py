@@ -88,6 +88,11 @@ def located(prefix: str, renames: Mapping[str, str] | None = None) -> Iterator[N
         raise error.within(prefix, renames) from None
 
 
+class SolverFailure(RuntimeError):
+    """A numerical method did not reach a solution for inputs it accepted (the command line
+    reports it in one line with exit status 3: nothing to show, nothing written)."""
+
+
 def require_finite(field: str, value: float, unit: str = "") -> float:
     """Return ``value`` as float, or raise :class:`InputError` if NaN or infinite."""
     try:

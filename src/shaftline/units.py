@@ -55,11 +55,13 @@ SI_UNITS: dict[str, str] = {
     "inertia": "kg*m**2",
     "rotational_stiffness": "N*m",
     "rotational_damping": "N*m*s",
+    "memory": "byte",
 }
 
 #: How an SI unit is written in messages and tables.
 UNIT_TEXT: dict[str, str] = {
     "percent": "%",
+    "byte": "B",
     "m**2/s": "m^2/s",
     "kg/m**3": "kg/m^3",
     "m**3/s": "m^3/s",

@@ -345,6 +345,9 @@ class SolverSection(Section):
     """Relative force residual at which the equilibrium is accepted."""
     max_iterations: Annotated[int, Field(ge=1, le=1000)] = default_of(SolverOptions, "max_iterations")
     """Newton iterations allowed for the equilibrium."""
+    memory_limit: Annotated[float, Quantity("memory", gt=0)] | None = None
+    """Largest memory a film solution may take (e.g. "8 GiB"); a finer grid is refused before
+    anything is allocated. Default: half the machine's memory."""
 
 
 class VariantSection(Section):
@@ -615,6 +618,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             min_film_floor=s.min_film_floor,
             tolerance=s.tolerance,
             max_iterations=s.max_iterations,
+            memory_limit=s.memory_limit,
         )
     with located("", {"operating": "operation", "options": "solver"}):
         BearingProblem(base_geometry, operating, options)

@@ -43,6 +43,7 @@ import qdldl
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from shaftline.errors import SolverFailure
 from shaftline.film.geometry import coarse_shape
 from shaftline.film.problem import CAVITATION_MODELS, Cavitation
 
@@ -63,7 +64,7 @@ __all__ = [
 MAX_ACTIVE_SET_ITERATIONS = 200
 
 
-class ReynoldsConvergenceError(RuntimeError):
+class ReynoldsConvergenceError(SolverFailure):
     """The active-set iteration did not settle (never seen on M-matrices; kept as a guard)."""
 
 
