@@ -94,7 +94,8 @@ def deliver(
     source: str = "",
     source_label: str = "case file",
 ) -> None:
-    """Write the report folder, then the JSON file, then the JSON to standard output if asked.
+    """Write the report folder (showing which figure is being drawn), then the JSON file,
+    then the JSON to standard output if asked.
 
     Both places were checked before solving (:func:`check_outputs`); the folder is written
     all at once and only then the JSON file, so a failure in the report leaves neither.
@@ -104,7 +105,8 @@ def deliver(
 
     text = dumps(document) + "\n"
     if out is not None:
-        write_folder(out, document, list(sections), title, description, source, source_label)
+        with error_console.status("writing the report") as status:
+            write_folder(out, document, list(sections), title, description, source, source_label, status.update)
     if json_path not in (None, "-"):
         write_text(Path(str(json_path)), text)
     if json_path == "-":
@@ -142,9 +144,8 @@ def run_cases(
         if not quiet:
             for capability, value in result.capabilities():
                 print_blocks(console, capability.summary(value))
-        with error_console.status("writing the report"):
-            sections = report_sections(result) if out is not None else []
-            deliver(results_document(result), json_path, out, sections, case.name, case.description, str(case_file))
+        sections = report_sections(result) if out is not None else []
+        deliver(results_document(result), json_path, out, sections, case.name, case.description, str(case_file))
     if out is not None and not quiet:
         console.print(f"report: {out / 'report.html'}", markup=False, highlight=False)
     if not acceptable(result, strict):

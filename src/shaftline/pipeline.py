@@ -221,6 +221,7 @@ def write_folder(
     description: str = "",
     source: str = "",
     source_label: str = "case file",
+    progress: Progress = no_progress,
 ) -> Path:
     """Write ``results.json`` (``document``), the figures of ``sections`` and ``report.html``
     into the result folder ``out`` (:mod:`shaftline.outputs`): all files or none, files of
@@ -233,7 +234,7 @@ def write_folder(
     check_folder(out, field="out")
     with result_folder(out) as folder:
         (folder / "results.json").write_text(dumps(document) + "\n", encoding="utf-8")
-        write_report(folder, title, description, source, sections, shaftline.__version__, source_label)
+        write_report(folder, title, description, source, sections, shaftline.__version__, source_label, progress)
     return out
 
 

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from shaftline.registry import BuildContext, Capability, Comparison, Finding, Progress, Verb, no_progress
-from shaftline.report.blocks import Block, Figure, Heading, Table
+from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table
 
 if TYPE_CHECKING:
     from shaftline.cpp.case import CppSection
@@ -60,6 +60,8 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
         return solve_blade_bearing(study, motion, lambda step: progress(f"solving {step}"))
 
     def to_json(self, result: BladeBearingResult) -> dict[str, Any]:
+        from shaftline.cpp.study import settled_amplitude
+
         c = result.coefficient
         out: dict[str, Any] = {
             "units": {"torque": "N m", "angle": "deg", "pressure": "Pa", "amplitude": "m", "sliding": "m"},
@@ -80,6 +82,7 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
             out["motion"] = {
                 "revolutions": m.revolutions,
                 "fretting_amplitude": float(m.amplitude[-1]),
+                "fretting_amplitude_settled": dict(zip(("max", "mean", "min"), settled_amplitude(m), strict=True)),
                 "sliding_per_revolution": float(m.sliding_per_revolution[-1]),
                 "pressure_fluctuation": float(m.force_fluctuation[-1] / result.study.yoke_area),
             }
@@ -87,7 +90,9 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
             out["study"] = {
                 "parameter": result.study.study.parameter,
                 "values": [v for v, _ in result.parameter_study],
-                "fretting_amplitude": [a for _, a in result.parameter_study],
+                "fretting_amplitude": [float(m.amplitude[-1]) for _, m in result.parameter_study],
+                "fretting_amplitude_settled_max": [settled_amplitude(m)[0] for _, m in result.parameter_study],
+                "revolutions": result.study.study.revolutions,
             }
         return out
 
@@ -119,7 +124,11 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
         if "motion" in s:
             m = s["motion"]
             rows += [
-                ["fretting amplitude at bearing radius [µm]", f"{m['fretting_amplitude'] * 1e6:.1f}"],
+                [
+                    "fretting amplitude at bearing radius, settled max / min [µm]",
+                    f"{m['fretting_amplitude_settled']['max'] * 1e6:.1f} / "
+                    f"{m['fretting_amplitude_settled']['min'] * 1e6:.1f}",
+                ],
                 ["sliding per revolution [mm]", f"{m['sliding_per_revolution'] * 1e3:.3f}"],
                 ["oil pressure fluctuation [bar]", f"{m['pressure_fluctuation'] / 1e5:.3f}"],
             ]
@@ -142,6 +151,7 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
 
     def report(self, result: BladeBearingResult) -> list[Block]:
         from shaftline.cpp import figures
+        from shaftline.cpp.study import settled_amplitude
 
         blocks: list[Block] = [
             self._table(result),
@@ -150,15 +160,31 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
         if result.motion is not None:
             blocks.append(Figure("cpp_motion.png", figures.motion, (result,), caption="fretting motion"))
         if result.parameter_study is not None and result.study.study is not None:
-            parameter = result.study.study.parameter
+            st = result.study.study
+            parameter = st.parameter
             unit, scale = STUDY_DISPLAY.get(parameter, ("", 1.0))
             blocks.append(Heading(f"Parameter study: {parameter.replace('_', ' ')}"))
             blocks.append(
+                Paragraph(
+                    f"{st.revolutions} revolutions per value. The amplitude is the largest of the settled revolutions "
+                    "(the second half): with backlash the motion need not repeat every revolution, so the last "
+                    "revolution alone depends on how many were simulated."
+                )
+            )
+            blocks.append(
                 Table(
-                    [f"{parameter.replace('_', ' ')}{f' [{unit}]' if unit else ''}", "fretting amplitude [µm]"],
                     [
-                        [v if isinstance(v, str) else f"{v * scale:.4g}", f"{a * 1e6:.1f}"]
-                        for v, a in result.parameter_study
+                        f"{parameter.replace('_', ' ')}{f' [{unit}]' if unit else ''}",
+                        "fretting amplitude, settled max [µm]",
+                        "settled min [µm]",
+                    ],
+                    [
+                        [
+                            v if isinstance(v, str) else f"{v * scale:.4g}",
+                            f"{settled_amplitude(m)[0] * 1e6:.1f}",
+                            f"{settled_amplitude(m)[2] * 1e6:.1f}",
+                        ]
+                        for v, m in result.parameter_study
                     ],
                 )
             )

@@ -8,7 +8,7 @@ the backend of the session it runs in.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from shaftline.report.blocks import Details, Figure, Heading, Paragraph, Preformatted, Section, Table
@@ -109,6 +109,7 @@ def write_report(
     sections: Sequence[Section],
     version: str,
     source_label: str = "case file",
+    progress: Callable[[str], None] | None = None,
 ) -> Path:
     """Draw every figure of ``sections`` into ``folder/figures`` (PNG and SVG) and write
     ``folder/report.html``, dated now."""
@@ -117,9 +118,11 @@ def write_report(
     created = datetime.now().astimezone().isoformat(timespec="seconds")
     figures = folder / "figures"
     figures.mkdir(parents=True, exist_ok=True)
-    for section in sections:
-        for block in _figures(section.blocks):
-            draw_figure(block, figures / block.file)
+    blocks = [block for section in sections for block in _figures(section.blocks)]
+    for k, block in enumerate(blocks):
+        if progress is not None:
+            progress(f"drawing figure {k + 1} of {len(blocks)}")
+        draw_figure(block, figures / block.file)
     path = folder / "report.html"
     page = render(title, description, source, sections, version, source_label, created)
     path.write_text(page, encoding="utf-8")
