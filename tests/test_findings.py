@@ -76,3 +76,18 @@ def test_a_solver_failure_is_one_line_and_exit_3(tmp_path, monkeypatch):
     assert result.exit_code == 3
     assert result.stderr.strip() == "not solved: Reynolds-condition active set did not settle; nothing was written"
     assert not (tmp_path / "out").exists()
+
+
+def test_a_film_within_three_roughnesses_is_mixed_lubrication(tmp_path):
+    """The small bearing runs at h_min of a few tens of µm; with a composite roughness of 20 µm
+    (three times: 60 µm) the asperities touch and the smooth-film result is not acceptable."""
+    case = tmp_path / "case.toml"
+    case.write_text(
+        MINIMAL_CASE.replace('radial_clearance = "0.1 mm"', 'radial_clearance = "0.1 mm"\nsurface_roughness = "20 um"')
+    )
+    result = invoke("bearing", "solve", str(case), "--json", "-")
+    assert result.exit_code == 3
+    texts = [f["text"] for f in json.loads(result.stdout)["findings"] if not f["criterion"]]
+    assert any("mixed lubrication" in t for t in texts), texts
+    case.write_text(MINIMAL_CASE)
+    assert invoke("bearing", "solve", str(case), "--json", "-").exit_code == 0  # default 2.2 µm: 6.6 µm < h_min

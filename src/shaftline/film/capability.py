@@ -99,6 +99,15 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                         "the numbers are not a solution."
                     )
                 )
+            roughness = run.case.surface_roughness
+            if not equilibrium.contact and state.min_film_thickness < 3.0 * roughness:
+                out.append(
+                    Finding(
+                        f"{name}: h_min {state.min_film_thickness * 1e6:.3g} µm is below three times the composite "
+                        f"surface roughness ({roughness * 1e6:.3g} µm): mixed lubrication, where asperities touch and "
+                        "the smooth-film model does not hold (film parameter below 3, Hamrock & Dowson 1981)."
+                    )
+                )
             if state.max_pressure > PEAK_PRESSURE_LIMIT:
                 out.append(
                     Finding(

@@ -60,6 +60,7 @@ from shaftline.film.problem import (
     SolverOptions,
     SupplyGroove,
 )
+from shaftline.film.study import BearingCase
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
@@ -375,6 +376,10 @@ _CLEARANCE = (
     "seed 004: c = 0.45 mm, seed 001: 0.5 mm; from about 10 um on a small journal to several mm in worn "
     "water-lubricated bearings (engineering judgement); the clearance ratio c/R below is the sharper check"
 )
+_ROUGHNESS = (
+    "machined journals and bores: Ra 0.1 um (lapped) to 6.3 um (rough turned), Rq about 1.25 Ra (ISO 4287 "
+    "for a Gaussian profile); 0.05 to 50 um keeps a value in um written as m out"
+)
 _CLEARANCE_RATIO = (
     "oil-lubricated white metal typically 0.5e-3 to 2e-3 (seed 004: 1.7e-3); water-lubricated polymer and rubber "
     "bearings more, seed 001: 3.1e-3, small-craft rubber bearings 1e-3 to 2e-3 new and about 5e-3 at the wear "
@@ -462,6 +467,11 @@ class BearingSection(Section):
     """Diametral clearance 2c."""
     rotation: Annotated[Literal["clockwise", "anticlockwise"], BeforeValidator(_rotation_alias)] = "clockwise"
     """Sense of rotation seen from aft."""
+    surface_roughness: Annotated[PositiveLength, Plausible(5e-8, 5e-5, _ROUGHNESS)] = default_of(
+        BearingCase, "surface_roughness"
+    )
+    """Composite roughness sqrt(Rq_journal^2 + Rq_bore^2): a film below three times it is mixed lubrication,
+    outside the smooth-film model (reported as not acceptable)."""
     bore_anchor: BoreAnchor = default_of(BearingGeometry, "bore_anchor")
     """Where a slope-bored bore keeps the nominal axis."""
     bore: list[BoreSegmentSection] = []
@@ -644,6 +654,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             tilt_z=tilt_z,
             lubricant=lubricant,
             temperature=lube.temperature,
+            surface_roughness=section.surface_roughness,
             error_fields=fields,
         )
 

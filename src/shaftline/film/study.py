@@ -40,6 +40,12 @@ class BearingCase:
         The lubricant (for the report).
     temperature : float or None
         Effective film temperature, degC, where given.
+    surface_roughness : float
+        Composite roughness of journal and bore, sqrt(Rq_journal^2 + Rq_bore^2), m. The
+        smooth-film model holds where the film is at least three times it (Hamrock & Dowson,
+        "Ball Bearing Lubrication", 1981: partial lubrication below film parameter 3). The
+        default, 2.2 µm, is a ground journal (Rq 1 µm, Ra about 0.8 µm) in a bored white-metal
+        liner (Rq 2 µm, Ra about 1.6 µm), engineering judgement of usual stern-tube finishes.
     error_fields : mapping
         Where the case file gives the equilibrium's inputs (``{"tilt_y":
         "variants[1].tilt_vertical"}``), for an error found only while solving; empty
@@ -56,6 +62,7 @@ class BearingCase:
     tilt_z: float = 0.0
     lubricant: Lubricant | None = None
     temperature: float | None = None
+    surface_roughness: float = 2.2e-6
     error_fields: Mapping[str, str] = field(default_factory=dict)
 
 
