@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from shaftline.errors import InputError, require_positive
+from shaftline.errors import InputError, SolverFailure, require_positive
 
 if TYPE_CHECKING:
     from shaftline.cpp._carrier import CarrierParameters
@@ -344,7 +344,7 @@ def _simulate_radau(
         max_step=period / 90,
     )
     if solution.status != 0:  # pragma: no cover - Radau reports failure for pathological input
-        raise RuntimeError(f"carrier motion integration failed: {solution.message}")
+        raise SolverFailure(f"carrier motion integration failed: {solution.message}")
     phi = np.ascontiguousarray(solution.y[0])
     force = spring_force(phi, params)
     if progress is not None:

@@ -25,7 +25,7 @@ import numpy as np
 from scipy.linalg import lu_factor, lu_solve
 from scipy.optimize import linprog
 
-from shaftline.errors import InputError
+from shaftline.errors import InputError, SolverFailure
 
 #: Multipliers of the bounds are gaps (m): a penetration below this is round-off.
 GAP_TOLERANCE = 1e-12
@@ -124,7 +124,7 @@ def active_set_qp(
         if block >= 0:
             x[block] = 0.0
             working[block] = True
-    raise RuntimeError("alignment contact iteration did not terminate")  # pragma: no cover
+    raise SolverFailure("alignment contact iteration did not terminate")  # pragma: no cover
 
 
 class ContactQP:
@@ -317,7 +317,7 @@ class ContactQP:
             if block >= 0:
                 x[block] = 0.0
                 working[block] = True
-        raise RuntimeError("alignment contact iteration did not terminate")  # pragma: no cover
+        raise SolverFailure("alignment contact iteration did not terminate")  # pragma: no cover
 
     def _least_squares_step(
         self, x: np.ndarray, working: np.ndarray, linear: np.ndarray
