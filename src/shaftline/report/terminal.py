@@ -36,7 +36,8 @@ def print_blocks(console: Console, blocks: Sequence[Block]) -> None:
             table = RichTable(title=Text(block.title) if block.title else None)
             for k, header in enumerate(block.headers):
                 numeric = bool(block.rows) and all(_is_number(row[k]) for row in block.rows)
-                table.add_column(Text(header), justify="right" if numeric else "left")
+                # fold long words rather than cut them: nothing is lost in a narrow terminal
+                table.add_column(Text(header), justify="right" if numeric else "left", overflow="fold")
             for i, row in enumerate(block.rows):
                 marks = block.marks[i] if block.marks else [""] * len(row)
                 table.add_row(

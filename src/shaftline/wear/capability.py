@@ -90,21 +90,22 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
         return out
 
     def _table(self, result: WearResult) -> Table:
+        # short headers: the table fits an 80-column terminal; the title says what they mean
         headers = [
             "scenario",
-            "sliding per voyage [m]",
-            f"sliding in {result.study.service.years:g} years [km]",
-            "wear depth [µm]",
-            "allowable rate [mm³/(N·m)]",
-            "years to limit",
-            "P(rate > allowable)",
+            "voyage [m]",
+            f"{result.study.service.years:g} years [km]",
+            "depth [µm]",
+            "allowable [mm³/Nm]",
+            "years",
+            "P(exceed)",
         ]
         rows = []
         for s in result.scenarios:
             probability = "-"
             if s.exceedance is not None:
                 low, mid, high = s.exceedance
-                probability = f"{mid:.3g} ({low:.3g} - {high:.3g})"
+                probability = f"{mid:.3g} ({low:.2g}–{high:.2g})"
             rows.append(
                 [
                     s.name,
@@ -116,7 +117,11 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
                     probability,
                 ]
             )
-        return Table(headers, rows, "Blade-bearing wear")
+        title = (
+            "Blade-bearing wear: sliding per voyage and over the overhaul period, wear depth, the allowable wear "
+            "rate, years to the allowable depth, P(wear rate > allowable) with bounds"
+        )
+        return Table(headers, rows, title)
 
     def findings(self, result: WearResult) -> list[Finding]:
         study = result.study
