@@ -33,6 +33,8 @@ bench:
 	.venv-bench/bin/python benchmarks/bench_alignment.py
 	.venv-bench/bin/python benchmarks/bench_wear.py
 	.venv-bench/bin/python benchmarks/bench_cpp.py
+	.venv-bench/bin/python benchmarks/bench_contact_qp.py
+	.venv-bench/bin/python benchmarks/bench_startup.py
 
 clean:
 	rm -rf $(VENV) .venv-bench results .pytest_cache
