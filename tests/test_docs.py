@@ -22,8 +22,8 @@ def test_readme_part_is_generated(name):
 def test_every_schema_field_has_a_description():
     from pydantic import BaseModel
 
-    from shaftline.cases.docs import _nested
     from shaftline.cases.loader import case_model
+    from shaftline.cases.types import nested_model
 
     missing = []
 
@@ -31,7 +31,7 @@ def test_every_schema_field_has_a_description():
         for name, info in model.model_fields.items():
             if not info.description:
                 missing.append(f"{path}.{name}")
-            nested = _nested(info.annotation)
+            nested = nested_model(info.annotation)
             if nested is not None:
                 walk(nested[0], f"{path}.{name}")
 

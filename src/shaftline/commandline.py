@@ -178,7 +178,7 @@ def compare_cases(
 ) -> None:
     """Solve capability ``key`` for each case file and show the capability's comparison;
     cases are named by their [case] name, made unique with the file name where needed."""
-    from shaftline.pipeline import run_case
+    from shaftline.pipeline import finding_line, run_case
     from shaftline.registry import capabilities
     from shaftline.report.blocks import Paragraph, Section
     from shaftline.report.terminal import print_blocks
@@ -199,10 +199,7 @@ def compare_cases(
                 results.append((name, result[key]))
         comparison = capability.compare(results)
         found = [(name, item) for name, value in results for item in capability.findings(value)]
-        warnings: list[Any] = [
-            Paragraph(f"{'' if item.criterion else 'NOT ACCEPTABLE: '}{name}: {item.text}", "warn")
-            for name, item in found
-        ]
+        warnings: list[Any] = [Paragraph(finding_line(name, item), "warn") for name, item in found]
         print_blocks(error_console if json_path == "-" else console, warnings)
         if json_path != "-":
             print_blocks(console, comparison.blocks)

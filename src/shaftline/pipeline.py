@@ -15,6 +15,7 @@ from __future__ import annotations
 import json
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 from typing import Any
 
@@ -84,6 +85,13 @@ class CaseResult:
         for key, result in self.results.items():
             yield self.solved_by.get(key) or capabilities()[key], result
 
+    @cached_property
+    def findings(self) -> list[tuple[str, Finding]]:
+        """(capability key, finding) of every capability, in report order (found once)."""
+        return [
+            (capability.key, item) for capability, value in self.capabilities() for item in capability.findings(value)
+        ]
+
 
 def run_case(
     case: Case,
@@ -121,16 +129,14 @@ def run_case(
     return CaseResult(case, results, solved_by)
 
 
-def findings(result: CaseResult) -> list[tuple[str, Finding]]:
-    """(capability key, finding) of every capability of the run, in report order."""
-    return [
-        (capability.key, item) for capability, value in result.capabilities() for item in capability.findings(value)
-    ]
-
-
 def acceptable(result: CaseResult, strict: bool = False) -> bool:
     """No finding that makes the result unacceptable (with ``strict``, no finding at all)."""
-    return not any(strict or not item.criterion for _, item in findings(result))
+    return not any(strict or not item.criterion for _, item in result.findings)
+
+
+def finding_line(subject: str, item: Finding) -> str:
+    """A finding as one line of the terminal or the report, naming what it is about."""
+    return f"{'' if item.criterion else 'NOT ACCEPTABLE: '}{subject}: {item.text}"
 
 
 def results_document(result: CaseResult) -> dict[str, Any]:
@@ -139,7 +145,7 @@ def results_document(result: CaseResult) -> dict[str, Any]:
         "shaftline_version": shaftline.__version__,
         "case": result.case.name,
         "findings": [
-            {"capability": key, "text": item.text, "criterion": item.criterion} for key, item in findings(result)
+            {"capability": key, "text": item.text, "criterion": item.criterion} for key, item in result.findings
         ],
     }
     for capability, value in result.capabilities():
@@ -157,10 +163,7 @@ def findings_blocks(result: CaseResult) -> list[Any]:
     from shaftline.report.blocks import Paragraph
 
     titles = {capability.key: capability.title for capability, _ in result.capabilities()}
-    return [
-        Paragraph(f"{'' if item.criterion else 'NOT ACCEPTABLE: '}{titles[key]}: {item.text}", "warn")
-        for key, item in findings(result)
-    ]
+    return [Paragraph(finding_line(titles[key], item), "warn") for key, item in result.findings]
 
 
 def report_sections(result: CaseResult) -> list[Any]:

@@ -19,7 +19,7 @@ from pydantic import BaseModel
 from pydantic_core import PydanticUndefined
 
 from shaftline.cases.loader import case_model
-from shaftline.cases.types import Quantity
+from shaftline.cases.types import Quantity, nested_model
 
 
 def _metadata(annotation: Any) -> list[Any]:
@@ -76,18 +76,6 @@ def _bounds(metadata: list[Any]) -> str:
     return ", ".join(words)
 
 
-def _nested(annotation: Any) -> tuple[type[BaseModel], bool] | None:
-    """The model of a sub-table and whether it is an array of tables."""
-    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
-        return annotation, False
-    origin = get_origin(annotation)
-    for arg in get_args(annotation):
-        found = _nested(arg)
-        if found is not None:
-            return found[0], found[1] or origin is list
-    return None
-
-
 def _default(info: Any) -> str:
     if info.is_required():
         return "required"
@@ -107,7 +95,7 @@ def _tables(model: type[BaseModel], path: str, array: bool, out: list[str]) -> N
     rows = []
     children = []
     for name, info in model.model_fields.items():
-        nested = _nested(info.annotation)
+        nested = nested_model(info.annotation)
         if nested is not None:
             child, child_array = nested
             children.append((child, f"{path}.{name}" if path else name, child_array))

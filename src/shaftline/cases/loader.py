@@ -22,7 +22,7 @@ from pydantic import BaseModel, Field, ValidationError, create_model
 from shaftline import registry
 from shaftline.cases.files import read_case_file
 from shaftline.cases.plausibility import check_table
-from shaftline.cases.types import CaseInfo, Section
+from shaftline.cases.types import CaseInfo, Section, nested_model
 from shaftline.errors import InputError, located
 from shaftline.pipeline import Case
 from shaftline.registry import BuildContext, SectionT
@@ -80,20 +80,9 @@ def _model_at(root: type[BaseModel], location: tuple[Any, ...]) -> type[BaseMode
         info = model.model_fields.get(part)
         if info is None:
             return None
-        model = _inner_model(info.annotation)
+        nested = nested_model(info.annotation)
+        model = nested[0] if nested is not None else None
     return model if isinstance(model, type) and issubclass(model, BaseModel) else None
-
-
-def _inner_model(annotation: Any) -> Any:
-    from typing import get_args
-
-    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
-        return annotation
-    for arg in get_args(annotation):
-        found = _inner_model(arg)
-        if found is not None:
-            return found
-    return None
 
 
 #: What pydantic's type errors ask for, in the words of the one-line message.

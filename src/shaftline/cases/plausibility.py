@@ -29,7 +29,7 @@ from typing import Annotated, Any, Union, get_args, get_origin
 
 from pydantic import BaseModel
 
-from shaftline.cases.types import Plausible, PlausibleRatio, Quantity
+from shaftline.cases.types import Plausible, PlausibleRatio, Quantity, nested_model
 from shaftline.errors import InputError
 
 
@@ -409,21 +409,6 @@ class _Ratio:
 # --- the ranges as a table (README, generated) ----------------------------------------------
 
 
-def _nested(annotation: Any) -> tuple[type[BaseModel], str] | None:
-    """The model of a sub-table and how its path continues (``""``, ``"[k]"`` for an array)."""
-    annotation = _strip(annotation)
-    if get_origin(annotation) is Annotated:
-        annotation = get_args(annotation)[0]
-    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
-        return annotation, ""
-    entry = _entry(annotation, list)
-    if entry is not None:
-        inner = _nested(entry)
-        if inner is not None:
-            return inner[0], "[k]" + inner[1]
-    return None
-
-
 def _rows(model: type[BaseModel], path: str) -> Iterator[tuple[str, str, str]]:
     for name, info in model.model_fields.items():
         annotation = _annotation(info)
@@ -438,9 +423,9 @@ def _rows(model: type[BaseModel], path: str) -> Iterator[tuple[str, str, str]]:
             quantity, plausible = guard
             yield f"`{where}`", plausible.text(quantity.unit), plausible.source
             continue
-        nested = _nested(annotation)
+        nested = nested_model(annotation)
         if nested is not None:
-            yield from _rows(nested[0], where + nested[1])
+            yield from _rows(nested[0], where + ("[k]" if nested[1] else ""))
     for check in _ratios(model):
         yield (
             f"`{_join(path, check.field)}`: {check.name} ({check.meaning})",

@@ -255,6 +255,21 @@ class CaseInfo(Section):
     field each (e.g. "bearing.length", "alignment.bearings[3].x"); the report lists them."""
 
 
+def nested_model(annotation: Any) -> tuple[type[BaseModel], bool] | None:
+    """The model of a sub-table inside a field's annotation (through ``Annotated``, ``| None``,
+    ``list[...]``) and whether the field is an array of such tables; None for a plain field."""
+    from typing import get_args, get_origin
+
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation, False
+    origin = get_origin(annotation)
+    for arg in get_args(annotation):
+        found = nested_model(arg)
+        if found is not None:
+            return found[0], found[1] or origin is list
+    return None
+
+
 def default_of(cls: type, name: str) -> Any:
     """The default of field ``name`` of the domain dataclass ``cls``: the one source of
     defaults, so the case file and the library cannot drift apart."""
@@ -284,4 +299,5 @@ __all__ = [
     "Section",
     "default_of",
     "field_error",
+    "nested_model",
 ]

@@ -53,30 +53,14 @@ if TYPE_CHECKING:
 Component = Literal["force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
 StudyParameter = Literal["holding_moment", "spindle_scale", "backlash", "friction", "oil_stiffness", "water_inertia"]
 
-#: Lower limit of each study parameter's values (None: any) and the allowed range in words.
-STUDY_RANGES: dict[str, tuple[float | None, str]] = {
-    "holding_moment": (None, ""),
-    "backlash": (0.0, ">= 0"),
-    "oil_stiffness": (0.0, "> 0"),
-    "water_inertia": (0.0, ">= 0"),
-    "spindle_scale": (0.0, "> 0"),
-}
-#: SI unit of each study parameter's values.
-STUDY_UNITS = {
-    "holding_moment": "N m",
-    "backlash": "m",
-    "oil_stiffness": "N/m",
-    "water_inertia": "kg m^2",
-    "spindle_scale": "",
-}
-
-#: Kind of quantity of the values of each study parameter (friction takes law names).
-STUDY_KINDS = {
-    "holding_moment": "moment",
-    "backlash": "length",
-    "oil_stiffness": "stiffness",
-    "water_inertia": "inertia",
-    "spindle_scale": "dimensionless",
+#: The quantity of the values of each study parameter, with its allowed range (friction
+#: takes law names instead).
+STUDY_VALUES = {
+    "holding_moment": Quantity("moment"),
+    "backlash": Quantity("length", ge=0),
+    "oil_stiffness": Quantity("stiffness", gt=0),
+    "water_inertia": Quantity("inertia", ge=0),
+    "spindle_scale": Quantity("dimensionless", gt=0),
 }
 
 
@@ -479,11 +463,11 @@ def build_study(section: CppSection, context: BuildContext) -> BladeBearingStudy
                 if value not in ("lugre", "static"):
                     raise InputError(f"study.values[{k}]", value, "", "lugre or static")
         else:
-            values = [to_si(v, STUDY_KINDS[st.parameter], f"study.values[{k}]") for k, v in enumerate(st.values)]
-            low, allowed = STUDY_RANGES[st.parameter]
+            quantity = STUDY_VALUES[st.parameter]
+            values = [to_si(v, quantity.kind, f"study.values[{k}]") for k, v in enumerate(st.values)]
             for k, value in enumerate(values):
-                if low is not None and (value < low or (value == low and allowed.startswith("> "))):
-                    raise InputError(f"study.values[{k}]", value, STUDY_UNITS[st.parameter], allowed)
+                if not quantity.inside(value):
+                    raise InputError(f"study.values[{k}]", value, quantity.unit, quantity.allowed())
         study = ParameterStudy(st.parameter, tuple(values), st.revolutions)
     return BladeBearingStudy(
         blades=section.blades,

@@ -99,6 +99,15 @@ class Section:
     blocks: Sequence[Block]
 
 
+def is_number(text: str) -> bool:
+    """Whether a table cell reads as a number (possibly followed by a unit): it is right-aligned."""
+    try:
+        float(str(text).split()[0])
+    except (ValueError, IndexError):
+        return False
+    return True
+
+
 def fmt(value: float | None, scale: float = 1.0, digits: int = 4) -> str:
     """A number for a table: ``value * scale`` to ``digits`` significant digits, ``-`` if
     missing or not finite."""

@@ -11,15 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from shaftline.report.blocks import Details, Figure, Heading, Paragraph, Preformatted, Section, Table
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(str(text).split()[0])
-    except (ValueError, IndexError):
-        return False
-    return True
+from shaftline.report.blocks import Details, Figure, Heading, Paragraph, Preformatted, Section, Table, is_number
 
 
 def svg_name(file: str) -> str:
@@ -89,7 +81,7 @@ def render(
     )
     environment.filters["kind"] = _kind
     environment.filters["svg"] = svg_name
-    environment.tests["number"] = _is_number
+    environment.tests["number"] = is_number
     return environment.get_template("report.html").render(
         title=title,
         description=description,

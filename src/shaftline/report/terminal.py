@@ -9,21 +9,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from shaftline.report.blocks import Block, Heading, Paragraph, Preformatted, Table
+from shaftline.report.blocks import Block, Heading, Paragraph, Preformatted, Table, is_number
 
 if TYPE_CHECKING:
     from rich.console import Console
 
 #: Style of a marked cell.
 MARK_STYLES = {"pass": "green", "fail": "bold red", "": ""}
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(str(text).split()[0])
-    except (ValueError, IndexError):
-        return text.strip() == "-"
-    return True
 
 
 def print_blocks(console: Console, blocks: Sequence[Block]) -> None:
@@ -35,7 +27,8 @@ def print_blocks(console: Console, blocks: Sequence[Block]) -> None:
         if isinstance(block, Table):
             table = RichTable(title=Text(block.title) if block.title else None)
             for k, header in enumerate(block.headers):
-                numeric = bool(block.rows) and all(_is_number(row[k]) for row in block.rows)
+                # a column of numbers (a "-" for a missing one) is right-aligned
+                numeric = bool(block.rows) and all(is_number(row[k]) or row[k].strip() == "-" for row in block.rows)
                 # fold long words rather than cut them: nothing is lost in a narrow terminal
                 table.add_column(Text(header), justify="right" if numeric else "left", overflow="fold")
             for i, row in enumerate(block.rows):

@@ -19,8 +19,6 @@ if TYPE_CHECKING:
     from shaftline.wear.reliability import WeibullFit
     from shaftline.wear.study import WearResult, WearStudy
 
-MM3_PER_NM = 1e-9  # m^3/(N m) per mm^3/(N m)
-
 
 def weibull_json(fit: WeibullFit) -> dict[str, Any]:
     return {
@@ -90,6 +88,8 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
         return out
 
     def _table(self, result: WearResult) -> Table:
+        from shaftline.wear.archard import MM3_PER_NM
+
         # short headers: the table fits an 80-column terminal; the title says what they mean
         headers = [
             "scenario",
@@ -137,6 +137,8 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
         ]
 
     def summary(self, result: WearResult) -> list[Block]:
+        from shaftline.wear.archard import MM3_PER_NM
+
         blocks: list[Block] = [self._table(result)]
         if result.weibull is not None:
             blocks.append(Paragraph("Tested wear rates: " + weibull_text(result.weibull, 1 / MM3_PER_NM, "mm³/(N·m)")))
@@ -144,7 +146,7 @@ class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):
 
     def report(self, result: WearResult) -> list[Block]:
         from shaftline.wear import figures
-        from shaftline.wear.archard import wear_class
+        from shaftline.wear.archard import MM3_PER_NM, wear_class
 
         study = result.study
         blocks: list[Block] = [
