@@ -110,24 +110,3 @@ def require_positive(field: str, value: float, unit: str = "") -> float:
     if number <= 0.0:
         raise InputError(field, number, unit, "> 0")
     return number
-
-
-def require_range(
-    field: str,
-    value: float,
-    low: float,
-    high: float,
-    unit: str = "",
-    *,
-    include_low: bool = True,
-    include_high: bool = True,
-) -> float:
-    """Return ``value`` if it lies in the given interval, else raise :class:`InputError`."""
-    number = require_finite(field, value, unit)
-    above = number >= low if include_low else number > low
-    below = number <= high if include_high else number < high
-    if not (above and below):
-        left = "[" if include_low else "("
-        right = "]" if include_high else ")"
-        raise InputError(field, number, unit, f"in {left}{low}, {high}{right}")
-    return number
