@@ -41,7 +41,6 @@ from typing import Any
 import numpy as np
 import qdldl
 import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
 from shaftline.errors import SolverFailure
 from shaftline.film.geometry import coarse_shape
@@ -295,7 +294,9 @@ class ReynoldsSolver:
             reynolds.film_fraction = _marched_film_fraction(film, reynolds.cavitated)
             return reynolds
         if cavitation == "jfo":
-            return self._solve_jfo(stencil, film, reynolds)
+            from shaftline.film.jfo import solve_jfo
+
+            return solve_jfo(self, stencil, film, reynolds)
         raise ValueError(f"unknown cavitation model {cavitation!r}")
 
     def _coarse(self) -> tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple[np.ndarray, ...]] | None:
@@ -385,55 +386,6 @@ class ReynoldsSolver:
             cavitated = (cavitated & ~leave) | enter
         raise ReynoldsConvergenceError("Reynolds-condition active set did not settle")
 
-    def _solve_jfo(self, stencil: Stencil, film: np.ndarray, start: ReynoldsSolution) -> ReynoldsSolution:
-        """Mass-conserving cavitation, started from the Reynolds-condition active set."""
-        nz, nt = self.shape
-        n = nz * nt
-        node = np.arange(n).reshape(nz, nt)
-        east = np.roll(node, -1, axis=1).ravel()
-        cavitated = start.cavitated.copy()
-        iterations = start.iterations
-        upper = self.pattern.upper
-        for _ in range(MAX_ACTIVE_SET_ITERATIONS):
-            held = self.fixed | cavitated
-            values, diag = self._masked_values(stencil, held)
-            matrix = sp.csc_matrix((values, upper.indices, upper.indptr), shape=(n, n))
-            strict = sp.triu(matrix, k=1)
-            symmetric = (matrix + strict.T).tocsr()
-            # Void-fraction columns of cavitated free nodes: a void s_k cuts the Couette outflow of
-            # cell k by s_k q_k and the inflow of the downstream cell by the same amount.
-            cav = np.flatnonzero(cavitated.ravel())
-            q = stencil.couette_face.ravel()[cav]
-            down = east[cav]
-            keep_down = ~self.fixed.ravel()[down]
-            # Cavitated rows keep their coupling to pressurised neighbours: restore them.
-            rows_c, cols_c, vals_c = _rows_to_pressurised(stencil, cavitated, self.fixed, self.shape)
-            transport = sp.csr_matrix(
-                (
-                    np.concatenate([-q, q[keep_down], vals_c]),
-                    (np.concatenate([cav, down[keep_down], rows_c]), np.concatenate([cav, cav[keep_down], cols_c])),
-                ),
-                shape=(n, n),
-            )
-            # Cavitated rows: zero the symmetric (held) diagonal, the transport term replaces it.
-            row_scale = np.where(cavitated.ravel(), 0.0, 1.0)
-            system = (sp.diags(row_scale) @ symmetric + transport).tocsc()
-            boundary = np.where(self.fixed, self.fixed_pressure, 0.0)
-            rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
-            rhs = np.where(self.fixed, diag.reshape(self.shape) * self.fixed_pressure, rhs)
-            unknown = spla.spsolve(system, rhs.ravel()).reshape(self.shape)
-            iterations += 1
-            pressure = np.where(cavitated, 0.0, unknown)
-            void = np.where(cavitated, unknown, 0.0)
-            scale = max(float(np.abs(pressure).max()), 1e-300)
-            enter = ~held & (pressure < -1e-12 * scale)
-            leave = cavitated & (void < -1e-12)
-            if not enter.any() and not leave.any():
-                fraction = np.clip(1.0 - void, 0.0, 1.0)
-                return ReynoldsSolution(pressure, fraction, cavitated, iterations)
-            cavitated = (cavitated & ~leave) | enter
-        raise ReynoldsConvergenceError("JFO active set did not settle")
-
     def linear_response(self, stencil: Stencil, solution: ReynoldsSolution, rhs_change: np.ndarray) -> np.ndarray:
         """Pressure change ``dP`` for a residual change ``dR`` with the active set frozen.
 
@@ -455,31 +407,6 @@ class ReynoldsSolver:
             rhs = np.where(held.ravel(), 0.0, -column)
             out[k] = factor.solve(rhs)
         return out.reshape((-1,) + self.shape)
-
-
-def _rows_to_pressurised(
-    stencil: Stencil, cavitated: np.ndarray, fixed: np.ndarray, shape: tuple[int, int]
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Entries ``-c`` coupling cavitated rows to their pressurised free neighbours."""
-    nz, nt = shape
-    node = np.arange(nz * nt).reshape(nz, nt)
-    pressurised = ~(cavitated | fixed)
-    rows, cols, vals = [], [], []
-    pairs = (
-        (node, np.roll(node, -1, axis=1), stencil.c_theta),
-        (np.roll(node, -1, axis=1), node, stencil.c_theta),
-        (node[:-1], node[1:], stencil.c_z),
-        (node[1:], node[:-1], stencil.c_z),
-    )
-    flat_cav = cavitated.ravel()
-    flat_p = pressurised.ravel()
-    for a, b, coef in pairs:
-        a, b, coef = a.ravel(), b.ravel(), coef.ravel()
-        pick = flat_cav[a] & flat_p[b]
-        rows.append(a[pick])
-        cols.append(b[pick])
-        vals.append(-coef[pick])
-    return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
 
 
 def _marched_film_fraction(film: np.ndarray, cavitated: np.ndarray) -> np.ndarray:
