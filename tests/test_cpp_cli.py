@@ -98,3 +98,41 @@ def test_load_table_ranking_and_study(tmp_path):
     (tmp_path / "loads.csv").write_text("\n".join(rows[:3] + ["nan" + rows[3][rows[3].index(",") :]] + rows[4:]))
     result = shaftline("cpp", "fretting", str(tmp_path / "table.toml"))
     assert result.exit_code == 2 and "row 4" in result.stderr
+
+
+def test_the_case_file_sets_the_integration_and_the_periodic_stop(tmp_path):
+    """[cpp.motion] method, stop_when_periodic and periodic_tolerance reach the integration,
+    and the JSON and the report say how many revolutions were integrated and whether the
+    periodic state was reached. Without backlash the example's carrier settles (the change
+    falls by about 2.5 a revolution, to 1e-6 after 19), so 40 revolutions stop early;
+    with the stop off all 40 run and the motion is still found periodic. A tolerance outside
+    (0, 1) is an input error naming the field."""
+    text = (
+        EXAMPLE.read_text()
+        .replace('backlash = "0.05 mm"', 'backlash = "0 mm"')
+        .replace("revolutions = 20", "revolutions = 40")
+    )
+    text = text[: text.index("[cpp.study]")]
+    case = tmp_path / "settling.toml"
+    case.write_text(text)
+    out = tmp_path / "out"
+    result = shaftline("cpp", "motion", str(case), "--out", str(out), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 0, result.stderr
+    motion = json.loads((tmp_path / "r.json").read_text())["cpp"]["motion"]
+    assert motion["periodic"] is True and motion["period"] == 1 and motion["method"] == "trbdf2"
+    assert 5 < motion["revolutions"] < 40 == motion["revolutions_requested"]
+    assert motion["periodic_change"] <= motion["periodic_tolerance"] == 1e-6
+    assert "reached: repeats every revolution" in (out / "report.html").read_text()
+
+    case.write_text(text.replace("revolutions = 40", "revolutions = 40\nstop_when_periodic = false"))
+    motion = json.loads(shaftline("cpp", "motion", str(case), "--json", "-").stdout)["cpp"]["motion"]
+    assert motion["revolutions"] == 40 and motion["periodic"] is True
+
+    case.write_text(text.replace("revolutions = 40", 'revolutions = 3\nmethod = "backward_euler"'))
+    motion = json.loads(shaftline("cpp", "motion", str(case), "--json", "-").stdout)["cpp"]["motion"]
+    assert motion["method"] == "backward_euler" and motion["revolutions"] == 3 and motion["periodic"] is False
+
+    for value in ("0.0", "1.5"):
+        case.write_text(text.replace("revolutions = 40", f"revolutions = 40\nperiodic_tolerance = {value}"))
+        result = shaftline("cpp", "motion", str(case))
+        assert result.exit_code == 2 and "cpp.motion.periodic_tolerance" in result.stderr

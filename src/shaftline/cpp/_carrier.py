@@ -1,4 +1,4 @@
-"""The blade-carrier equations of motion, written once, and the fixed-step integrator.
+"""The blade-carrier equations of motion, written once, and the fixed-step integrators.
 
 State y = (phi, w) with the static law, (phi, w, z) with LuGre; phi the carrier rotation from
 the set pitch (rad), w = phi' (rad/s), z the mean bristle deflection (rad). Seed 000
@@ -16,14 +16,17 @@ psi = speed t, interpolated linearly with periodic wrap (any spacing). The oil s
 through the pin: yoke travel r_pin (sin(phi_0 + phi) - sin phi_0) less half the backlash on
 either side (dead zone), force k_oil times that, moment force * r_pin cos(phi_0 + phi).
 
-:func:`rhs` and :func:`jacobian` (the analytic, exact Jacobian of the right-hand side) serve
-scipy's Radau through thin Python wrappers; :func:`advance` (backward Euler over a range of
-steps) calls the same :func:`rates` and :func:`rates_jacobian` inside its Newton loop.
-:mod:`shaftline.cpp.motion` calls :func:`advance` in chunks of about 0.1 s, carrying the
-state between them, because Python handles Ctrl-C only when compiled code returns to it;
-:func:`backward_euler` is the same integration in one call. Backward Euler is L-stable:
-steps far longer than the bristle period (2 pi / sqrt(sigma_0 / I), about 1 ms) stay stable,
-and the pre-sliding state relaxes without the ringing an explicit method shows. numba
+:func:`evaluate` is the model: the right-hand side and its analytic, exact Jacobian, together
+(a Newton iteration needs both at one state). :func:`rhs` and :func:`jacobian` serve scipy's
+Radau through thin Python wrappers; :func:`advance` (TR-BDF2 or backward Euler over a range
+of steps) calls :func:`evaluate` inside the Newton loop of each implicit stage, and solves the
+3 x 3 Newton system in closed form (:func:`_newton_correction`). :mod:`shaftline.cpp.motion`
+calls :func:`advance` in chunks of about 0.1 s, carrying the state between them, because
+Python handles Ctrl-C only when compiled code returns to it; :func:`integrate` is the same
+integration in one call. Both methods are L-stable: steps far longer than the bristle period
+(2 pi / sqrt(sigma_0 / I), about 1 ms) stay stable, and the pre-sliding state relaxes without
+the ringing an explicit method shows. At the end of each revolution :func:`motion_period`
+tells whether the motion has become periodic, and the integration can stop there. numba
 compiles all of it because the per-step work is a 3 x 3 Newton solve, which in Python costs
 more in overhead than in arithmetic.
 
@@ -42,17 +45,27 @@ from shaftline.friction.kernels import (
     finite_slope_force_slope,
     lugre_state_rate,
     lugre_state_rate_partials,
-    stribeck_level,
-    stribeck_level_slope,
+    stribeck_level_and_slope,
 )
 
 TWO_PI = 2.0 * np.pi
 
-#: Newton iterations per backward-Euler step before the step is accepted unconverged.
+#: Newton iterations per implicit stage before the stage is accepted unconverged.
 NEWTON_ITERATIONS = 20
 
 #: Halvings of a Newton correction that raises the residual, at most (2^-30 of the step).
 HALVINGS = 30
+
+#: Integration methods of :func:`advance` (numba takes them as numbers).
+BACKWARD_EULER = 0
+TR_BDF2 = 1
+
+#: TR-BDF2's gamma = 2 - sqrt 2: the trapezoidal stage ends at t_n + gamma h, and both stages
+#: then have the same implicit coefficient gamma h / 2 (Hosea & Shampine 1996).
+GAMMA = 2.0 - np.sqrt(2.0)
+#: Weights of the BDF2 stage: y_n+1 - (gamma h / 2) y' = _BDF2_NEW y_gamma - _BDF2_OLD y_n.
+_BDF2_NEW = 1.0 / (GAMMA * (2.0 - GAMMA))
+_BDF2_OLD = (1.0 - GAMMA) ** 2 / (GAMMA * (2.0 - GAMMA))
 
 #: Absolute convergence scales of (phi, w, z): rad (unused), rad/s, rad.
 _SCALE = (0.0, 1e-12, 1e-16)
@@ -95,12 +108,19 @@ def close_table(angle: np.ndarray, *values: np.ndarray) -> tuple[np.ndarray, ...
 def forcing(t, p):
     """(M_sp - M_hyd,mean, Q_c) at time t, s: the tables at psi = speed t, N m.
 
-    Linear interpolation in the closed tables, so unequally spaced angles are exact nodes of
-    the interpolant and the last interval wraps to the first node.
+    Linear interpolation in the closed tables (np.interp's formula, one search for both), so
+    unequally spaced angles are exact nodes of the interpolant and the last interval wraps to
+    the first node.
     """
-    psi = (p.speed * t - p.angle[0]) % TWO_PI + p.angle[0]
-    spindle = np.interp(psi, p.angle, p.spindle_torque) - p.holding_moment
-    return spindle, np.interp(psi, p.angle, p.coulomb_torque)
+    angle = p.angle
+    psi = (p.speed * t - angle[0]) % TWO_PI + angle[0]
+    # the interval [angle[k], angle[k + 1]) holding psi; psi can round up to the table's end
+    k = min(max(np.searchsorted(angle, psi, side="right") - 1, 0), angle.size - 2)
+    offset = psi - angle[k]
+    width = angle[k + 1] - angle[k]
+    spindle = (p.spindle_torque[k + 1] - p.spindle_torque[k]) / width * offset + p.spindle_torque[k]
+    coulomb = (p.coulomb_torque[k + 1] - p.coulomb_torque[k]) / width * offset + p.coulomb_torque[k]
+    return spindle - p.holding_moment, coulomb
 
 
 @njit(cache=True)
@@ -120,54 +140,69 @@ def spring(phi, p):
 
 
 @njit(cache=True)
-def rates(y, spindle, coulomb, p, out):
-    """Right-hand side y' for the loads ``spindle``, ``coulomb`` (N m), written into ``out``."""
+def evaluate(y, spindle, coulomb, p, f, jac, with_jacobian):
+    """The equations of motion: y' for the loads ``spindle``, ``coulomb`` (N m) into ``f`` and,
+    ``with_jacobian``, d y'/d y into ``jac`` (n x n), exact.
+
+    One function for both, so that a Newton iteration, which needs both at the same state,
+    computes the shared terms (the pin's sine and cosine, the Stribeck exponential) once. The
+    Jacobian includes the Stribeck slope of g(w) in d z'/d w and the change of the pin's arm in
+    the spring moment; both only speed up Newton's convergence, the solution is that of the
+    rates.
+    """
     w = y[1]
-    moment = spring(y[0], p)[1]
-    out[0] = w
+    _, moment, stiffness = spring(y[0], p)
+    f[0] = w
+    if with_jacobian:
+        jac[0, 0] = 0.0
+        jac[0, 1] = 1.0
+        jac[1, 0] = -stiffness / p.inertia
     if p.lugre:
         z = y[2]
-        level = stribeck_level(w, coulomb, p.static_ratio * coulomb, p.stribeck_velocity)
+        level, slope = stribeck_level_and_slope(w, coulomb, p.static_ratio * coulomb, p.stribeck_velocity)
         z_rate = lugre_state_rate(z, w, p.stiffness, level)
-        out[1] = (spindle - p.stiffness * z - p.damping * z_rate - moment) / p.inertia
-        out[2] = z_rate
+        f[1] = (spindle - p.stiffness * z - p.damping * z_rate - moment) / p.inertia
+        f[2] = z_rate
+        if with_jacobian:
+            d_dz, d_dw = lugre_state_rate_partials(z, w, p.stiffness, level, slope)
+            jac[0, 2] = 0.0
+            jac[1, 1] = -p.damping * d_dw / p.inertia
+            jac[1, 2] = -(p.stiffness + p.damping * d_dz) / p.inertia
+            jac[2, 0] = 0.0
+            jac[2, 1] = d_dw
+            jac[2, 2] = d_dz
     else:
-        out[1] = (spindle - finite_slope_force(w, coulomb, p.threshold_velocity) - moment) / p.inertia
+        f[1] = (spindle - finite_slope_force(w, coulomb, p.threshold_velocity) - moment) / p.inertia
+        if with_jacobian:
+            jac[1, 1] = -finite_slope_force_slope(w, coulomb, 0.0, p.threshold_velocity) / p.inertia
+
+
+@njit(cache=True)
+def rates(y, spindle, coulomb, p, out):
+    """Right-hand side y' for the loads ``spindle``, ``coulomb`` (N m), written into ``out``."""
+    evaluate(y, spindle, coulomb, p, out, np.empty((0, 0)), False)
 
 
 @njit(cache=True)
 def rates_jacobian(y, spindle, coulomb, p, out):
-    """d y' / d y of :func:`rates`, written into ``out`` (n x n), exact.
-
-    It includes the Stribeck slope of g(w) in d z'/d w and the change of the pin's arm in the
-    spring moment; both only speed up Newton's convergence, the solution is that of
-    :func:`rates`.
-    """
-    w = y[1]
-    stiffness = spring(y[0], p)[2]
-    out[0, 0] = 0.0
-    out[0, 1] = 1.0
-    out[1, 0] = -stiffness / p.inertia
-    if p.lugre:
-        z = y[2]
-        static = p.static_ratio * coulomb
-        level = stribeck_level(w, coulomb, static, p.stribeck_velocity)
-        slope = stribeck_level_slope(w, coulomb, static, p.stribeck_velocity)
-        d_dz, d_dw = lugre_state_rate_partials(z, w, p.stiffness, level, slope)
-        out[0, 2] = 0.0
-        out[1, 1] = -p.damping * d_dw / p.inertia
-        out[1, 2] = -(p.stiffness + p.damping * d_dz) / p.inertia
-        out[2, 0] = 0.0
-        out[2, 1] = d_dw
-        out[2, 2] = d_dz
-    else:
-        out[1, 1] = -finite_slope_force_slope(w, coulomb, 0.0, p.threshold_velocity) / p.inertia
+    """d y' / d y of :func:`rates`, written into ``out`` (n x n), exact (:func:`evaluate`)."""
+    evaluate(y, spindle, coulomb, p, np.empty(y.size), out, True)
 
 
 @njit(cache=True)
 def states(p):
     """Number of states: 3 with LuGre (phi, w, z), 2 with the static law (phi, w)."""
     return 3 if p.lugre else 2
+
+
+@njit(cache=True)
+def at_rest(p):
+    """What :func:`advance` carries from one chunk to the next, at rest: the state y = 0,
+    followed by its rate y', not yet known (NaN)."""
+    n = states(p)
+    carried = np.zeros(2 * n)
+    carried[n:] = np.nan
+    return carried
 
 
 @njit(cache=True)
@@ -198,59 +233,162 @@ def spring_force(phi, p):
 
 
 @njit(cache=True)
-def _solve_in_place(a, b, n):
-    """Solve a x = b for n <= 3 by Gaussian elimination with partial pivoting; x replaces b.
+def _newton_correction(jac, hc, b, n):
+    """Solve (I - hc J) x = b for the Jacobian J of :func:`evaluate`; x replaces b.
 
-    Cheaper than a LAPACK call for these sizes (no copies, no allocation).
+    In closed form, because J's first row is (0, 1, 0) (phi' = w) and z' does not depend on
+    phi: the first equation gives x_0 = b_0 + hc x_1, which leaves two equations in (x_1, x_2)
+    (one with the static law), solved by Cramer's rule. Their determinant is that of
+    I - hc J, which the implicit stages need non-zero anyway. A general LAPACK solve costs a
+    call and an allocation per Newton iteration, several times the rest of the iteration.
     """
-    for col in range(n):
-        pivot = col
-        for row in range(col + 1, n):
-            if abs(a[row, col]) > abs(a[pivot, col]):
-                pivot = row
-        if pivot != col:
-            for c in range(n):
-                a[col, c], a[pivot, c] = a[pivot, c], a[col, c]
-            b[col], b[pivot] = b[pivot], b[col]
-        for row in range(col + 1, n):
-            factor = a[row, col] / a[col, col]
-            for c in range(col, n):
-                a[row, c] -= factor * a[col, c]
-            b[row] -= factor * b[col]
-    for row in range(n - 1, -1, -1):
-        total = b[row]
-        for c in range(row + 1, n):
-            total -= a[row, c] * b[c]
-        b[row] = total / a[row, row]
+    m10 = -hc * jac[1, 0]
+    m11 = 1.0 - hc * jac[1, 1] + hc * m10  # after substituting x_0 = b_0 + hc x_1
+    b1 = b[1] - m10 * b[0]
+    if n == 3:
+        m12 = -hc * jac[1, 2]
+        m21 = -hc * jac[2, 1]
+        m22 = 1.0 - hc * jac[2, 2]
+        det = m11 * m22 - m12 * m21
+        x1 = (b1 * m22 - m12 * b[2]) / det
+        b[2] = (m11 * b[2] - m21 * b1) / det
+    else:
+        x1 = b1 / m11
+    b[0] = b[0] + hc * x1
+    b[1] = x1
 
 
 @njit(cache=True)
-def _residual(y_new, y, spindle, coulomb, step, p, f, out):
-    """Backward-Euler residual y_new - y - step y'(y_new) into ``out``; returns its size for the
-    step control: the largest |residual| of w (and z) over its convergence scale at the step's
-    start ``y`` (a scale fixed within the step, so a Newton correction is a descent direction).
+def _residual(y_new, r, y_ref, spindle, coulomb, hc, p, f, jac, out):
+    """Residual y_new - r - hc y'(y_new) of an implicit stage into ``out``, and the Jacobian at
+    y_new into ``jac`` (for the next Newton iteration); returns the residual's size for
+    the step control: the largest |residual| of w (and z) over its convergence scale at the
+    step's start ``y_ref`` (a scale fixed within the step, so a Newton correction is a descent
+    direction).
 
     phi's residual is linear and vanishes after the first full Newton step, so it is left out.
     """
-    rates(y_new, spindle, coulomb, p, f)
+    evaluate(y_new, spindle, coulomb, p, f, jac, True)
     size = 0.0
-    for i in range(y.size):
-        out[i] = y_new[i] - y[i] - step * f[i]
+    for i in range(y_new.size):
+        out[i] = y_new[i] - r[i] - hc * f[i]
         if i > 0:
-            size = max(size, abs(out[i]) / (_SCALE[i] + 1e-9 * abs(y[i])))
+            size = max(size, abs(out[i]) / (_SCALE[i] + 1e-9 * abs(y_ref[i])))
     return size
 
 
 @njit(cache=True)
-def advance(p, step, y, first, last, every, phi_out, w_out, force_out):
-    """Backward Euler from step ``first`` to step ``last`` (times ``first * step`` to
-    ``last * step``, s), carrying the state ``y`` in place.
+def _stage(p, t, hc, r, y_ref, y_new, f, jac, residual, delta, trial):
+    """Solve the implicit stage y_new - hc y'(t, y_new) = r for y_new by Newton's method with
+    the exact Jacobian, from the guess in ``y_new`` (overwritten with the solution).
 
-    Each step solves y_new - y - step * y'(t_new, y_new) = 0 by Newton's method with the exact
-    Jacobian, until the corrections of w and z fall below 1e-9 relative (1e-12 rad/s absolute
-    on w, 1e-16 rad on z). A correction that raises the residual is halved until it does not:
-    the friction law (at |w| = v_th) and the dead zone have kinks across which plain Newton can
-    cycle, and an accepted unconverged step is an error of the size of the correction.
+    Newton stops when the corrections of w and z fall below 1e-9 relative (1e-12 rad/s
+    absolute on w, 1e-16 rad on z). A correction that raises the residual is halved until it
+    does not: the friction law (at |w| = v_th) and the dead zone have kinks across which plain
+    Newton can cycle, and an accepted unconverged stage is an error of the size of the
+    correction. ``f``, ``jac``, ``residual``, ``delta`` and ``trial`` are work arrays.
+
+    Returns
+    -------
+    bool
+        Whether Newton converged within :data:`NEWTON_ITERATIONS` iterations (the last iterate
+        is kept either way).
+    """
+    n = y_new.size
+    spindle, coulomb = forcing(t, p)
+    size = _residual(y_new, r, y_ref, spindle, coulomb, hc, p, f, jac, residual)
+    for _ in range(NEWTON_ITERATIONS):
+        for i in range(n):
+            delta[i] = residual[i]
+        _newton_correction(jac, hc, delta, n)
+        converged = abs(delta[1]) <= 1e-12 + 1e-9 * abs(y_new[1] - delta[1])
+        if n == 3:
+            converged = converged and abs(delta[2]) <= 1e-16 + 1e-9 * abs(y_new[2] - delta[2])
+        if converged:
+            # a correction this small cannot raise the residual: take it without checking
+            for i in range(n):
+                y_new[i] -= delta[i]
+            return True
+        fraction = 1.0
+        for _ in range(HALVINGS):
+            for i in range(n):
+                trial[i] = y_new[i] - fraction * delta[i]
+            trial_size = _residual(trial, r, y_ref, spindle, coulomb, hc, p, f, jac, residual)
+            if trial_size <= size or trial_size <= 1.0:
+                break
+            fraction *= 0.5
+        y_new[:] = trial
+        size = trial_size
+    return False
+
+
+@njit(cache=True)
+def periodic_change(values, end, per, period, limit):
+    """How far the samples of the ``period`` revolutions ending at sample ``end`` are from
+    repeating the ``period`` revolutions before them (``per`` samples a revolution): the
+    largest change of a sample from the one ``period`` revolutions earlier, over the
+    peak-to-peak of the later revolutions. 0 when they repeat exactly (also without motion),
+    inf when a motion-less stretch follows a moving one.
+
+    The scan stops as soon as the change exceeds ``limit`` (then the value returned is only
+    known to exceed it): the integration tests every revolution and is interested only in
+    whether the change is within its tolerance.
+    """
+    span = period * per
+    low = values[end]
+    high = values[end]
+    for j in range(end - span, end):
+        low = min(low, values[j])
+        high = max(high, values[j])
+    bound = limit * (high - low)
+    change = 0.0
+    for j in range(end - span, end + 1):
+        change = max(change, abs(values[j] - values[j - span]))
+        if change > bound:
+            break
+    if change == 0.0:
+        return 0.0
+    return change / (high - low) if high > low else np.inf
+
+
+@njit(cache=True)
+def motion_period(phi, w, end, per, tolerance, longest):
+    """The smallest number of revolutions m <= ``longest`` after which the motion repeats to
+    ``tolerance`` at sample ``end`` (the end of a revolution): the rotation and the rotation
+    rate over the last m revolutions both within ``tolerance`` of those over the m before
+    (:func:`periodic_change`); 0 if there is none (or fewer than 2 m revolutions so far)."""
+    revolutions = end // per
+    for period in range(1, longest + 1):
+        if revolutions < 2 * period:
+            break
+        if (
+            periodic_change(phi, end, per, period, tolerance) <= tolerance
+            and periodic_change(w, end, per, period, tolerance) <= tolerance
+        ):
+            return period
+    return 0
+
+
+@njit(cache=True)
+def advance(p, method, step, carried, first, last, every, revolution, tolerance, longest, phi_out, w_out, force_out):
+    """Integrate from step ``first`` to step ``last`` (times ``first * step`` to
+    ``last * step``, s) with ``method``, carrying the state in ``carried`` in place; stop
+    early at the periodic state when ``tolerance`` > 0.
+
+    :data:`TR_BDF2` (second order, L-stable; Bank et al. 1985, Hosea & Shampine 1996): a
+    trapezoidal stage to t_n + gamma h, then BDF2 through y_n, y_gamma and y_n+1, both implicit
+    with the same coefficient gamma h / 2 (gamma = 2 - sqrt 2)::
+
+        y_g - (gamma h / 2) y'(y_g) = y_n + (gamma h / 2) y'(y_n)
+        y_n+1 - (gamma h / 2) y'(y_n+1) = (y_g - (1 - gamma)^2 y_n) / (gamma (2 - gamma))
+
+    The rate y'(y_n) that opens a step is the one the BDF2 stage of the step before implies,
+    (y_n - r) / (gamma h / 2) with r its right-hand side (first the same as last; one
+    evaluation of the model a step less, a fifth of the work, and for a stiff system better
+    than evaluating y' at a state Newton left a little off; Hosea & Shampine 1996).
+
+    :data:`BACKWARD_EULER` (first order, L-stable): y_n+1 - h y'(y_n+1) = y_n. Each implicit
+    stage is solved by :func:`_stage`.
 
     The step number k is absolute (the time is ``k * step``) and a step depends only on ``y``
     and k, so integrating 0 to N in one call or in any number of consecutive calls is the same
@@ -260,94 +398,122 @@ def advance(p, step, y, first, last, every, phi_out, w_out, force_out):
     Parameters
     ----------
     p : CarrierParameters
+    method : int
+        :data:`TR_BDF2` or :data:`BACKWARD_EULER`.
     step : float
         Time step, s.
-    y : ndarray
-        State (phi rad, w rad/s[, z rad]) at step ``first``; overwritten with that at ``last``.
+    carried : ndarray
+        The state (phi rad, w rad/s[, z rad]) at step ``first`` followed by its rate y'
+        (NaN where not known: :func:`at_rest`); overwritten with those at the last step
+        taken.
     first, last : int
         Step numbers at the start and end of the chunk, ``0 <= first <= last``.
     every : int
         Steps between output samples: sample ``k // every`` is written after each step k that
         is a multiple of ``every``.
+    revolution : int
+        Steps per shaft revolution, a multiple of ``every``.
+    tolerance : float
+        Periodicity tolerance; 0 integrates to ``last`` whatever the motion. At the end of
+        each revolution the integration stops when the motion has become periodic with a
+        period of at most ``longest`` revolutions (:func:`motion_period`).
+    longest : int
+        Longest period looked for, revolutions.
     phi_out, w_out, force_out : ndarray
         Rotation (rad), rotation rate (rad/s) and oil-spring force (N) per sample, filled in.
 
     Returns
     -------
-    int
-        Number of steps of the chunk accepted unconverged after :data:`NEWTON_ITERATIONS`
-        iterations.
+    unconverged : int
+        Number of implicit stages of the chunk accepted unconverged after
+        :data:`NEWTON_ITERATIONS` iterations.
+    end : int
+        The last step taken: ``last``, or the end of the revolution found periodic.
+    period : int
+        The motion's period in revolutions if the integration stopped at the periodic state,
+        else 0.
     """
     n = states(p)
-    # Work on a local copy of the state, written back at the end: LLVM may then assume that no
-    # output array aliases it, which the caller's array does not allow (5-10 % of the time).
-    y_start = y
-    y = y_start.copy()
+    # Work on local copies of the state, written back at the end: LLVM may then assume that no
+    # output array aliases them, which the caller's array does not allow (5-10 % of the time).
+    y = carried[:n].copy()
+    rate = carried[n:].copy()
     y_new = np.empty(n)
+    y_gamma = np.empty(n)
+    r = np.empty(n)
     trial = np.empty(n)
     f = np.empty(n)
     jac = np.empty((n, n))
     residual = np.empty(n)
     delta = np.empty(n)
+    per = revolution // every
     unconverged = 0
+    end = last
+    period = 0
     for k in range(first + 1, last + 1):
-        spindle, coulomb = forcing(k * step, p)
-        y_new[:] = y
-        size = _residual(y_new, y, spindle, coulomb, step, p, f, residual)
-        converged = False
-        for _ in range(NEWTON_ITERATIONS):
-            rates_jacobian(y_new, spindle, coulomb, p, jac)
+        if method == TR_BDF2:
+            hc = GAMMA * step / 2
+            t = (k - 1) * step
+            if np.isnan(rate[0]):  # at the start only
+                spindle, coulomb = forcing(t, p)
+                evaluate(y, spindle, coulomb, p, rate, jac, False)
             for i in range(n):
-                delta[i] = residual[i]
-                for j in range(n):
-                    jac[i, j] = (1.0 if i == j else 0.0) - step * jac[i, j]
-            _solve_in_place(jac, delta, n)
-            converged = abs(delta[1]) <= 1e-12 + 1e-9 * abs(y_new[1] - delta[1])
-            if n == 3:
-                converged = converged and abs(delta[2]) <= 1e-16 + 1e-9 * abs(y_new[2] - delta[2])
-            if converged:
-                # a correction this small cannot raise the residual: take it without checking
-                for i in range(n):
-                    y_new[i] -= delta[i]
-                break
-            fraction = 1.0
-            for _ in range(HALVINGS):
-                for i in range(n):
-                    trial[i] = y_new[i] - fraction * delta[i]
-                trial_size = _residual(trial, y, spindle, coulomb, step, p, f, residual)
-                if trial_size <= size or trial_size <= 1.0:
-                    break
-                fraction *= 0.5
-            y_new[:] = trial
-            size = trial_size
-        if not converged:
-            unconverged += 1
+                r[i] = y[i] + hc * rate[i]
+                y_gamma[i] = y[i] + GAMMA * step * rate[i]  # explicit Euler guess
+            if not _stage(p, t + GAMMA * step, hc, r, y, y_gamma, f, jac, residual, delta, trial):
+                unconverged += 1
+            for i in range(n):
+                r[i] = _BDF2_NEW * y_gamma[i] - _BDF2_OLD * y[i]
+                y_new[i] = y[i] + (y_gamma[i] - y[i]) / GAMMA  # linear extrapolation guess
+            if not _stage(p, k * step, hc, r, y, y_new, f, jac, residual, delta, trial):
+                unconverged += 1
+            for i in range(n):
+                rate[i] = (y_new[i] - r[i]) / hc
+        else:
+            y_new[:] = y
+            if not _stage(p, k * step, step, y, y, y_new, f, jac, residual, delta, trial):
+                unconverged += 1
         y[:] = y_new
         if k % every == 0:
             sample = k // every
             phi_out[sample] = y[0]
             w_out[sample] = y[1]
             force_out[sample] = spring(y[0], p)[0]
-    y_start[:] = y
-    return unconverged
+            if tolerance > 0.0 and k % revolution == 0:
+                period = motion_period(phi_out, w_out, sample, per, tolerance, longest)
+                if period:
+                    end = k
+                    break
+    carried[:n] = y
+    carried[n:] = rate
+    return unconverged, end, period
 
 
 @njit(cache=True)
-def backward_euler(p, step, steps, every):
-    """Backward Euler from rest (y = 0 at t = 0) over ``steps`` steps of ``step`` s, in one
-    compiled call (:func:`advance` from 0 to ``steps``; it cannot be interrupted).
+def integrate(p, method, step, steps, every, revolution, tolerance, longest):
+    """:func:`advance` from rest (y = 0 at t = 0) over at most ``steps`` steps of ``step`` s,
+    in one compiled call (it cannot be interrupted).
 
     Returns
     -------
     phi, w, force : ndarray
         Rotation (rad), rotation rate (rad/s) and oil-spring force (N) every ``every`` steps,
-        from t = 0.
+        from t = 0 to the last step taken.
     unconverged : int
-        Number of steps accepted unconverged after :data:`NEWTON_ITERATIONS` iterations.
+        Number of implicit stages accepted unconverged after :data:`NEWTON_ITERATIONS`
+        iterations.
+    end : int
+        The last step taken.
+    period : int
+        The motion's period in revolutions if the integration stopped at the periodic state,
+        else 0.
     """
     samples = steps // every + 1
     phi_out = np.zeros(samples)
     w_out = np.zeros(samples)
     force_out = np.zeros(samples)
-    unconverged = advance(p, step, np.zeros(states(p)), 0, steps, every, phi_out, w_out, force_out)
-    return phi_out, w_out, force_out, unconverged
+    unconverged, end, period = advance(
+        p, method, step, at_rest(p), 0, steps, every, revolution, tolerance, longest, phi_out, w_out, force_out
+    )
+    used = end // every + 1
+    return phi_out[:used], w_out[:used], force_out[:used], unconverged, end, period

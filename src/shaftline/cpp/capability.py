@@ -25,6 +25,21 @@ STUDY_DISPLAY = {
 }
 
 
+def periodicity(motion: dict[str, Any]) -> str:
+    """The periodic state of a motion's JSON in words: reached or not, the period, the change
+    from one cycle to the next and the tolerance."""
+    change = motion["periodic_change"]
+    if change is None:
+        return f"not judged (fewer than two revolutions; tolerance {motion['periodic_tolerance']:.0e})"
+    cycle = "every revolution" if motion["period"] == 1 else f"every {motion['period']} revolutions"
+    if motion["periodic"]:
+        return f"reached: repeats {cycle} to {change:.0e} (tolerance {motion['periodic_tolerance']:.0e})"
+    return (
+        f"not reached: closest {cycle}, change {change:.0e} > tolerance {motion['periodic_tolerance']:.0e}; "
+        "settled values from the second half"
+    )
+
+
 class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingResult"]):
     key = "cpp"
     title = "CPP blade bearing: friction and fretting"
@@ -81,6 +96,12 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
             m = result.motion
             out["motion"] = {
                 "revolutions": m.revolutions,
+                "revolutions_requested": m.requested_revolutions,
+                "method": m.method,
+                "periodic": m.periodic,
+                "period": m.period,
+                "periodic_change": m.periodic_change,
+                "periodic_tolerance": m.periodic_tolerance,
                 "fretting_amplitude": float(m.amplitude[-1]),
                 "fretting_amplitude_settled": dict(zip(("max", "mean", "min"), settled_amplitude(m), strict=True)),
                 "sliding_per_revolution": float(m.sliding_per_revolution[-1]),
@@ -93,6 +114,9 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
                 "fretting_amplitude": [float(m.amplitude[-1]) for _, m in result.parameter_study],
                 "fretting_amplitude_settled_max": [settled_amplitude(m)[0] for _, m in result.parameter_study],
                 "revolutions": result.study.study.revolutions,
+                "revolutions_integrated": [m.revolutions for _, m in result.parameter_study],
+                "periodic": [m.periodic for _, m in result.parameter_study],
+                "period": [m.period for _, m in result.parameter_study],
             }
         return out
 
@@ -131,6 +155,8 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
                 ],
                 ["sliding per revolution [mm]", f"{m['sliding_per_revolution'] * 1e3:.3f}"],
                 ["oil pressure fluctuation [bar]", f"{m['pressure_fluctuation'] / 1e5:.3f}"],
+                ["revolutions integrated (asked for)", f"{m['revolutions']} ({m['revolutions_requested']})"],
+                ["periodic state", periodicity(m)],
             ]
         return Table(["quantity", "value"], rows, "CPP blade bearing")
 
@@ -166,8 +192,9 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
             blocks.append(Heading(f"Parameter study: {parameter.replace('_', ' ')}"))
             blocks.append(
                 Paragraph(
-                    f"{st.revolutions} revolutions per value. The amplitude is the largest of the settled revolutions "
-                    "(the second half): with backlash the motion need not repeat every revolution, so the last "
+                    f"At most {st.revolutions} revolutions per value, fewer where the motion became periodic first. "
+                    "The amplitude is the largest of the settled revolutions (one cycle of a periodic motion, else "
+                    "the second half): with backlash the motion need not repeat every revolution, so the last "
                     "revolution alone depends on how many were simulated."
                 )
             )
@@ -177,12 +204,16 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
                         f"{parameter.replace('_', ' ')}{f' [{unit}]' if unit else ''}",
                         "fretting amplitude, settled max [µm]",
                         "settled min [µm]",
+                        "revolutions",
+                        "periodic",
                     ],
                     [
                         [
                             v if isinstance(v, str) else f"{v * scale:.4g}",
                             f"{settled_amplitude(m)[0] * 1e6:.1f}",
                             f"{settled_amplitude(m)[2] * 1e6:.1f}",
+                            str(m.revolutions),
+                            (f"every {m.period}" if m.period > 1 else "yes") if m.periodic else "no",
                         ]
                         for v, m in result.parameter_study
                     ],

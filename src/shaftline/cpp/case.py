@@ -43,7 +43,8 @@ from shaftline.cases.types import (
     field_error,
 )
 from shaftline.cpp.loads import BladeBearing
-from shaftline.cpp.motion import CarrierModel
+from shaftline.cpp.motion import CarrierModel, MethodName
+from shaftline.cpp.study import CarrierMotionRequest
 from shaftline.errors import InputError, located
 from shaftline.registry import BuildContext
 
@@ -293,7 +294,8 @@ _LUGRE = "a fitted model parameter: " + _SEED + " Table 4.2 gives {}; four decad
 
 
 class MotionSection(Section):
-    """The blade-carrier fretting motion (Sect. 4.6): inertia, friction law and run length."""
+    """The blade-carrier fretting motion (Sect. 4.6): inertia, friction law, run length and
+    integration."""
 
     inertia: Annotated[PositiveInertia, SPINDLE_INERTIA]
     """Blade and carrier inertia about the spindle axis."""
@@ -302,7 +304,26 @@ class MotionSection(Section):
     friction: Literal["lugre", "static"] = default_of(CarrierModel, "friction")
     """LuGre (Eq. 4.13-4.15) or the finite-slope static law (Eq. 4.8)."""
     revolutions: Annotated[int, Field(ge=1, le=10000)] = 10
-    """Shaft revolutions simulated (the last one is reported)."""
+    """Shaft revolutions simulated at most (the last one is reported); fewer when the motion
+    becomes periodic first and stop_when_periodic is on."""
+    method: MethodName = default_of(CarrierMotionRequest, "method")
+    """Integration method: trbdf2 (second order, L-stable), backward_euler (first order, the
+    earlier default) or radau (scipy's adaptive Radau IIA, the reference, slower)."""
+    stop_when_periodic: bool = default_of(CarrierMotionRequest, "stop_when_periodic")
+    """Stop at the first revolution at which the motion repeats the revolutions before it to
+    periodic_tolerance (a cycle of up to 8 revolutions); false integrates all revolutions."""
+    periodic_tolerance: Annotated[
+        float,
+        Quantity("dimensionless", gt=0, lt=1),
+        Plausible(
+            1e-9,
+            1e-2,
+            "the largest change of rotation and rotation rate from one cycle to the next over their "
+            "peak-to-peak: the fixed-step methods repeat to about 1e-11, Radau to about its rtol (5e-6), so "
+            "smaller values are never met; above 1e-2 the amplitude is not settled (engineering judgement)",
+        ),
+    ] = default_of(CarrierMotionRequest, "periodic_tolerance")
+    """Periodicity tolerance (relative to the peak-to-peak of the motion)."""
     stiffness: Annotated[
         float, Quantity("rotational_stiffness", gt=0), Plausible(5e6, 5e14, _LUGRE.format("sigma_0 = 5e10 N m"))
     ] = default_of(CarrierModel, "stiffness")
@@ -330,7 +351,8 @@ class StudySection(Section):
     values: Annotated[list[StrictFloat | StrictInt | str], Field(min_length=1)]
     """Its values (quantities with units; friction law names for friction)."""
     revolutions: Annotated[int, Field(ge=1, le=10000)] = 10
-    """Revolutions simulated per value."""
+    """Revolutions simulated per value (at most: the stop at the periodic state of
+    [cpp.motion] applies)."""
 
 
 class CppSection(Section):
@@ -452,6 +474,9 @@ def build_study(section: CppSection, context: BuildContext) -> BladeBearingStudy
             damping=m.damping,
             stribeck_velocity=m.stribeck_velocity,
             threshold_velocity=m.threshold_velocity,
+            method=m.method,
+            stop_when_periodic=m.stop_when_periodic,
+            periodic_tolerance=m.periodic_tolerance,
         )
     study = None
     if section.study is not None:

@@ -10,10 +10,12 @@ yoke travel r_pin (sin phi - sin phi_0) less half the backlash on either side (d
 force k_oil times that, moment force * r_pin cos phi (Eq. 4.25-4.27).
 
 The equations of motion (right-hand side and analytic Jacobian) are written once, compiled,
-in :mod:`shaftline.cpp._carrier`; both integrators use them. The system is stiff
-(sigma_0 = 5e10 N m/rad against a blade inertia of the order of 10^3 kg m^2): the default is
-backward Euler with a fixed step, the reference scipy's Radau. numba and scipy are imported
-only when integrating, so that reading a case (which takes defaults from
+in :mod:`shaftline.cpp._carrier`; every integrator uses them. The system is stiff
+(sigma_0 = 5e10 N m/rad against a blade inertia of the order of 10^3 kg m^2): the methods of
+:data:`METHODS` are L-stable, the default TR-BDF2 (second order, fixed step), backward Euler
+(first order, the method before it) and scipy's Radau (adaptive, the reference). By default
+the integration stops once the motion is periodic (:func:`simulate_carrier`). numba and
+scipy are imported only when integrating, so that reading a case (which takes defaults from
 :class:`CarrierModel`) stays fast.
 """
 
@@ -23,7 +25,7 @@ import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from time import perf_counter
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
@@ -32,7 +34,7 @@ from shaftline.errors import InputError, SolverFailure, require_positive
 if TYPE_CHECKING:
     from shaftline.cpp._carrier import CarrierParameters
 
-#: Wall time, s, that one compiled chunk of the backward-Euler integration aims at. Python
+#: Wall time, s, that one compiled chunk of the integration aims at. Python
 #: handles Ctrl-C (and reports progress) only between chunks, so this is how long an interrupt
 #: waits; 0.1 s leaves room for steps ten times slower than those the chunk size was measured
 #: on before Ctrl-C takes more than a second.
@@ -40,6 +42,56 @@ CHUNK_SECONDS = 0.1
 
 #: Steps of the first chunk, before a chunk's duration is known (about 2 ms at ~1 us a step).
 FIRST_CHUNK_STEPS = 2048
+
+MethodName = Literal["trbdf2", "backward_euler", "radau"]
+
+
+@dataclass(frozen=True)
+class Method:
+    """An integration method of the carrier motion.
+
+    Attributes
+    ----------
+    code : int or None
+        Its number in the compiled kernel (:func:`shaftline.cpp._carrier.advance`); None for
+        scipy's Radau.
+    order : int
+        Order of accuracy in the time step.
+    steps_per_revolution : int or None
+        Default fixed steps per revolution; None for the adaptive Radau.
+    description : str
+    """
+
+    code: int | None
+    order: int
+    steps_per_revolution: int | None
+    description: str
+
+
+#: The integration methods by name (as scipy's ``solve_ivp`` names its methods). The step
+#: defaults cost about the same a revolution: TR-BDF2 at 2880 steps is 2.8e-4 from the
+#: converged amplitude in the benchmark case, backward Euler at 7200 steps 1.5e-2
+#: (docs/validation.md).
+METHODS: dict[str, Method] = {
+    "trbdf2": Method(1, 2, 2880, "TR-BDF2, second order, L-stable, fixed step (compiled)"),
+    "backward_euler": Method(0, 1, 7200, "backward Euler, first order, L-stable, fixed step (compiled)"),
+    "radau": Method(None, 5, None, "scipy's Radau IIA, adaptive, rtol 1e-6 (reference, slower)"),
+}
+
+#: The default method.
+DEFAULT_METHOD: MethodName = "trbdf2"
+
+#: Default periodicity tolerance: the motion is taken as periodic when the rotation and the
+#: rotation rate over the last revolutions repeat those before within this share of their
+#: peak-to-peak (:func:`shaftline.cpp._carrier.periodic_change`). It is far below the time
+#: step's error of the amplitude (about 3e-4 at the default step), so stopping there changes
+#: the amplitude by less than the integration's own error.
+PERIODIC_TOLERANCE = 1e-6
+
+#: Longest period looked for, revolutions. With backlash the motion can settle into a cycle of
+#: several revolutions (3 and 6 in the tests and the example's study); beyond this it is
+#: treated as not periodic and integrated for all the revolutions asked for.
+LONGEST_PERIOD = 8
 
 
 @dataclass(frozen=True, eq=False)
@@ -164,6 +216,24 @@ class CarrierMotion:
     force_fluctuation : ndarray
         Peak-to-peak oil-spring (yoke) force per revolution, N; divided by the yoke area it is
         the pressure fluctuation a pressure signal would show (Sect. 4.8).
+    method : str
+        The integration method (a key of :data:`METHODS`).
+    requested_revolutions : int
+        Revolutions asked for; ``revolutions`` is fewer when the integration stopped at the
+        periodic state.
+    periodic_tolerance : float
+        The periodicity tolerance the motion was judged by.
+    period : int
+        Revolutions after which the motion repeats: the smallest m <= :data:`LONGEST_PERIOD`
+        with ``periodic_change`` within the tolerance, or, when there is none, the m closest
+        to it; 0 with fewer than two revolutions.
+    periodic_change : float or None
+        How far the last ``period`` revolutions are from repeating the ``period`` before them:
+        the largest change of the rotation or the rotation rate at the same shaft angle over
+        its peak-to-peak (:func:`shaftline.cpp._carrier.periodic_change`); None with fewer
+        than two revolutions.
+    periodic : bool
+        Whether the motion is periodic: ``periodic_change`` <= ``periodic_tolerance``.
     """
 
     time: np.ndarray
@@ -175,17 +245,36 @@ class CarrierMotion:
     amplitude: np.ndarray
     sliding_per_revolution: np.ndarray
     force_fluctuation: np.ndarray
+    method: str = DEFAULT_METHOD
+    requested_revolutions: int = 0
+    periodic_tolerance: float = PERIODIC_TOLERANCE
+    period: int = 0
+    periodic_change: float | None = None
+
+    @property
+    def periodic(self) -> bool:
+        """Whether the motion repeats to the tolerance (see ``periodic_change``)."""
+        return self.periodic_change is not None and self.periodic_change <= self.periodic_tolerance
 
 
 def simulate_carrier(
     model: CarrierModel,
     revolutions: int = 10,
     samples_per_revolution: int = 720,
-    steps_per_revolution: int = 7200,
-    method: str = "compiled",
+    steps_per_revolution: int | None = None,
+    method: str = DEFAULT_METHOD,
     progress: Callable[[float], None] | None = None,
+    stop_when_periodic: bool = True,
+    periodic_tolerance: float = PERIODIC_TOLERANCE,
 ) -> CarrierMotion:
-    """Integrate the carrier motion from rest over ``revolutions`` shaft turns.
+    """Integrate the carrier motion from rest over at most ``revolutions`` shaft turns.
+
+    The motion is periodic when the rotation and the rotation rate over the last m
+    revolutions repeat those over the m before at the same shaft angles, to within
+    ``periodic_tolerance`` of their peak-to-peak (m from 1 to :data:`LONGEST_PERIOD`, the
+    smallest; docs/theory.md). With ``stop_when_periodic`` (default) the integration stops at
+    the end of the first revolution where it is; the result says whether it is, and the
+    period, either way.
 
     The compiled integration runs in chunks of about :data:`CHUNK_SECONDS` (0.1 s), carrying
     the state from one to the next, so that Ctrl-C (``KeyboardInterrupt``) stops a long run
@@ -196,37 +285,54 @@ def simulate_carrier(
     ----------
     model : CarrierModel
     revolutions : int
-        Shaft revolutions, >= 1.
+        Shaft revolutions, >= 1 (at most, when stopping at the periodic state).
     samples_per_revolution : int
-        Output samples per revolution (the amplitude and sliding are taken from them).
-    steps_per_revolution : int
-        Fixed backward-Euler steps per revolution (``"compiled"`` only), a multiple of
-        ``samples_per_revolution``. Backward Euler is first order: halving the step halves the
-        error; 7200 steps are within a few per cent of Radau (tests/test_cpp_motion.py).
+        Output samples per revolution (the amplitude, sliding and periodicity are taken from
+        them).
+    steps_per_revolution : int, optional
+        Fixed steps per revolution of the compiled methods, a multiple of
+        ``samples_per_revolution``; by default the method's (:data:`METHODS`: 2880 for
+        TR-BDF2, 7200 for backward Euler). TR-BDF2 is second order: halving the step quarters
+        the error (0.6-4e-4 of the amplitude at 2880 steps in the tests against Radau).
     method : str
-        ``"compiled"`` (default): backward Euler with a Newton solve per step, compiled;
-        ``"radau"``: scipy's adaptive Radau IIA at rtol 1e-6 (reference, slower). Both integrate
-        the same compiled equations of motion.
+        A key of :data:`METHODS`: ``"trbdf2"`` (default), ``"backward_euler"`` or
+        ``"radau"``. All integrate the same compiled equations of motion.
     progress : callable, optional
-        Called with the share of the simulated time done, in (0, 1], after each chunk (compiled)
-        or every 1 % of the time (Radau), and with 1.0 at the end.
+        Called with the share of the requested time done, in (0, 1], after each chunk
+        (compiled) or every 1 % of the time (Radau), and with 1.0 at the end.
+    stop_when_periodic : bool
+        Stop at the end of the first revolution at which the motion is periodic.
+    periodic_tolerance : float
+        Periodicity tolerance, in (0, 1).
     """
-    if method not in ("compiled", "radau"):
-        raise InputError("method", method, "", "compiled or radau")
+    if method not in METHODS:
+        raise InputError("method", method, "", ", ".join(METHODS))
+    chosen = METHODS[method]
+    steps = chosen.steps_per_revolution if steps_per_revolution is None else steps_per_revolution
     for name, value in (
         ("revolutions", revolutions),
         ("samples_per_revolution", samples_per_revolution),
-        ("steps_per_revolution", steps_per_revolution),
+        ("steps_per_revolution", steps),
     ):
-        if isinstance(value, bool) or int(value) != value or value < 1:
+        if value is not None and (isinstance(value, bool) or int(value) != value or value < 1):
             raise InputError(name, value, "", "a positive integer")
+    if not 0 < periodic_tolerance < 1:
+        raise InputError("periodic_tolerance", periodic_tolerance, "", "> 0 and < 1")
+    stop = _Stop(float(periodic_tolerance) if stop_when_periodic else 0.0, float(periodic_tolerance))
     revolutions, samples = int(revolutions), int(samples_per_revolution)
-    if method == "radau":
-        return _simulate_radau(model, revolutions, samples, progress)
-    steps = int(steps_per_revolution)
+    if chosen.code is None or steps is None:
+        return _simulate_radau(model, revolutions, samples, progress, stop)
     if steps % samples:
         raise InputError("steps_per_revolution", steps, "", f"a multiple of {samples} samples")
-    return _simulate_compiled(model, revolutions, samples, steps, progress)
+    return _simulate_compiled(model, method, revolutions, samples, int(steps), progress, stop)
+
+
+@dataclass(frozen=True)
+class _Stop:
+    """When to stop: ``at`` the tolerance (0: never), and the tolerance the result is judged by."""
+
+    at: float
+    tolerance: float
 
 
 def _parameters(model: CarrierModel) -> CarrierParameters:
@@ -254,73 +360,99 @@ def _parameters(model: CarrierModel) -> CarrierParameters:
 
 
 def _simulate_compiled(
-    model: CarrierModel, revolutions: int, samples: int, steps: int, progress: Callable[[float], None] | None
+    model: CarrierModel,
+    method: str,
+    revolutions: int,
+    samples: int,
+    steps: int,
+    progress: Callable[[float], None] | None,
+    stop: _Stop,
 ) -> CarrierMotion:
     period = 2 * np.pi / model.speed
     step = period / steps
     every = steps // samples
-    phi, w, force, unconverged = _integrate_in_chunks(_parameters(model), step, revolutions * steps, every, progress)
+    code = METHODS[method].code
+    assert code is not None
+    phi, w, force, unconverged = _integrate_in_chunks(
+        _parameters(model), code, step, revolutions * steps, every, steps, stop.at, progress
+    )
     if unconverged:
         # none in the tested cases; say so rather than return a silently degraded motion
         warnings.warn(
-            f"carrier motion: Newton did not converge in {unconverged} of {revolutions * steps} steps "
-            "(accepted as they are); a larger steps_per_revolution or method='radau' is safer",
+            f"carrier motion: Newton did not converge in {unconverged} implicit stages of "
+            f"{phi.size // samples * steps} steps (accepted as they are); a larger steps_per_revolution "
+            "or method='radau' is safer",
             RuntimeWarning,
             stacklevel=3,
         )
     time = np.arange(phi.size) * step * every
-    return _motion(model, time, phi, w, force, revolutions, samples)
+    return _motion(model, time, phi, w, force, revolutions, samples, method, stop)
 
 
 def _integrate_in_chunks(
     params: CarrierParameters,
+    method: int,
     step: float,
     steps: int,
     every: int,
+    revolution: int,
+    tolerance: float,
     progress: Callable[[float], None] | None,
     chunk_steps: int | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
-    """Backward Euler from rest over ``steps`` steps of ``step`` s, in compiled chunks.
+    """Integrate from rest over at most ``steps`` steps of ``step`` s with ``method`` (a
+    kernel number), in compiled chunks, stopping at the periodic state if ``tolerance`` > 0.
 
-    Returns what :func:`shaftline.cpp._carrier.backward_euler` returns (samples every
-    ``every`` steps, and the count of unconverged steps), with the same bits. A chunk holds
-    ``chunk_steps`` steps when given (tests), else as many as take about :data:`CHUNK_SECONDS`,
-    judged from the last chunk; the size may at most quadruple from one chunk to the next, so
-    that cheap steps at the start (the carrier at rest) do not size a chunk for harder ones.
+    Returns what :func:`shaftline.cpp._carrier.integrate` returns (samples every ``every``
+    steps up to the last step taken, and the count of unconverged stages), with the same bits.
+    A chunk holds ``chunk_steps`` steps when given (tests), else as many as take about
+    :data:`CHUNK_SECONDS`, judged from the last chunk; the size may at most quadruple from one
+    chunk to the next, so that cheap steps at the start (the carrier at rest) do not size a
+    chunk for harder ones.
     """
-    from shaftline.cpp._carrier import advance, states
+    from shaftline.cpp._carrier import advance, at_rest
 
     samples = steps // every + 1
     phi, w, force = np.zeros(samples), np.zeros(samples), np.zeros(samples)
-    y = np.zeros(states(params))
+    carried = at_rest(params)
     unconverged = 0
     done = 0
     chunk = chunk_steps or FIRST_CHUNK_STEPS
     while done < steps:
         end = min(steps, done + chunk)
         started = perf_counter()
-        unconverged += advance(params, step, y, done, end, every, phi, w, force)
+        failed, reached, period = advance(
+            params, method, step, carried, done, end, every, revolution, tolerance, LONGEST_PERIOD, phi, w, force
+        )
         elapsed = perf_counter() - started
-        done = end
+        unconverged += failed
+        done = reached
         if progress is not None:
-            progress(done / steps)
+            progress(1.0 if period else done / steps)
+        if period:
+            break
         if chunk_steps is None:
             chunk = max(1, min(4 * chunk, int(chunk * CHUNK_SECONDS / max(elapsed, 1e-6))))
-    return phi, w, force, unconverged
+    used = done // every + 1
+    return phi[:used], w[:used], force[:used], unconverged
 
 
 def _simulate_radau(
-    model: CarrierModel, revolutions: int, samples: int, progress: Callable[[float], None] | None
+    model: CarrierModel,
+    revolutions: int,
+    samples: int,
+    progress: Callable[[float], None] | None,
+    stop: _Stop,
 ) -> CarrierMotion:
+    """scipy's Radau, one revolution at a time (so that it can stop at the periodic state)."""
     from scipy.integrate import solve_ivp
 
-    from shaftline.cpp._carrier import jacobian, rhs, spring_force
+    from shaftline.cpp._carrier import jacobian, motion_period, rhs, spring_force
 
     params = _parameters(model)
     lugre = model.friction == "lugre"
     period = 2 * np.pi / model.speed
-    t_eval = np.linspace(0.0, revolutions * period, revolutions * samples + 1)
-    end = float(t_eval[-1])
+    end = revolutions * period
     next_report = 0.01 * end
 
     def right_hand_side(t: float, y: np.ndarray) -> np.ndarray:
@@ -332,24 +464,36 @@ def _simulate_radau(
             next_report = t + 0.01 * end
         return rhs(t, y, params)
 
-    solution = solve_ivp(
-        right_hand_side,
-        (0.0, t_eval[-1]),
-        np.zeros(3 if lugre else 2),
-        method="Radau",
-        jac=lambda t, y: jacobian(t, y, params),
-        t_eval=t_eval,
-        rtol=1e-6,
-        atol=[1e-10, 1e-8] + ([1e-12] if lugre else []),
-        max_step=period / 90,
-    )
-    if solution.status != 0:  # pragma: no cover - Radau reports failure for pathological input
-        raise SolverFailure(f"carrier motion integration failed: {solution.message}")
-    phi = np.ascontiguousarray(solution.y[0])
+    y = np.zeros(3 if lugre else 2)
+    times, phis, ws = [np.zeros(1)], [np.zeros(1)], [np.zeros(1)]
+    for k in range(revolutions):
+        t_eval = np.linspace(k * period, (k + 1) * period, samples + 1)
+        solution = solve_ivp(
+            right_hand_side,
+            (t_eval[0], t_eval[-1]),
+            y,
+            method="Radau",
+            jac=lambda t, y: jacobian(t, y, params),
+            t_eval=t_eval,
+            rtol=1e-6,
+            atol=[1e-10, 1e-8] + ([1e-12] if lugre else []),
+            max_step=period / 90,
+        )
+        if solution.status != 0:  # pragma: no cover - Radau reports failure for pathological input
+            raise SolverFailure(f"carrier motion integration failed: {solution.message}")
+        y = solution.y[:, -1]
+        times.append(solution.t[1:])
+        phis.append(solution.y[0, 1:])
+        ws.append(solution.y[1, 1:])
+        if stop.at and motion_period(
+            np.concatenate(phis), np.concatenate(ws), (k + 1) * samples, samples, stop.at, LONGEST_PERIOD
+        ):
+            break
+    phi = np.ascontiguousarray(np.concatenate(phis))
     force = spring_force(phi, params)
     if progress is not None:
         progress(1.0)
-    return _motion(model, solution.t, phi, solution.y[1], force, revolutions, samples)
+    return _motion(model, np.concatenate(times), phi, np.concatenate(ws), force, revolutions, samples, "radau", stop)
 
 
 def _motion(
@@ -358,15 +502,29 @@ def _motion(
     phi: np.ndarray,
     w: np.ndarray,
     force: np.ndarray,
-    revolutions: int,
+    requested: int,
     per: int,
+    method: str,
+    stop: _Stop,
 ) -> CarrierMotion:
+    from shaftline.cpp._carrier import periodic_change
+
+    revolutions = (phi.size - 1) // per
     amplitude, sliding, fluctuation = [], [], []
     for k in range(revolutions):
         part = slice(k * per, (k + 1) * per + 1)
         amplitude.append(model.bearing_radius * np.ptp(phi[part]))
         sliding.append(model.bearing_radius * np.abs(np.diff(phi[part])).sum())
         fluctuation.append(np.ptp(force[part]))
+    # the period: the smallest one within the tolerance, else the one closest to it
+    period, change = 0, None
+    end = revolutions * per
+    for m in range(1, min(LONGEST_PERIOD, revolutions // 2) + 1):
+        c = max(periodic_change(phi, end, per, m, np.inf), periodic_change(w, end, per, m, np.inf))
+        if change is None or c < change:
+            period, change = m, float(c)
+        if c <= stop.tolerance:
+            break
     return CarrierMotion(
         time,
         (model.speed * time) % (2 * np.pi),
@@ -377,6 +535,11 @@ def _motion(
         np.array(amplitude),
         np.array(sliding),
         np.array(fluctuation),
+        method,
+        requested,
+        stop.tolerance,
+        period,
+        change,
     )
 
 
@@ -391,6 +554,9 @@ def parameter_study(
     values: list[Any],
     revolutions: int = 10,
     progress: Callable[[float], None] | None = None,
+    method: str = DEFAULT_METHOD,
+    stop_when_periodic: bool = True,
+    periodic_tolerance: float = PERIODIC_TOLERANCE,
 ) -> list[CarrierMotion]:
     """Fretting motion for each value of one parameter (seed Sect. 4.7).
 
@@ -404,10 +570,12 @@ def parameter_study(
         Values of the parameter, in the unit of the model field (SI; a factor for
         ``"spindle_scale"``, ``"lugre"``/``"static"`` for ``"friction"``).
     revolutions : int
-        Revolutions simulated for each value.
+        Revolutions simulated for each value (at most, when stopping at the periodic state).
     progress : callable, optional
         Called with the share of the whole study done, in (0, 1], as each motion advances
         (see :func:`simulate_carrier`).
+    method, stop_when_periodic, periodic_tolerance
+        As for :func:`simulate_carrier`.
     """
     if parameter not in STUDY_PARAMETERS:
         raise InputError("parameter", parameter, "", "one of " + ", ".join(STUDY_PARAMETERS))
@@ -419,7 +587,16 @@ def parameter_study(
             changed = replace(model, spindle_torque=float(value) * model.spindle_torque)
         else:
             changed = replace(model, **{parameter: value})
-        results.append(simulate_carrier(changed, revolutions, progress=_share(progress, index, len(values))))
+        results.append(
+            simulate_carrier(
+                changed,
+                revolutions,
+                method=method,
+                progress=_share(progress, index, len(values)),
+                stop_when_periodic=stop_when_periodic,
+                periodic_tolerance=periodic_tolerance,
+            )
+        )
     return results
 
 

@@ -48,6 +48,15 @@ def stribeck_level_slope(velocity, coulomb_force, static_force, stribeck_velocit
 
 
 @njit(cache=True)
+def stribeck_level_and_slope(velocity, coulomb_force, static_force, stribeck_velocity):
+    """(g(v), dg/dv) of :func:`stribeck_level` and :func:`stribeck_level_slope` with one
+    exponential, for an implicit integrator that needs both at every Newton iteration."""
+    x = velocity / stribeck_velocity
+    excess = (static_force - coulomb_force) * np.exp(-(x**2))
+    return coulomb_force + excess, -2.0 * x / stribeck_velocity * excess
+
+
+@njit(cache=True)
 def lugre_state_rate(z, velocity, stiffness, level):
     """Bristle rate z' = v - sigma_0 |v| z / g(v) (Eq. 4.13 with g of Eq. 4.14; Dahl for g = F_c).
 
