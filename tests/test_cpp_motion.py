@@ -501,3 +501,24 @@ def test_ctrl_c_stops_a_long_motion_within_a_second():
     finally:
         timer.cancel()
     assert latency < 1.0
+
+
+def test_the_periodic_state_in_words_and_in_json():
+    """The report's line on the periodic state from the JSON entries, in each case: reached
+    (period 1 and a cycle of 3), not reached (the closest period and its change), not judged
+    (one revolution), and a change without bound (a carrier that came to rest), which JSON
+    cannot hold as a number and gets as null."""
+    from shaftline.cpp.capability import finite_or_none, periodicity
+
+    base = {"revolutions": 12, "periodic_tolerance": 1e-6}
+    reached = periodicity({**base, "periodic": True, "period": 1, "periodic_change": 4e-7})
+    assert reached == "reached: repeats every revolution to 4e-07 (tolerance 1e-06)"
+    assert "every 3 revolutions" in periodicity({**base, "periodic": True, "period": 3, "periodic_change": 4e-7})
+    missed = periodicity({**base, "periodic": False, "period": 6, "periodic_change": 0.29})
+    assert missed.startswith("not reached: closest every 6 revolutions, change 3e-01 > tolerance 1e-06")
+    assert periodicity({**base, "revolutions": 1, "periodic": False, "period": 0, "periodic_change": None}).startswith(
+        "not judged"
+    )
+    assert finite_or_none(np.inf) is None and finite_or_none(None) is None and finite_or_none(0.5) == 0.5
+    rest = periodicity({**base, "periodic": False, "period": 1, "periodic_change": finite_or_none(np.inf)})
+    assert rest == "not reached: the carrier came to rest after moving"

@@ -25,12 +25,19 @@ STUDY_DISPLAY = {
 }
 
 
+def finite_or_none(value: float | None) -> float | None:
+    """``value`` if it is a finite number, else None (JSON has no infinity)."""
+    return value if value is not None and math.isfinite(value) else None
+
+
 def periodicity(motion: dict[str, Any]) -> str:
     """The periodic state of a motion's JSON in words: reached or not, the period, the change
     from one cycle to the next and the tolerance."""
     change = motion["periodic_change"]
-    if change is None:
+    if change is None and motion["revolutions"] < 2:
         return f"not judged (fewer than two revolutions; tolerance {motion['periodic_tolerance']:.0e})"
+    if change is None:
+        return "not reached: the carrier came to rest after moving"
     cycle = "every revolution" if motion["period"] == 1 else f"every {motion['period']} revolutions"
     if motion["periodic"]:
         return f"reached: repeats {cycle} to {change:.0e} (tolerance {motion['periodic_tolerance']:.0e})"
@@ -100,7 +107,8 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
                 "method": m.method,
                 "periodic": m.periodic,
                 "period": m.period,
-                "periodic_change": m.periodic_change,
+                # null when not judged, or without bound (a carrier come to rest): JSON has no inf
+                "periodic_change": finite_or_none(m.periodic_change),
                 "periodic_tolerance": m.periodic_tolerance,
                 "fretting_amplitude": float(m.amplitude[-1]),
                 "fretting_amplitude_settled": dict(zip(("max", "mean", "min"), settled_amplitude(m), strict=True)),
