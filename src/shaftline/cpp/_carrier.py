@@ -383,9 +383,9 @@ def advance(p, method, step, carried, first, last, every, revolution, tolerance,
         y_n+1 - (gamma h / 2) y'(y_n+1) = (y_g - (1 - gamma)^2 y_n) / (gamma (2 - gamma))
 
     The rate y'(y_n) that opens a step is the one the BDF2 stage of the step before implies,
-    (y_n - r) / (gamma h / 2) with r its right-hand side (first the same as last; one
-    evaluation of the model a step less, a fifth of the work, and for a stiff system better
-    than evaluating y' at a state Newton left a little off; Hosea & Shampine 1996).
+    (y_n - r) / (gamma h / 2) with r its right-hand side (first the same as last: one
+    evaluation of the model a step less, a fifth of the work; it differs from y'(y_n) only by
+    Newton's residual). It is carried with the state, so that chunks stay bit for bit.
 
     :data:`BACKWARD_EULER` (first order, L-stable): y_n+1 - h y'(y_n+1) = y_n. Each implicit
     stage is solved by :func:`_stage`.
