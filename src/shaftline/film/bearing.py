@@ -24,6 +24,7 @@ import numpy as np
 from shaftline.errors import InputError, require_finite
 from shaftline.film.analytic import eccentricity_guess
 from shaftline.film.geometry import BearingGeometry, Grid, JournalPosition, film_thickness, squeeze_velocity
+from shaftline.film.jfo import JfoSolution, void_transport
 from shaftline.film.problem import (
     CAVITATION_MODELS,
     FILM_STARTS,
@@ -488,6 +489,7 @@ class JournalBearing:
         ``dRate`` the change of ``(2/omega) dH/dt`` per unit of the parameter.
         """
         cache = self._solver_state()
+        solution = evaluation.solution
         changes = []
         for d_film, d_rate in directions:
             dc_theta, dc_z, d_couette = stencil_derivative(
@@ -496,8 +498,15 @@ class JournalBearing:
             d_residual = apply_operator(dc_theta, dc_z, evaluation.relative_pressure) - d_couette
             if d_rate is not None:
                 d_residual = d_residual + cache.d_theta * cache.d_z * d_rate
+            if isinstance(solution, JfoSolution):
+                # JFO: the voids ride on the Couette flux, whose change moves them too (exact linearisation).
+                d_face = cache.d_z * 0.5 * (d_film + np.roll(d_film, -1, axis=1))
+                d_residual = d_residual + void_transport(d_face, solution.void)
             changes.append(d_residual)
-        d_pressure = cache.reynolds.linear_response(evaluation.stencil, evaluation.solution, np.array(changes))
+        if isinstance(solution, JfoSolution):
+            d_pressure = solution.pressure_response(np.array(changes))
+        else:
+            d_pressure = cache.reynolds.linear_response(evaluation.stencil, solution, np.array(changes))
         return [self._integrate_force(evaluation.grid, dp, gauge=False) for dp in d_pressure]
 
     def _offset_directions(self, evaluation: _Evaluation) -> tuple[np.ndarray, np.ndarray]:

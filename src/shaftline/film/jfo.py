@@ -1,17 +1,39 @@
 """Mass-conserving (Jakobsson-Floberg-Olsson) cavitation on the Reynolds grid.
 
 The complementarity form of Giacopini et al. (2010): each node carries either a
-pressure (full film) or a void fraction ``s = 1 - film fraction`` (cavitated); the
-Couette flux through a face is ``(1 - s_upstream) H_face``. Started from the
-Reynolds-condition active set of :class:`~shaftline.film.reynolds.ReynoldsSolver`.
+pressure ``P >= 0`` (full film) or a void fraction ``s = 1 - film fraction >= 0``
+(cavitated), ``P s = 0``; the Couette flux through a face is
+``(1 - s_upstream) q_face`` with ``q = dZ H_face``. Cell balance (docs/theory.md, Sect. 4):
+
+    (A P)_k + q_k (1 - s_k) - q_w (1 - s_w) + squeeze_k = 0.
+
+One unknown per node, ``u = P`` where the film is full and ``u = -s`` where it is
+cavitated, turns the complementarity problem into the piecewise-linear equation
+``R(u) = A u+ - T u- - b = 0`` (``u+ = max(u, 0)``, ``u- = max(-u, 0)``, ``T`` the
+transport of the void fraction). Its generalised Jacobian on the set
+``C = {u < 0}`` has column ``k`` equal to A's column for a full node and to the
+transport column (``q_k`` on the diagonal, ``-q_k`` on the downstream neighbour) for
+a cavitated node. Both live in the 5-point stencil, so every Jacobian has the
+same sparsity pattern, assembled here without loops over nodes. Newton's method
+on ``R`` (semi-smooth Newton, which here is the primal-dual active-set method:
+``C <- {u < 0}`` after each solve) is exact on a fixed set, so it stops when the
+set repeats. The LU factor of the last Jacobian stays with the newest solution: it
+gives the exact linearisation of the discrete JFO film (void-fraction
+sensitivity included) for the equilibrium's Newton steps and the dynamic
+coefficients at one back-substitution per direction.
 """
 
 from __future__ import annotations
+
+import weakref
+from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from shaftline.film.geometry import coarse_shape
 from shaftline.film.reynolds import (
     MAX_ACTIVE_SET_ITERATIONS,
     ReynoldsConvergenceError,
@@ -19,81 +41,377 @@ from shaftline.film.reynolds import (
     ReynoldsSolver,
     Stencil,
     apply_operator,
+    build_stencil,
+    stencil_diagonal,
 )
 
-__all__ = ["solve_jfo"]
+__all__ = ["JfoSolution", "jfo_residual", "solve_jfo", "void_transport"]
+
+#: Relative tolerance of the set switches: a node enters the cavitated set when its pressure
+#: is below ``-SWITCH_TOLERANCE * max|P|`` and leaves it when its void fraction is below
+#: ``-SWITCH_TOLERANCE`` (round-off of the linear solve, not a modelling tolerance).
+SWITCH_TOLERANCE = 1e-12
 
 
-def solve_jfo(solver: ReynoldsSolver, stencil: Stencil, film: np.ndarray, start: ReynoldsSolution) -> ReynoldsSolution:
-    """Mass-conserving cavitation, started from the Reynolds-condition active set."""
-    nz, nt = solver.shape
+@dataclass(frozen=True, eq=False)
+class _JfoPattern:
+    """The periodic 5-point pattern in CSC form with, per stored entry, where its value comes from."""
+
+    indptr: np.ndarray
+    indices: np.ndarray
+    row: np.ndarray
+    col: np.ndarray
+    off: np.ndarray  # off-diagonal entry
+    source: np.ndarray  # index into the concatenation (diag, c_theta, c_z), all flattened
+    # A fill-reducing ordering of the pattern, applied symmetrically once per shape:
+    order: np.ndarray  # node at each position of the permuted system
+    permuted_indptr: np.ndarray  # CSC pattern of the permuted matrix ...
+    permuted_indices: np.ndarray
+    permuted_data: np.ndarray  # ... and where each of its entries sits in the unpermuted data
+    downstream: np.ndarray  # theta-link entry whose row is the node east of its column
+
+
+@lru_cache(maxsize=8)
+def _jfo_pattern(nz: int, nt: int) -> _JfoPattern:
     n = nz * nt
     node = np.arange(n).reshape(nz, nt)
     east = np.roll(node, -1, axis=1).ravel()
-    cavitated = start.cavitated.copy()
-    iterations = start.iterations
-    upper = solver.pattern.upper
+    a_theta, a_z = node.ravel(), node[:-1].ravel()
+    b_z = node[1:].ravel()
+    rows = np.concatenate([np.arange(n), a_theta, east, a_z, b_z])
+    cols = np.concatenate([np.arange(n), east, a_theta, b_z, a_z])
+    z_link = np.arange(a_z.size) + 2 * n
+    source = np.concatenate([np.arange(n), a_theta + n, a_theta + n, z_link, z_link])
+    downstream = np.concatenate([np.zeros(2 * n, bool), np.ones(n, bool), np.zeros(2 * a_z.size, bool)])
+    slots = sp.csc_matrix((np.arange(rows.size) + 1.0, (rows, cols)), shape=(n, n))
+    slots.sort_indices()
+    order = slots.data.astype(int) - 1
+    # The minimum-degree ordering of A + A^T that SuperLU would compute on every call, computed
+    # once on a diagonally dominant matrix of the same pattern (values do not enter it).
+    probe = sp.csc_matrix((np.where(rows == cols, 5.0, -1.0), (rows, cols)), shape=(n, n))
+    perm_c = spla.splu(probe, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}).perm_c
+    nodes = np.argsort(perm_c)
+    entry = sp.csc_matrix((np.arange(slots.nnz) + 1.0, slots.indices, slots.indptr), shape=(n, n))[nodes][:, nodes]
+    entry = entry.tocsc()
+    entry.sort_indices()
+    return _JfoPattern(
+        indptr=slots.indptr,
+        indices=slots.indices,
+        row=rows[order],
+        col=cols[order],
+        off=rows[order] != cols[order],
+        source=source[order],
+        order=nodes,
+        permuted_indptr=entry.indptr,
+        permuted_indices=entry.indices,
+        permuted_data=entry.data.astype(int) - 1,
+        downstream=downstream[order],
+    )
+
+
+@dataclass(eq=False)
+class JfoSolution(ReynoldsSolution):
+    """A converged JFO film that can linearise itself (solver state: never pickled).
+
+    Attributes
+    ----------
+    void : ndarray (nz, nt)
+        Void fraction ``s`` (0 in the full film and on fixed nodes).
+    fixed : ndarray of bool (nz, nt)
+        Nodes with prescribed pressure (rows of the identity in the Jacobian).
+    stencil : Stencil
+        The film's stencil, from which the Jacobian is rebuilt if its factor is gone.
+    """
+
+    void: np.ndarray
+    fixed: np.ndarray
+    stencil: Stencil
+    # Weak: the solver keeps one factor alive at a time (that of its newest solution), so a
+    # solution kept beside newer ones costs no memory; it refactorises if asked after them.
+    _factor: weakref.ref[_Factor] | None = field(default=None, repr=False)
+
+    def factor(self) -> _Factor:
+        """LU factor of the Jacobian ``dR/du`` on the converged set (rebuilt if released)."""
+        factor = None if self._factor is None else self._factor()
+        if factor is None:
+            factor = _factorise(self.stencil, self.cavitated, self.fixed, stencil_diagonal(self.stencil))
+            self._factor = weakref.ref(factor)
+            _FACTORS.append(factor)  # kept like the newest solver factor, until the next solve
+            del _FACTORS[:-1]
+        return factor
+
+    def unknown_response(self, residual_change: np.ndarray) -> np.ndarray:
+        """``du = -J^{-1} dR`` for residual changes ``dR`` of shape (k, nz, nt); ``u = P`` or ``-s``."""
+        shape = self.pressure.shape
+        columns = np.asarray(residual_change).reshape(-1, shape[0] * shape[1])
+        rhs = np.where(self.fixed.ravel()[None, :], 0.0, -columns)
+        return np.asarray(self.factor().solve(np.ascontiguousarray(rhs.T))).T.reshape((-1,) + shape)
+
+    def pressure_response(self, residual_change: np.ndarray) -> np.ndarray:
+        """Pressure changes ``dP`` (k, nz, nt) on the full-film nodes for residual changes ``dR``."""
+        full = ~(self.cavitated | self.fixed)
+        return np.where(full[None], self.unknown_response(residual_change), 0.0)
+
+
+def void_transport(couette_face: np.ndarray, void: np.ndarray) -> np.ndarray:
+    """Change of each cell's net outflow by the voids: ``-s_k q_k + s_w q_w`` (nz, nt).
+
+    With ``couette_face`` replaced by its derivative ``dq`` this is the void-fraction
+    term of the JFO residual's derivative for a film change at fixed ``s``.
+    """
+    flux = couette_face * void
+    return np.roll(flux, 1, axis=1) - flux
+
+
+def jfo_residual(stencil: Stencil, pressure: np.ndarray, void: np.ndarray, fixed: np.ndarray) -> np.ndarray:
+    """Mass balance of every cell, ``(A P)_k + q_k (1 - s_k) - q_w (1 - s_w) + squeeze_k`` (nz, nt).
+
+    Dimensionless net outflow of each control volume (0 on a solution; fixed nodes set to 0).
+    ``pressure`` holds the fixed values on the fixed nodes.
+    """
+    out = (
+        apply_operator(stencil.c_theta, stencil.c_z, pressure)
+        - stencil.rhs
+        + void_transport(stencil.couette_face, void)
+    )
+    return np.where(fixed, 0.0, out)
+
+
+def _jacobian_values(stencil: Stencil, cavitated: np.ndarray, fixed: np.ndarray, diag: np.ndarray) -> np.ndarray:
+    """``dR/du`` on the set ``cavitated``: values in the fixed CSC pattern of :func:`_jfo_pattern`."""
+    pattern = _jfo_pattern(*fixed.shape)
+    cav = cavitated.ravel()
+    held = fixed.ravel()
+    q = stencil.couette_face.ravel()
+    row, col, off = pattern.row, pattern.col, pattern.off
+    coefficients = np.concatenate([diag.ravel(), stencil.c_theta.ravel(), stencil.c_z.ravel()])
+    values = np.where(off, -1.0, 1.0) * coefficients[pattern.source]
+    # Fixed nodes: their rows are the identity (scaled) and their values move to the right-hand side.
+    values[off & (held[row] | held[col])] = 0.0
+    # Cavitated column k: s_k cuts the Couette outflow of cell k and the inflow of its east cell.
+    cav_col = cav[col]
+    on_diagonal = cav_col & ~off
+    values[on_diagonal] = q[col[on_diagonal]]
+    moved = cav_col & off
+    values[moved] = np.where(pattern.downstream[moved] & ~held[row[moved]], -q[col[moved]], 0.0)
+    return values
+
+
+def _jacobian(stencil: Stencil, cavitated: np.ndarray, fixed: np.ndarray, diag: np.ndarray) -> sp.csc_matrix:
+    """``dR/du`` on the set ``cavitated`` as a sparse matrix (for checks; the solver factorises it permuted)."""
+    pattern = _jfo_pattern(*fixed.shape)
+    n = fixed.size
+    values = _jacobian_values(stencil, cavitated, fixed, diag)
+    return sp.csc_matrix((values, pattern.indices, pattern.indptr), shape=(n, n))
+
+
+@dataclass(frozen=True, eq=False)
+class _Factor:
+    """LU factor of a Jacobian permuted by the pattern's fill-reducing ordering."""
+
+    lu: spla.SuperLU
+    order: np.ndarray
+
+    def solve(self, rhs: np.ndarray) -> np.ndarray:
+        """``J^{-1} rhs`` for ``rhs`` of shape (n,) or (n, k)."""
+        out = np.empty_like(rhs)
+        out[self.order] = self.lu.solve(np.ascontiguousarray(rhs[self.order]))
+        return out
+
+
+def _factorise(stencil: Stencil, cavitated: np.ndarray, fixed: np.ndarray, diag: np.ndarray) -> _Factor:
+    """LU of the Jacobian on ``cavitated``, with the ordering of the pattern computed once."""
+    pattern = _jfo_pattern(*fixed.shape)
+    n = fixed.size
+    values = _jacobian_values(stencil, cavitated, fixed, diag)
+    permuted = sp.csc_matrix(
+        (values[pattern.permuted_data], pattern.permuted_indices, pattern.permuted_indptr), shape=(n, n)
+    )
+    # The Jacobian is column diagonally dominant (A's columns, and transport columns q, -q), and
+    # stays so under a symmetric permutation: Gaussian elimination needs no row exchanges, so
+    # the factor has the fill of the symmetric ordering.
+    try:
+        lu = spla.splu(permuted, permc_spec="NATURAL", diag_pivot_thresh=0.1, options={"SymmetricMode": True})
+    except RuntimeError as exc:  # exactly singular: a whole circumferential line cavitated
+        raise ReynoldsConvergenceError(f"JFO Jacobian is singular ({exc})") from None
+    return _Factor(lu, pattern.order)
+
+
+#: Last solution of each solver in use and its factor, which predict the set of the next warm
+#: start; dropped when the next solve starts, so that one fine factor is alive at a time.
+_LAST: weakref.WeakKeyDictionary[ReynoldsSolver, tuple[JfoSolution, _Factor]] = weakref.WeakKeyDictionary()
+#: A factor rebuilt for an older solution (at most one).
+_FACTORS: list[_Factor] = []
+
+
+def _predicted_set(last: JfoSolution, factor: _Factor, stencil: Stencil) -> np.ndarray:
+    """Cavitated set after one chord step from the last solution to the new film.
+
+    ``u = u0 - J0^{-1} R(u0)`` with ``R`` the new film's residual and ``J0`` the last
+    Jacobian (one back-substitution): exact where the set does not change except for the
+    change of the Jacobian itself, so it moves the rupture and reformation boundaries of a
+    Newton step or a sweep in one go instead of a few cells per factorisation.
+    """
+    pressure = np.where(last.fixed, 0.0, last.pressure)
+    residual = jfo_residual(stencil, last.pressure, last.void, last.fixed).ravel()
+    step = factor.solve(np.where(last.fixed.ravel(), 0.0, -residual)).reshape(residual.shape)
+    unknown = np.where(last.cavitated, -last.void, pressure).ravel() + step
+    return (unknown.reshape(last.fixed.shape) < 0.0) & ~last.fixed
+
+
+def solve_jfo(
+    solver: ReynoldsSolver,
+    stencil: Stencil,
+    film: np.ndarray,
+    initial_cavitated: np.ndarray | None = None,
+    remember: bool = True,
+) -> JfoSolution:
+    """Mass-conserving cavitation by semi-smooth Newton on ``u`` (``P`` or ``-s`` per node).
+
+    Parameters
+    ----------
+    solver : ReynoldsSolver
+        Grid, fixed nodes and their pressures; its Reynolds-condition solution starts a cold solve.
+    stencil : Stencil
+        Conductances, Couette fluxes and right-hand side of the film.
+    film : ndarray (nz, nt)
+        Dimensionless film H = h / c.
+    initial_cavitated : ndarray of bool, optional
+        Cavitated set to start from (a previous JFO solution); without it the set of the
+        Reynolds (Swift-Stieber) solution.
+    remember : bool
+        Keep the solution as the predictor of the next warm start of ``solver`` (the
+        coarse grids of a cold start, never warm-started, do not).
+
+    Returns
+    -------
+    JfoSolution
+        Dimensionless pressure (fixed values on fixed nodes, 0 where cavitated), film fraction
+        ``1 - s`` (clipped to [0, 1]), cavitated set, iterations (factorisations, including
+        those of the Reynolds start) and the factor of the final Jacobian.
+    """
+    fixed = solver.fixed
+    iterations = 0
+    if initial_cavitated is None:
+        nested = _nested_start(solver, stencil, film)
+        if nested is None:
+            start = solver.solve(stencil, film, "reynolds")
+            cavitated = start.cavitated & ~fixed
+            iterations = start.iterations
+        else:
+            cavitated = nested
+    else:
+        cavitated = np.asarray(initial_cavitated, dtype=bool) & ~fixed
+        last = _LAST.get(solver)
+        if last is not None and np.array_equal(last[0].cavitated, cavitated):
+            cavitated = _predicted_set(last[0], last[1], stencil)
+    _LAST.pop(solver, None)
+    _FACTORS.clear()
+    diag = stencil_diagonal(stencil)
+    boundary = np.where(fixed, solver.fixed_pressure, 0.0)
+    rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
+    rhs = np.where(fixed, diag * solver.fixed_pressure, rhs).ravel()
+    factor: _Factor | None = None
     for _ in range(MAX_ACTIVE_SET_ITERATIONS):
-        held = solver.fixed | cavitated
-        values, diag = solver._masked_values(stencil, held)
-        matrix = sp.csc_matrix((values, upper.indices, upper.indptr), shape=(n, n))
-        strict = sp.triu(matrix, k=1)
-        symmetric = (matrix + strict.T).tocsr()
-        # Void-fraction columns of cavitated free nodes: a void s_k cuts the Couette outflow of
-        # cell k by s_k q_k and the inflow of the downstream cell by the same amount.
-        cav = np.flatnonzero(cavitated.ravel())
-        q = stencil.couette_face.ravel()[cav]
-        down = east[cav]
-        keep_down = ~solver.fixed.ravel()[down]
-        # Cavitated rows keep their coupling to pressurised neighbours: restore them.
-        rows_c, cols_c, vals_c = _rows_to_pressurised(stencil, cavitated, solver.fixed, solver.shape)
-        transport = sp.csr_matrix(
-            (
-                np.concatenate([-q, q[keep_down], vals_c]),
-                (np.concatenate([cav, down[keep_down], rows_c]), np.concatenate([cav, cav[keep_down], cols_c])),
-            ),
-            shape=(n, n),
-        )
-        # Cavitated rows: zero the symmetric (held) diagonal, the transport term replaces it.
-        row_scale = np.where(cavitated.ravel(), 0.0, 1.0)
-        system = (sp.diags(row_scale) @ symmetric + transport).tocsc()
-        boundary = np.where(solver.fixed, solver.fixed_pressure, 0.0)
-        rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
-        rhs = np.where(solver.fixed, diag.reshape(solver.shape) * solver.fixed_pressure, rhs)
-        unknown = spla.spsolve(system, rhs.ravel()).reshape(solver.shape)
+        factor = None  # free the last factor before the next is made: one factor at a time
+        factor = _factorise(stencil, cavitated, fixed, diag)
+        unknown = factor.solve(rhs).reshape(solver.shape)
         iterations += 1
         pressure = np.where(cavitated, 0.0, unknown)
-        void = np.where(cavitated, unknown, 0.0)
         scale = max(float(np.abs(pressure).max()), 1e-300)
-        enter = ~held & (pressure < -1e-12 * scale)
-        leave = cavitated & (void < -1e-12)
+        enter = ~(fixed | cavitated) & (unknown < -SWITCH_TOLERANCE * scale)
+        leave = cavitated & (unknown > SWITCH_TOLERANCE)
         if not enter.any() and not leave.any():
+            void = np.where(cavitated, -unknown, 0.0)
             fraction = np.clip(1.0 - void, 0.0, 1.0)
-            return ReynoldsSolution(pressure, fraction, cavitated, iterations)
+            solution = JfoSolution(pressure, fraction, cavitated, iterations, void, fixed, stencil, weakref.ref(factor))
+            if remember:
+                _LAST[solver] = (solution, factor)
+            return solution
         cavitated = (cavitated & ~leave) | enter
     raise ReynoldsConvergenceError("JFO active set did not settle")
 
 
-def _rows_to_pressurised(
-    stencil: Stencil, cavitated: np.ndarray, fixed: np.ndarray, shape: tuple[int, int]
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Entries ``-c`` coupling cavitated rows to their pressurised free neighbours."""
-    nz, nt = shape
-    node = np.arange(nz * nt).reshape(nz, nt)
-    pressurised = ~(cavitated | fixed)
-    rows, cols, vals = [], [], []
-    pairs = (
-        (node, np.roll(node, -1, axis=1), stencil.c_theta),
-        (np.roll(node, -1, axis=1), node, stencil.c_theta),
-        (node[:-1], node[1:], stencil.c_z),
-        (node[1:], node[:-1], stencil.c_z),
-    )
-    flat_cav = cavitated.ravel()
-    flat_p = pressurised.ravel()
-    for a, b, coef in pairs:
-        a, b, coef = a.ravel(), b.ravel(), coef.ravel()
-        pick = flat_cav[a] & flat_p[b]
-        rows.append(a[pick])
-        cols.append(b[pick])
-        vals.append(-coef[pick])
-    return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
+@dataclass(frozen=True, eq=False)
+class _Coarse:
+    """The grid halved in both directions under a solver's grid, and the maps between them."""
+
+    solver: ReynoldsSolver
+    z_index: np.ndarray  # fine row below each coarse row
+    z_weight: np.ndarray  # and the weight of the row above
+    row_lo: np.ndarray  # coarse rows around each fine row
+    row_hi: np.ndarray
+    row_w: np.ndarray
+    col_lo: np.ndarray  # coarse columns around each fine column
+    col_hi: np.ndarray
+
+
+#: Coarse grids of the solvers in use (solver state of one process, never pickled).
+_COARSE: weakref.WeakKeyDictionary[ReynoldsSolver, _Coarse | None] = weakref.WeakKeyDictionary()
+
+
+def _coarse(solver: ReynoldsSolver) -> _Coarse | None:
+    """The coarse grid of ``solver``: every other column, rows interpolated, edges and grooves kept."""
+    if solver in _COARSE:
+        return _COARSE[solver]
+    nz, nt = solver.shape
+    halved = coarse_shape(solver.shape)
+    coarse = None
+    if halved is not None:
+        nz_c, nt_c = halved
+        z_coarse = np.linspace(0.0, 1.0, nz_c)
+        position = z_coarse * (nz - 1)
+        z_index = np.minimum(np.floor(position).astype(int), nz - 2)
+        fine_in_coarse = np.linspace(0.0, 1.0, nz) * (nz_c - 1)
+        row_lo = np.minimum(np.floor(fine_in_coarse).astype(int), nz_c - 2)
+        rows = np.rint(position).astype(int)
+        fixed_c = solver.fixed[rows][:, ::2].copy()
+        value_c = solver.fixed_pressure[rows][:, ::2].copy()
+        fixed_c[[0, -1]] = True
+        coarse = _Coarse(
+            solver=ReynoldsSolver(
+                (nz_c, nt_c), 2.0 * solver.d_theta, solver.d_z * (nz - 1) / (nz_c - 1), fixed_c, value_c
+            ),
+            z_index=z_index,
+            z_weight=position - z_index,
+            row_lo=row_lo,
+            row_hi=row_lo + 1,
+            row_w=fine_in_coarse - row_lo,
+            col_lo=(np.arange(nt) // 2) % nt_c,
+            col_hi=((np.arange(nt) + 1) // 2) % nt_c,
+        )
+    _COARSE[solver] = coarse
+    return coarse
+
+
+def _nested_start(solver: ReynoldsSolver, stencil: Stencil, film: np.ndarray) -> np.ndarray | None:
+    """Cavitated set predicted by the JFO solution of the same film on the grid halved each way.
+
+    The coarse unknown ``u`` (``P`` in the full film, ``-s`` where cavitated) changes sign on
+    both the rupture and the reformation boundary; interpolated bilinearly onto the fine
+    grid it places them to within a fraction of a coarse cell. Recursive down to the
+    coarsest grid, which starts from the Reynolds condition.
+    """
+    coarse = _coarse(solver)
+    if coarse is None:
+        return None
+    d_theta, d_z = solver.d_theta, solver.d_z
+    # The squeeze part of the right-hand side, (2/omega) dH/dt per cell, restricted with the film.
+    rate = (np.roll(stencil.couette_face, 1, axis=1) - stencil.couette_face - stencil.rhs) / (d_theta * d_z)
+
+    def restrict(field: np.ndarray) -> np.ndarray:
+        w = coarse.z_weight[:, None]
+        return (field[coarse.z_index] * (1.0 - w) + field[coarse.z_index + 1] * w)[:, ::2]
+
+    film_c = restrict(film)
+    rate_c = restrict(rate) if np.any(rate) else None
+    solver_c = coarse.solver
+    stencil_c = build_stencil(film_c, solver_c.d_theta, solver_c.d_z, rate_c)
+    solution = solve_jfo(solver_c, stencil_c, film_c, remember=False)
+    indicator = np.where(solution.cavitated, -solution.void, solution.pressure)
+    indicator = np.where(solver_c.fixed, 0.0, indicator)
+    col_w = 0.5 * (np.arange(solver.shape[1]) % 2)
+    row_w = coarse.row_w[:, None]
+    lo = indicator[coarse.row_lo] * (1.0 - row_w) + indicator[coarse.row_hi] * row_w
+    fine = lo[:, coarse.col_lo] * (1.0 - col_w)[None, :] + lo[:, coarse.col_hi] * col_w[None, :]
+    return (fine < 0.0) & ~solver.fixed

@@ -289,14 +289,15 @@ class ReynoldsSolver:
             pressure = np.maximum(self.solve_linear(stencil), 0.0)
             cavitated = (pressure <= 0.0) & ~self.fixed
             return ReynoldsSolution(pressure, _marched_film_fraction(film, cavitated), cavitated, 1)
+        if cavitation == "jfo":
+            # Warm-started from the previous JFO set; cold from this solver's Reynolds solution.
+            from shaftline.film.jfo import solve_jfo
+
+            return solve_jfo(self, stencil, film, initial_cavitated)
         reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film)
         if cavitation == "reynolds":
             reynolds.film_fraction = _marched_film_fraction(film, reynolds.cavitated)
             return reynolds
-        if cavitation == "jfo":
-            from shaftline.film.jfo import solve_jfo
-
-            return solve_jfo(self, stencil, film, reynolds)
         raise ValueError(f"unknown cavitation model {cavitation!r}")
 
     def _coarse(self) -> tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple[np.ndarray, ...]] | None:
