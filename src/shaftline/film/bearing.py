@@ -206,8 +206,10 @@ class FilmLinearisation:
     The derivatives are those of the discrete film force with the cavitated set
     frozen at that of the solution at ``position``: exact for the Reynolds
     (Swift-Stieber) condition, where ``p = dp/dn = 0`` on the free boundary so that
-    moving the boundary changes the force only to second order; an approximation
-    for the ``"jfo"`` model (reformation) and for ``"half_sommerfeld"`` (whose
+    moving the boundary changes the force only to second order; for the ``"jfo"``
+    model they are those of the JFO system with its void-fraction transport (exact
+    for the discrete film, docs/theory.md Eq. C4); an approximation for
+    ``"half_sommerfeld"`` (whose
     clipped pressure changes with the full-film linear solution, which this
     holds at zero on the clipped nodes).
 
