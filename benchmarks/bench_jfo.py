@@ -67,6 +67,23 @@ def pairwise(nz: int, nt: int, repeat: int) -> None:
     print(f"  ratio JFO / Reynolds           : {statistics.median(ratios):8.2f} median of pairs (target <= 3)")
     print("  JFO residual |F + W| / |W| per Newton iteration: " + ", ".join(f"{r:.1e}" for r in history))
     print(f"  eps = {eq.state.eccentricity_ratio:.4f}, p_max = {eq.state.max_pressure / 1e6:.3f} MPa")
+    # One film solution at a position near the equilibrium: cold (nested coarse-grid start) and
+    # warm (from the solution at the equilibrium, through the set predictor).
+    here = eq.state.position
+    near = replace(here, ey=here.ey + 0.01 * jfo.geometry.radial_clearance)
+    cold, warm = [], []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        jfo.solve_at(near, warm_start=False)
+        cold.append(time.perf_counter() - start)
+        jfo.solve_at(here, warm_start=False)  # the solution the warm start starts from
+        start = time.perf_counter()
+        jfo.solve_at(near, warm_start=True)
+        warm.append(time.perf_counter() - start)
+    print(
+        f"  JFO film solution at a position : cold {statistics.median(cold) * 1e3:.1f} ms, "
+        f"warm from 0.01 c away {statistics.median(warm) * 1e3:.1f} ms (medians)"
+    )
 
 
 def large() -> None:
