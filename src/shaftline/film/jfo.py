@@ -245,8 +245,10 @@ def _factorise_values(values: np.ndarray, shape: tuple[int, int]) -> _Factor:
 #: Nodes per switched node that a low-rank (Woodbury) update of the last factor may serve
 #: instead of a new factorisation: each switched node costs one back-substitution, which
 #: pays on fine grids only (measured on the NTUA case: 400 x 240 equilibrium 16.7 s -> 10.6 s
-#: with 24 columns; no gain on 100 x 60), so the rank allowed grows with the grid.
+#: with 24 columns; no gain on 100 x 60), so the rank allowed grows with the grid ...
 NODES_PER_UPDATE_COLUMN = 4000
+#: ... and at most this many, as the update holds two dense (nodes x rank) arrays.
+MAX_UPDATE_RANK = 16
 
 
 @dataclass(frozen=True, eq=False)
@@ -278,7 +280,7 @@ class _SetJacobians:
     def __init__(self, stencil: Stencil, fixed: np.ndarray, diag: np.ndarray) -> None:
         self.stencil, self.fixed, self.diag = stencil, fixed, diag
         self.pattern = _jfo_pattern(*fixed.shape)
-        self.max_rank = fixed.size // NODES_PER_UPDATE_COLUMN
+        self.max_rank = min(fixed.size // NODES_PER_UPDATE_COLUMN, MAX_UPDATE_RANK)
         self.base: _Factor | None = None
         self.base_set = np.zeros(fixed.shape, bool)
         self.base_values = np.zeros(0)
@@ -388,7 +390,9 @@ def solve_jfo(
     rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
     rhs = np.where(fixed, diag * solver.fixed_pressure, rhs).ravel()
     jacobians = _SetJacobians(stencil, fixed, diag)
+    factor: _Factor | _UpdatedFactor | None = None
     for _ in range(MAX_ACTIVE_SET_ITERATIONS):
+        factor = None  # drop the last (updated) factor: a new factorisation frees the old one
         factor = jacobians.factor(cavitated)
         unknown = factor.solve(rhs).reshape(solver.shape)
         iterations += 1
