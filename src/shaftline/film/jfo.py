@@ -349,14 +349,16 @@ def solve_jfo(
     Parameters
     ----------
     solver : ReynoldsSolver
-        Grid, fixed nodes and their pressures; its Reynolds-condition solution starts a cold solve.
+        Grid, fixed nodes and their pressures.
     stencil : Stencil
         Conductances, Couette fluxes and right-hand side of the film.
     film : ndarray (nz, nt)
         Dimensionless film H = h / c.
     initial_cavitated : ndarray of bool, optional
-        Cavitated set to start from (a previous JFO solution); without it the set of the
-        Reynolds (Swift-Stieber) solution.
+        Cavitated set of a previous JFO solution of ``solver`` to start from (through the
+        chord-step predictor when it is the set of the last solution); without it the set
+        predicted by the JFO solution on the grid halved each way, or on a grid too small
+        to halve the set of the Reynolds (Swift-Stieber) solution.
     remember : bool
         Keep the solution as the predictor of the next warm start of ``solver`` (the
         coarse grids of a cold start, never warm-started, do not).
@@ -365,8 +367,8 @@ def solve_jfo(
     -------
     JfoSolution
         Dimensionless pressure (fixed values on fixed nodes, 0 where cavitated), film fraction
-        ``1 - s`` (clipped to [0, 1]), cavitated set, iterations (factorisations, including
-        those of the Reynolds start) and the factor of the final Jacobian.
+        ``1 - s`` (clipped to [0, 1]), cavitated set, active-set iterations on this grid
+        (plus those of a Reynolds start) and the means to linearise it.
     """
     fixed = solver.fixed
     iterations = 0
