@@ -5,7 +5,8 @@ centre offsets and ``q'`` their velocities, in the shaft axes (y up, z
 starboard). They come from the Reynolds equation linearised about the solution
 with the cavitation boundary frozen, using the factorisation of the converged
 active set (exact to first order for the Swift-Stieber condition, where
-``p = dp/dn = 0`` on the boundary; an approximation for JFO reformation).
+``p = dp/dn = 0`` on the boundary); for the JFO model, from the JFO system
+linearised with its void-fraction transport (docs/theory.md, Eq. C4).
 """
 
 from __future__ import annotations
