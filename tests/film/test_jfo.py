@@ -138,27 +138,6 @@ def test_jfo_equals_the_reynolds_condition_where_nothing_reforms():
     assert np.abs(solution.pressure - reynolds.pressure).max() <= 1e-10 * reynolds.pressure.max()
 
 
-def test_low_rank_updates_give_the_refactorised_solution(monkeypatch):
-    """On fine grids a few switched nodes are served by a Woodbury update of the last factor
-    instead of a new one. Forced on this small grid (18 columns), it must reach the same set,
-    pressures to 1e-10 of the peak and stiffness to 1e-8 (round-off of the update)."""
-    import shaftline.film.jfo as jfo
-
-    position = JournalPosition.from_polar(0.7 * CLEARANCE, np.pi)
-    results = []
-    for nodes_per_column in (10**9, 200):
-        monkeypatch.setattr(jfo, "NODES_PER_UPDATE_COLUMN", nodes_per_column)
-        bearing = make_bearing(
-            1.0, cavitation_pressure=-2e4, axial_nodes=31, circumferential_nodes=120, cavitation="jfo"
-        )
-        evaluation = bearing._evaluate(position, warm=False)
-        results.append((evaluation.solution, bearing.linearise(position).offset_derivative))
-    (plain, k_plain), (updated, k_updated) = results
-    assert np.array_equal(plain.cavitated, updated.cavitated)
-    assert np.abs(plain.pressure - updated.pressure).max() <= 1e-10 * plain.pressure.max()
-    assert np.abs(k_plain - k_updated).max() <= 1e-8 * np.abs(k_plain).max()
-
-
 def test_assembled_jacobian_is_the_residual_on_its_set(jfo_bearing):
     """The sparse Jacobian of a set applied to any u of that set's signs (u < 0 exactly on the
     cavitated nodes) reproduces the residual (C2) of P = u+, s = u- computed cell by cell from

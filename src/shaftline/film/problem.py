@@ -89,10 +89,8 @@ _FACTOR_BYTES = 22.0
 #: system assembled with scipy.sparse each active-set iteration ...
 _JFO_DENSE_BYTES = 400.0
 #: ... and its SuperLU factors (about 1.75 times the nonzeros of the LDL^T factor), per
-#: nonzero of the LDL^T factor of the fine grid. 48 since the solver of issue 10 (one reused
-#: ordering, SuperLU's workspace for it, the set predictor and Woodbury columns): peaks
-#: measured at 0.90, 1.06 and 0.86 of the estimate on 81 x 120, 161 x 240 and 321 x 240 nodes.
-_JFO_FACTOR_BYTES = 48.0
+#: nonzero of the LDL^T factor of the fine grid.
+_JFO_FACTOR_BYTES = 28.0
 #: Default grid of SolverOptions (the refusal names the node count furthest above it).
 _DEFAULT_AXIAL_NODES = 41
 _DEFAULT_CIRCUMFERENTIAL_NODES = 120
