@@ -28,6 +28,7 @@ from __future__ import annotations
 import weakref
 from dataclasses import dataclass, field
 from functools import lru_cache
+from typing import Generic, TypeVar
 
 import numpy as np
 import scipy.sparse as sp
@@ -51,6 +52,40 @@ __all__ = ["JfoSolution", "jfo_residual", "solve_jfo", "void_transport"]
 #: is below ``-SWITCH_TOLERANCE * max|P|`` and leaves it when its void fraction is below
 #: ``-SWITCH_TOLERANCE`` (round-off of the linear solve, not a modelling tolerance).
 SWITCH_TOLERANCE = 1e-12
+
+_T = TypeVar("_T")
+
+
+class _PerSolver(Generic[_T]):
+    """Values attached to live solvers: solver state of one process, never pickled.
+
+    Keyed by identity and dropped when the solver is collected, so that a solver needs to be
+    neither hashable nor to carry attributes of this module.
+    """
+
+    def __init__(self) -> None:
+        self._values: dict[int, _T] = {}
+        self._watched: set[int] = set()
+
+    def has(self, solver: ReynoldsSolver) -> bool:
+        return id(solver) in self._values
+
+    def get(self, solver: ReynoldsSolver) -> _T | None:
+        return self._values.get(id(solver))
+
+    def set(self, solver: ReynoldsSolver, value: _T) -> None:
+        key = id(solver)
+        if key not in self._watched:
+            self._watched.add(key)
+            weakref.finalize(solver, self._forget, key)
+        self._values[key] = value
+
+    def pop(self, solver: ReynoldsSolver) -> None:
+        self._values.pop(id(solver), None)
+
+    def _forget(self, key: int) -> None:
+        self._values.pop(key, None)
+        self._watched.discard(key)
 
 
 @dataclass(frozen=True, eq=False)
@@ -232,7 +267,7 @@ def _factorise_values(values: np.ndarray, shape: tuple[int, int]) -> _Factor:
 
 #: Last solution of each solver in use and its factor, which predict the set of the next warm
 #: start; dropped when the next solve starts, so that one fine factor is alive at a time.
-_LAST: weakref.WeakKeyDictionary[ReynoldsSolver, tuple[JfoSolution, _Factor]] = weakref.WeakKeyDictionary()
+_LAST: _PerSolver[tuple[JfoSolution, _Factor]] = _PerSolver()
 #: A factor rebuilt for an older solution (at most one).
 _FACTORS: list[_Factor] = []
 
@@ -300,7 +335,7 @@ def solve_jfo(
         last = _LAST.get(solver)
         if last is not None and np.array_equal(last[0].cavitated, cavitated):
             cavitated = _predicted_set(last[0], last[1], stencil)
-    _LAST.pop(solver, None)
+    _LAST.pop(solver)
     _FACTORS.clear()
     diag = stencil_diagonal(stencil)
     boundary = np.where(fixed, solver.fixed_pressure, 0.0)
@@ -321,7 +356,7 @@ def solve_jfo(
             fraction = np.clip(1.0 - void, 0.0, 1.0)
             solution = JfoSolution(pressure, fraction, cavitated, iterations, void, fixed, stencil, weakref.ref(factor))
             if remember:
-                _LAST[solver] = (solution, factor)
+                _LAST.set(solver, (solution, factor))
             return solution
         cavitated = (cavitated & ~leave) | enter
     raise ReynoldsConvergenceError("JFO active set did not settle")
@@ -342,13 +377,13 @@ class _Coarse:
 
 
 #: Coarse grids of the solvers in use (solver state of one process, never pickled).
-_COARSE: weakref.WeakKeyDictionary[ReynoldsSolver, _Coarse | None] = weakref.WeakKeyDictionary()
+_COARSE: _PerSolver[_Coarse | None] = _PerSolver()
 
 
 def _coarse(solver: ReynoldsSolver) -> _Coarse | None:
     """The coarse grid of ``solver``: every other column, rows interpolated, edges and grooves kept."""
-    if solver in _COARSE:
-        return _COARSE[solver]
+    if _COARSE.has(solver):
+        return _COARSE.get(solver)
     nz, nt = solver.shape
     halved = coarse_shape(solver.shape)
     coarse = None
@@ -375,7 +410,7 @@ def _coarse(solver: ReynoldsSolver) -> _Coarse | None:
             col_lo=(np.arange(nt) // 2) % nt_c,
             col_hi=((np.arange(nt) + 1) // 2) % nt_c,
         )
-    _COARSE[solver] = coarse
+    _COARSE.set(solver, coarse)
     return coarse
 
 
