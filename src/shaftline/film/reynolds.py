@@ -290,7 +290,7 @@ class ReynoldsSolver:
             cavitated = (pressure <= 0.0) & ~self.fixed
             return ReynoldsSolution(pressure, _marched_film_fraction(film, cavitated), cavitated, 1)
         if cavitation == "jfo":
-            # Warm-started from the previous JFO set; cold from this solver's Reynolds solution.
+            # Warm-started from the previous JFO set; cold from the JFO solution on coarser grids.
             from shaftline.film.jfo import solve_jfo
 
             return solve_jfo(self, stencil, film, initial_cavitated)
