@@ -36,10 +36,11 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from shaftline.film import study
+from shaftline.film.analytic import eccentricity_guess
 from shaftline.film.bearing import JournalBearing
 from shaftline.film.geometry import JournalPosition
 from shaftline.film.problem import BearingProblem
-from shaftline.film import study
 from shaftline.film.study import BearingCase, BearingResult
 
 __all__ = ["DEFAULT_CHUNK_SIZE", "sweep"]
@@ -75,11 +76,35 @@ def _parameters(cases: Sequence[BearingCase], problem: BearingProblem) -> np.nda
     return np.hstack([loads / load_scale, tilts / tilt_scale])
 
 
+def _analytic_offsets(problem: BearingProblem, load_y: float, load_z: float) -> np.ndarray:
+    """Journal offsets (ey, ez) from the bore centre that carry the load by the closed-form
+    finite-bearing estimate (:func:`shaftline.film.analytic.eccentricity_guess`, the cold start
+    of :meth:`JournalBearing.equilibrium`), m. Smooth in the load; NaN for no load."""
+    g, op = problem.geometry, problem.operating
+    magnitude = math.hypot(load_y, load_z)
+    if not magnitude or not math.isfinite(magnitude):
+        return np.full(2, np.nan)
+    sommerfeld = (
+        (g.radius / g.radial_clearance) ** 2
+        * op.viscosity
+        * (op.speed / (2 * math.pi))
+        / (magnitude / (g.length * g.diameter))
+    )
+    epsilon, attitude = eccentricity_guess(sommerfeld, g.length / g.diameter)
+    load_angle = math.atan2(g.rotation * load_z, load_y)
+    local = JournalPosition.from_polar(epsilon * g.radial_clearance, load_angle + attitude, g.rotation)
+    return np.array([local.ey, local.ez], dtype=float)
+
+
 def _predict(
     parameters: np.ndarray, new: int, solved: list[int], positions: dict[int, np.ndarray], parents: dict[int, int]
 ) -> tuple[int, np.ndarray] | None:
     """Start of case ``new``: nearest usable solved case and its position extrapolated along
-    the line of that case's own warm-start ancestors where they lie on the line to ``new``."""
+    the line of that case's own warm-start ancestors where they lie on the line to ``new``.
+
+    ``positions`` hold what is extrapolated: the solved offsets less their closed-form
+    estimate, which carries most of the change with the load, so that the remainder is
+    smooth and small (the closed form is then added back by the caller)."""
     usable = [k for k in solved if k in positions]
     if not usable:
         return None
@@ -112,6 +137,7 @@ def _solve_chunk(chunk: _Chunk, progress: Callable[[str], None] | None = None) -
     solved neighbour (run in a worker process, or here for the serial backend)."""
     bearing = JournalBearing.from_problem(chunk.problem)
     parameters = _parameters(chunk.cases, chunk.problem)
+    analytic = [_analytic_offsets(chunk.problem, case.load_y, case.load_z) for case in chunk.cases]
     positions: dict[int, np.ndarray] = {}
     parents: dict[int, int] = {}
     results: list[BearingResult] = []
@@ -122,7 +148,7 @@ def _solve_chunk(chunk: _Chunk, progress: Callable[[str], None] | None = None) -
         initial = None
         if guess is not None:
             parents[index] = guess[0]
-            ey, ez = (float(v) for v in guess[1])
+            ey, ez = (float(v) for v in guess[1] + analytic[index])
             initial = JournalPosition(ey=ey, ez=ez, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
         # Through the module, so that the one per-case path is the one a test replaces.
         result = study.solve_case(case, progress, bearing=bearing, initial=initial, coefficients=chunk.coefficients)
@@ -133,7 +159,9 @@ def _solve_chunk(chunk: _Chunk, progress: Callable[[str], None] | None = None) -
         equilibrium = result.equilibrium
         if equilibrium.converged and not equilibrium.contact:
             position = equilibrium.state.position
-            positions[index] = np.array([position.ey, position.ez], dtype=float)
+            offsets = np.array([position.ey, position.ez], dtype=float) - analytic[index]
+            if np.all(np.isfinite(offsets)):
+                positions[index] = offsets
         results.append(result)
     return results
 
