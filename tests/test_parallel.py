@@ -91,6 +91,12 @@ def test_bad_choices_are_one_line_input_errors():
     assert parallel.map(abs, [], workers=2) == []
 
 
+def test_a_scheduler_that_does_not_answer_is_an_input_error(monkeypatch):
+    monkeypatch.setattr(parallel, "_CONNECT_TIMEOUT", 1.0)
+    with pytest.raises(InputError, match=r"^scheduler = 'tcp://127.0.0.1:9': allowed the address of a running Dask"):
+        parallel.map(abs, [1, 2], scheduler="tcp://127.0.0.1:9")
+
+
 def _descendants(pid: int) -> list[psutil.Process]:
     try:
         return psutil.Process(pid).children(recursive=True)

@@ -45,6 +45,8 @@ __all__ = ["BACKENDS", "Backend", "available_workers", "map"]
 T = TypeVar("T")
 R = TypeVar("R")
 
+#: Seconds to wait for a Dask scheduler to answer before the address is called wrong.
+_CONNECT_TIMEOUT = 10.0
 #: ``progress(done, total)``: told, in the calling process, how many items are finished.
 ProgressCallback = Callable[[int, int], None]
 #: A backend: ``(function, batches, workers, scheduler, on_batch)`` -> one result list per
@@ -169,7 +171,14 @@ def _dask(
             processes=True,
             dashboard_address=None,
         )
-    client = Client(cluster if cluster is not None else scheduler)
+    try:
+        client = Client(cluster if cluster is not None else scheduler, timeout=_CONNECT_TIMEOUT)
+    except OSError as error:
+        if cluster is not None:
+            cluster.close()
+        raise InputError(
+            "scheduler", scheduler, "", f"the address of a running Dask scheduler (no answer: {error})"
+        ) from None
     futures: list[Any] = []
     try:
         futures = [client.submit(_run_batch, function, batch, pure=False) for batch in batches]
