@@ -161,7 +161,7 @@ def test_progress_names_cases_here_and_counts_them_from_a_pool():
     assert any("Newton iteration 1, force residual" in t for t in told)
     counted: list[str] = []
     sweep(given, workers=2, chunk_size=1, progress=counted.append)
-    assert counted[-1] == "4 of 4 cases solved" and len(counted) == 4
+    assert counted[-1] == "bearing cases, 4 of 4 done" and len(counted) == 4
 
 
 def test_the_command_line_runs_variants_on_a_pool_a_cluster_or_here(tmp_path, scheduler):

@@ -265,8 +265,8 @@ def sweep(
 
     def told(finished: int, total: int) -> None:
         if progress is not None:
-            what = "cases" if single else f"chunks of the {len(cases)} cases"
-            progress(f"{finished} of {total} {what} solved")
+            what = "bearing cases" if single else f"chunks of {len(cases)} bearing cases"
+            progress(f"{what}, {finished} of {total} done")
 
     solved = parallel.map(
         function,
