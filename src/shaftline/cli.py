@@ -17,7 +17,18 @@ import typer
 
 import shaftline
 from shaftline import registry
-from shaftline.commandline import CaseArgument, JsonOption, OutOption, StrictOption, compare_cases, run_cases
+from shaftline.commandline import (
+    CaseArgument,
+    JsonOption,
+    OutOption,
+    SchedulerOption,
+    StrictOption,
+    WorkersOption,
+    compare_cases,
+    input_errors,
+    parallel_options,
+    run_cases,
+)
 from shaftline.registry import Capability, Verb
 
 
@@ -40,9 +51,13 @@ def run(
     out: Annotated[Path | None, typer.Option("--out", help="Output folder (default results/<case file name>).")] = None,
     json_path: JsonOption = None,
     strict: StrictOption = False,
+    workers: WorkersOption = None,
+    scheduler: SchedulerOption = None,
 ) -> None:
     """The main job: every analysis the case file asks for, with the HTML report."""
-    run_cases(case_file, json_path, out or Path("results") / case_file.stem, strict=strict)
+    with input_errors():
+        options = parallel_options(list(registry.capabilities()), workers, scheduler)
+    run_cases(case_file, json_path, out or Path("results") / case_file.stem, options=options, strict=strict)
 
 
 def schema(
@@ -59,6 +74,22 @@ def schema(
 def _case_verb(capability: Capability[Any, Any, Any], verb: Verb) -> Callable[..., None]:
     key = capability.key
     options = {key: dict(verb.options)}
+    if not verb.many and capability.parallel:
+
+        def spread(
+            case_file: CaseArgument,
+            json_path: JsonOption = None,
+            out: OutOption = None,
+            strict: StrictOption = False,
+            workers: WorkersOption = None,
+            scheduler: SchedulerOption = None,
+        ) -> None:
+            with input_errors():
+                where = parallel_options([key], workers, scheduler)[key]
+            run_cases(case_file, json_path, out, only=[key], options={key: {**options[key], **where}}, strict=strict)
+
+        spread.__doc__ = verb.help
+        return spread
     if not verb.many:
 
         def one(

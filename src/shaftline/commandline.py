@@ -33,6 +33,21 @@ StrictOption = Annotated[
     ),
 ]
 
+WorkersOption = Annotated[
+    int | None,
+    typer.Option(
+        "--workers",
+        help="Worker processes for the analyses that spread their cases (default: one per core; 1: none).",
+    ),
+]
+SchedulerOption = Annotated[
+    str | None,
+    typer.Option(
+        "--scheduler",
+        help="Address of a Dask scheduler (tcp://HOST:8786) to run on instead of this machine's cores.",
+    ),
+]
+
 #: Exit status of a run that was solved but whose result is not acceptable.
 NOT_ACCEPTABLE = 3
 
@@ -67,6 +82,28 @@ def interruptible() -> Iterator[None]:
     except SolverFailure as failure:
         error_console.print(f"not solved: {failure}; nothing was written", markup=False, highlight=False)
         raise typer.Exit(code=NOT_ACCEPTABLE) from None
+
+
+def parallel_options(keys: Sequence[str], workers: int | None, scheduler: str | None) -> dict[str, dict[str, Any]]:
+    """The ``--workers`` and ``--scheduler`` of a verb as ``solve`` options of the capabilities
+    ``keys`` that spread their work (:attr:`~shaftline.registry.Capability.parallel`); raises
+    :class:`InputError` for a value that cannot work, before anything is read."""
+    from shaftline.registry import capabilities
+
+    if workers is not None and workers < 1:
+        raise InputError("--workers", workers, "", "an integer >= 1")
+    if scheduler is not None:
+        if workers is not None:
+            raise InputError("--workers", workers, "", "no --workers with --scheduler (the cluster has its workers)")
+        from importlib.util import find_spec
+
+        if find_spec("distributed") is None:
+            raise InputError(
+                "--scheduler", scheduler, "", "a machine with dask.distributed (pip install 'shaftline[parallel]')"
+            )
+    given = {name: value for name, value in (("workers", workers), ("scheduler", scheduler)) if value is not None}
+    registry = capabilities()
+    return {key: dict(given) for key in keys if key in registry and registry[key].parallel}
 
 
 def check_outputs(out: Path | None, json_path: str | None, inputs: Sequence[Path]) -> None:

@@ -56,6 +56,11 @@ class InputError(ValueError):
             message += f": allowed {allowed}"
         super().__init__(message)
 
+    def __reduce__(self) -> tuple[type[InputError], tuple[str, Any, str, str, bool]]:
+        # Pickle by the constructor's arguments, not the message (the default): an error
+        # raised in a worker process (shaftline.parallel) must reach the caller as itself.
+        return type(self), (self.field, self.value, self.unit, self.allowed, self.in_file)
+
     def within(self, prefix: str, renames: Mapping[str, str] | None = None) -> InputError:
         """The same error with its field placed under ``prefix``.
 

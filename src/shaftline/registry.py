@@ -150,12 +150,17 @@ class Capability(Generic[SectionT, StudyT, ResultT]):
     moved_tables : mapping
         Top-level tables of an older case-file layout and where they live now, so that an
         old file gets a message saying where to move them.
+    parallel : bool
+        :meth:`solve` spreads its work with :func:`shaftline.parallel.map` and takes its
+        ``workers`` and ``scheduler`` keyword options (the command line's ``--workers`` and
+        ``--scheduler`` reach it, on ``run`` and on the capability's own verbs).
     """
 
     key: ClassVar[str]
     title: ClassVar[str]
     verbs: ClassVar[tuple[Verb, ...]] = ()
     moved_tables: ClassVar[Mapping[str, str]] = {}
+    parallel: ClassVar[bool] = False
 
     def schema(self) -> type[SectionT]:
         """The pydantic model of the case-file table (imported when first asked for, so

@@ -32,6 +32,7 @@ if TYPE_CHECKING:
         SolverOptions,
         SupplyGroove,
     )
+    from shaftline.film.sweeps import sweep
 
 #: Public name -> module that defines it.
 _WHERE = {
@@ -55,6 +56,7 @@ _WHERE = {
     "JournalBearing": "bearing",
     "DynamicCoefficients": "dynamics",
     "dynamic_coefficients": "dynamics",
+    "sweep": "sweeps",
 }
 
 __all__ = [
@@ -78,6 +80,7 @@ __all__ = [
     "SupplyGroove",
     "dynamic_coefficients",
     "film_thickness",
+    "sweep",
 ]
 
 

@@ -47,6 +47,7 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
     key = "bearing"
     title = "Stern-tube bearing film"
     verbs = (Verb(("bearing", "solve"), "Solve the bearing film at equilibrium under the case load."),)
+    parallel = True
     moved_tables = {
         "operation": "bearing.operation",
         "lubricant": "bearing.lubricant",
@@ -65,9 +66,15 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
         return build_study(section, context)
 
     def solve(self, study: BearingStudy, progress: Progress = no_progress, **options: Any) -> BearingStudyResult:
+        """The cases with :func:`shaftline.film.sweep` (``workers``, ``scheduler``: where)."""
         from shaftline.film.study import solve_study
 
-        return solve_study(study, lambda name: progress(f"solving {name}"))
+        return solve_study(
+            study,
+            lambda name: progress(f"solving {name}"),
+            workers=options.get("workers"),
+            scheduler=options.get("scheduler"),
+        )
 
     def to_json(self, result: BearingStudyResult) -> dict[str, Any]:
         from shaftline.film.summary import EXTRA_UNITS, equilibrium_summary, units

@@ -17,8 +17,9 @@ from shaftline.film.geometry import BearingGeometry
 from shaftline.film.problem import OperatingPoint, SolverOptions
 
 if TYPE_CHECKING:
-    from shaftline.film.bearing import Equilibrium
+    from shaftline.film.bearing import Equilibrium, JournalBearing
     from shaftline.film.dynamics import DynamicCoefficients
+    from shaftline.film.geometry import JournalPosition
     from shaftline.lubricants import Lubricant
 
 
@@ -89,12 +90,24 @@ class BearingStudyResult:
     cases: tuple[BearingResult, ...]
 
 
-def solve_case(case: BearingCase, progress: Callable[[str], None] | None = None) -> BearingResult:
+def solve_case(
+    case: BearingCase,
+    progress: Callable[[str], None] | None = None,
+    bearing: JournalBearing | None = None,
+    initial: JournalPosition | None = None,
+    coefficients: bool = True,
+) -> BearingResult:
     """Equilibrium under the case load, then stiffness and damping there (not at contact).
 
     ``progress``, when given, is told each Newton iteration of the equilibrium
     (``"base: Newton iteration 3, force residual 2.1e-04 of the load"``) and the start of the
     stiffness and damping: on a fine grid each takes seconds to minutes.
+
+    ``bearing`` is a :class:`~shaftline.film.JournalBearing` of the case's problem to reuse
+    (its factorisation pattern and coarse grids; :func:`shaftline.film.sweep` passes one per
+    group of cases), ``initial`` the start of the equilibrium's Newton iteration (a warm start
+    from a solved neighbour). Without them the case is solved from scratch. ``coefficients``
+    False leaves out the stiffness and damping.
     """
     from shaftline.errors import located
     from shaftline.film.bearing import JournalBearing
@@ -104,26 +117,39 @@ def solve_case(case: BearingCase, progress: Callable[[str], None] | None = None)
         if progress is not None:
             progress(f"{case.name}: Newton iteration {iteration}, force residual {residual:.1e} of the load")
 
-    bearing = JournalBearing(case.geometry, case.operating, case.options)
+    if bearing is None:
+        bearing = JournalBearing(case.geometry, case.operating, case.options)
     # A tilt that does not fit in the clearance is found only here; name it as the case file does.
     with located("", case.error_fields):
         equilibrium = bearing.equilibrium(
-            case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z, progress=newton
+            case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z, initial=initial, progress=newton
         )
-    coefficients = None
-    if equilibrium.converged and not equilibrium.contact:
+    dynamics = None
+    if coefficients and equilibrium.converged and not equilibrium.contact:
         if progress is not None:
             progress(f"{case.name}: stiffness and damping")
-        coefficients = dynamic_coefficients(bearing, equilibrium.state)
-    return BearingResult(case, equilibrium, coefficients)
+        dynamics = dynamic_coefficients(bearing, equilibrium.state)
+    return BearingResult(case, equilibrium, dynamics)
 
 
-def solve_study(study: BearingStudy, progress: Callable[[str], None] | None = None) -> BearingStudyResult:
-    """Solve the base case and every variant; ``progress`` is told each case's name, then its
-    Newton iterations (:func:`solve_case`)."""
-    results = []
-    for case in study.cases:
-        if progress is not None:
-            progress(case.name)
-        results.append(solve_case(case, progress))
+def solve_study(
+    study: BearingStudy,
+    progress: Callable[[str], None] | None = None,
+    *,
+    backend: str | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+) -> BearingStudyResult:
+    """Solve the base case and every variant with :func:`shaftline.film.sweep`: variants with
+    the same film problem share one bearing and warm-start from each other, and the groups
+    run on a process pool (``backend``, ``workers``, ``scheduler`` as in
+    :func:`shaftline.parallel.map`).
+
+    ``progress`` is told each case's name, then its Newton iterations (:func:`solve_case`),
+    when the cases are solved in this process (serially, or one group only); from a pool it
+    is told each case as it is finished.
+    """
+    from shaftline.film.sweeps import sweep
+
+    results = sweep(study.cases, backend=backend, workers=workers, scheduler=scheduler, progress=progress)
     return BearingStudyResult(tuple(results))

@@ -1,0 +1,90 @@
+"""A 200-case load x speed sweep of the NTUA stern-tube bearing (issue 10, item 5).
+
+Run ``.venv/bin/python benchmarks/bench_sweep.py [repeats]``. Prints medians and ratios.
+
+The cases: examples/ntua_stern_tube.toml (100 x 60 nodes, psi_x = 0.3), 20 loads from 0.5 to
+1.5 times the design load (309.86 kN) at each of 10 speeds from 60 to 120 rpm (design 90):
+200 equilibria, without stiffness and damping (a second table adds them).
+
+  naive          : each case alone with a new bearing and a cold start, one core (what
+                   solve_study did per variant before)
+  sweep, serial  : shaftline.film.sweep on one core (one bearing per speed, warm starts)
+  sweep, 2 procs : the same on a process pool of two workers (pool start-up included)
+
+Targets: sweep serial >= 3x faster than naive; the pool of two >= 1.8x faster than serial.
+The machine has 2 cores; run it on a quiet machine (the ratios are taken pair by pair in one
+process, each timing a median of ``repeats`` runs).
+"""
+
+from __future__ import annotations
+
+import statistics
+import sys
+import time
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+from shaftline.cases import load_case
+from shaftline.film import sweep
+from shaftline.film.study import BearingCase, solve_case
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def sweep_cases() -> list[BearingCase]:
+    base = load_case(ROOT / "examples" / "ntua_stern_tube.toml")["bearing"].cases[0]
+    return [
+        replace(
+            base,
+            name=f"{speed:.0f} rpm, {share:.3f} W",
+            load_y=base.load_y * share,
+            operating=replace(base.operating, speed=speed * np.pi / 30.0),
+        )
+        for speed in np.linspace(60.0, 120.0, 10)
+        for share in np.linspace(0.5, 1.5, 20)
+    ]
+
+
+def median_time(function, repeat: int) -> tuple[float, object]:
+    times, result = [], None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = function()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), result
+
+
+def run(coefficients: bool, repeat: int) -> None:
+    cases = sweep_cases()
+    what = "equilibria with stiffness and damping" if coefficients else "equilibria"
+    naive_time, naive = median_time(lambda: [solve_case(case, coefficients=coefficients) for case in cases], repeat)
+    serial_time, serial = median_time(lambda: sweep(cases, coefficients=coefficients, backend="serial"), repeat)
+    pool_time, pool = median_time(lambda: sweep(cases, coefficients=coefficients, workers=2), repeat)
+    iterations = [sum(r.equilibrium.iterations for r in results) for results in (naive, serial, pool)]
+    same = all(a.equilibrium.state.position == b.equilibrium.state.position for a, b in zip(serial, pool, strict=True))
+    shift = max(
+        abs(a.equilibrium.state.eccentricity_ratio - b.equilibrium.state.eccentricity_ratio)
+        for a, b in zip(naive, serial, strict=True)
+    )
+    n = len(cases)
+    print(f"NTUA stern tube, 100 x 60 nodes: {n} {what} (10 speeds x 20 loads), medians of {repeat}")
+    print(f"  naive loop, one core : {naive_time:7.2f} s  ({n / naive_time:5.1f} /s, {iterations[0]} Newton)")
+    print(
+        f"  sweep, serial        : {serial_time:7.2f} s  ({n / serial_time:5.1f} /s, {iterations[1]} Newton)"
+        f"  {naive_time / serial_time:.2f}x the naive loop (target >= 3)"
+    )
+    print(
+        f"  sweep, 2 processes   : {pool_time:7.2f} s  ({n / pool_time:5.1f} /s)"
+        f"  {serial_time / pool_time:.2f}x the serial sweep (target >= 1.8), {naive_time / pool_time:.2f}x naive"
+    )
+    print(f"  pool = serial bit for bit: {same}; largest |d eps| sweep vs naive: {shift:.1e}")
+
+
+if __name__ == "__main__":
+    repeats = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+    sweep(sweep_cases()[:2], backend="serial")  # imports and first-call set-up out of the timings
+    run(False, repeats)
+    print()
+    run(True, repeats)

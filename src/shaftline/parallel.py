@@ -1,0 +1,281 @@
+"""The one way shaftline runs many independent jobs: serially, on a local process pool or a
+Dask cluster, through :func:`map`.
+
+Sweeps, searches and robustness tables all go through :func:`map`, so a notebook, the
+command line and a cluster run the same code. The backends are a small registry,
+:data:`BACKENDS` (the style of SciPy's ``method=`` choices):
+
+``"serial"``
+    In this process, one item after the other (the reference: the others give the same
+    results in the same order).
+``"process"`` (default)
+    A ``concurrent.futures.ProcessPoolExecutor`` on this machine, one worker process per
+    core unless ``workers`` says. Workers start with ``forkserver`` where the platform has
+    it (Linux), else ``spawn``, never ``fork``: numba's and OpenMP's thread pools do not
+    survive a fork of a process that has started them, and a forked child would inherit
+    whatever solver state the parent holds.
+``"dask"``
+    A ``dask.distributed`` cluster: the scheduler at ``scheduler`` (``"tcp://host:8786"``),
+    or a ``LocalCluster`` started for the call. Needs the optional extra ``parallel``
+    (``pip install shaftline[parallel]``) and shaftline installed on every worker.
+
+The function and the items must pickle (module-level functions, dataclasses; a
+:class:`shaftline.film.JournalBearing` pickles as its problem). Results come back in the
+order of the items whatever order the workers finish in. An exception raised by the
+function in a worker reaches the caller with its own type (an
+:class:`~shaftline.errors.InputError` stays one), and the other jobs are stopped. Ctrl-C
+(``KeyboardInterrupt``) stops the workers before it reaches the caller, so no process is
+left behind; pool workers ignore SIGINT themselves, so a Ctrl-C that reaches the whole
+process group interrupts only the parent, which then ends them.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import signal
+from collections.abc import Callable, Sequence
+from concurrent.futures import FIRST_EXCEPTION, Future, ProcessPoolExecutor, wait
+from typing import Any, TypeVar
+
+from shaftline.errors import InputError
+
+__all__ = ["BACKENDS", "Backend", "available_workers", "map"]
+
+T = TypeVar("T")
+R = TypeVar("R")
+
+#: Seconds to wait for a Dask scheduler to answer before the address is called wrong.
+_CONNECT_TIMEOUT = 10.0
+#: ``progress(done, total)``: told, in the calling process, how many items are finished.
+ProgressCallback = Callable[[int, int], None]
+#: A backend: ``(function, batches, workers, scheduler, on_batch)`` -> one result list per
+#: batch, in batch order; ``on_batch(index)`` is called as each batch finishes.
+Backend = Callable[
+    [Callable[[Any], Any], list[list[Any]], int | None, str | None, Callable[[int], None]], list[list[Any]]
+]
+
+
+def available_workers() -> int:
+    """Cores this process may run on (its CPU affinity where the platform tells it), >= 1."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def _run_batch(function: Callable[[T], R], batch: list[T]) -> list[R]:
+    """One job of a worker: the function on each item of a batch, in order."""
+    return [function(item) for item in batch]
+
+
+def _serial(
+    function: Callable[[Any], Any],
+    batches: list[list[Any]],
+    workers: int | None,
+    scheduler: str | None,
+    on_batch: Callable[[int], None],
+) -> list[list[Any]]:
+    results = []
+    for index, batch in enumerate(batches):
+        results.append(_run_batch(function, batch))
+        on_batch(index)
+    return results
+
+
+def _ignore_sigint() -> None:
+    """Pool workers leave Ctrl-C to the parent, which ends them (no traceback from each)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _context(function: Callable[[Any], Any]) -> Any:
+    """``forkserver`` where available (fast start, no inherited threads), else ``spawn``.
+
+    The fork server imports the module of ``function`` before it forks the first worker
+    (the solver modules take about half a second to import), so each worker starts with it
+    loaded. The server is started once per process; later calls reuse it as it is.
+    """
+    if "forkserver" not in multiprocessing.get_all_start_methods():
+        return multiprocessing.get_context("spawn")
+    context = multiprocessing.get_context("forkserver")
+    module = getattr(getattr(function, "func", function), "__module__", None)
+    if module and module != "__main__":
+        context.set_forkserver_preload([module])
+    return context
+
+
+def _stop(executor: ProcessPoolExecutor) -> None:
+    """End a pool now: drop the queued jobs and terminate the workers (no orphans)."""
+    # The executor has no public way to end running jobs before Python 3.14
+    # (terminate_workers); its process table is the documented-in-source way to reach them.
+    processes = list((getattr(executor, "_processes", None) or {}).values())
+    executor.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        if process.is_alive():
+            process.terminate()
+    for process in processes:
+        process.join(timeout=5.0)
+        if process.is_alive():
+            process.kill()
+            process.join(timeout=5.0)
+
+
+def _process(
+    function: Callable[[Any], Any],
+    batches: list[list[Any]],
+    workers: int | None,
+    scheduler: str | None,
+    on_batch: Callable[[int], None],
+) -> list[list[Any]]:
+    count = min(workers or available_workers(), len(batches))
+    executor = ProcessPoolExecutor(max_workers=count, mp_context=_context(function), initializer=_ignore_sigint)
+    try:
+        futures: dict[Future[list[Any]], int] = {
+            executor.submit(_run_batch, function, batch): index for index, batch in enumerate(batches)
+        }
+        results: list[list[Any]] = [[] for _ in batches]
+        pending = set(futures)
+        while pending:
+            finished, pending = wait(pending, return_when=FIRST_EXCEPTION)
+            # Deliver in a fixed order within one wake-up: the caller's progress then reads the same.
+            for future in sorted(finished, key=futures.__getitem__):
+                results[futures[future]] = future.result()  # re-raises the worker's exception
+                on_batch(futures[future])
+    except BaseException:
+        _stop(executor)
+        raise
+    executor.shutdown(wait=True)
+    return results
+
+
+def _dask(
+    function: Callable[[Any], Any],
+    batches: list[list[Any]],
+    workers: int | None,
+    scheduler: str | None,
+    on_batch: Callable[[int], None],
+) -> list[list[Any]]:
+    try:
+        from dask.distributed import Client, LocalCluster, as_completed
+    except ImportError:
+        raise InputError(
+            "backend", "dask", "", "an installed dask.distributed (pip install 'shaftline[parallel]')"
+        ) from None
+    cluster = None
+    if scheduler is None:
+        # One single-threaded worker process per core: the film solver is single-threaded
+        # and holds the GIL in Python, so threads would only queue behind each other.
+        cluster = LocalCluster(
+            n_workers=min(workers or available_workers(), len(batches)),
+            threads_per_worker=1,
+            processes=True,
+            dashboard_address=None,
+        )
+    try:
+        client = Client(cluster if cluster is not None else scheduler, timeout=_CONNECT_TIMEOUT)
+    except OSError as error:
+        if cluster is not None:
+            cluster.close()
+        raise InputError(
+            "scheduler", scheduler, "", f"the address of a running Dask scheduler (no answer: {error})"
+        ) from None
+    futures: list[Any] = []
+    try:
+        futures = [client.submit(_run_batch, function, batch, pure=False) for batch in batches]
+        where = {future.key: index for index, future in enumerate(futures)}
+        results: list[list[Any]] = [[] for _ in batches]
+        for future in as_completed(futures):
+            index = where[future.key]
+            results[index] = future.result()  # re-raises the worker's exception with its type
+            on_batch(index)
+        return results
+    finally:
+        if futures:
+            client.cancel(futures)
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+#: The backends by name (``backend=`` of :func:`map`).
+BACKENDS: dict[str, Backend] = {"serial": _serial, "process": _process, "dask": _dask}
+
+
+def map(
+    function: Callable[[T], R],
+    items: Sequence[T],
+    *,
+    backend: str | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    chunksize: int = 1,
+    progress: ProgressCallback | None = None,
+) -> list[R]:
+    """``[function(item) for item in items]``, spread over cores or a cluster.
+
+    Parameters
+    ----------
+    function : callable
+        Applied to each item; must pickle for ``"process"`` and ``"dask"`` (a module-level
+        function or a ``functools.partial`` of one).
+    items : sequence
+        The inputs; must pickle for ``"process"`` and ``"dask"``.
+    backend : {"serial", "process", "dask"}, optional
+        Where to run (:data:`BACKENDS`); default ``"dask"`` when ``scheduler`` is given,
+        else ``"process"``.
+    workers : int, optional
+        Worker processes: default one per core of this machine (``"process"``; a
+        ``LocalCluster`` for ``"dask"``), never more than there are jobs. With ``workers=1``
+        the items run here, serially: a pool of one would only add its start-up. Ignored
+        with a ``scheduler`` (the cluster has its workers).
+    scheduler : str, optional
+        Address of a running Dask scheduler, e.g. ``"tcp://10.0.0.5:8786"``.
+    chunksize : int
+        Items sent to a worker per job (>= 1): more amortise the transfer of short jobs.
+    progress : callable, optional
+        ``progress(done, total)`` in this process as items finish (per job of
+        ``chunksize`` items).
+
+    Returns
+    -------
+    list
+        The results in the order of ``items``.
+
+    Raises
+    ------
+    InputError
+        ``"backend"``, ``"workers"`` or ``"chunksize"`` out of range; and whatever
+        ``function`` raises, with its own type.
+
+    Examples
+    --------
+    >>> from shaftline import parallel
+    >>> parallel.map(abs, [-2, 3, -5], backend="serial")
+    [2, 3, 5]
+    """
+    name = backend if backend is not None else ("dask" if scheduler is not None else "process")
+    if name not in BACKENDS:
+        raise InputError("backend", name, "", "one of " + ", ".join(BACKENDS))
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
+        raise InputError("workers", workers, "", "an integer >= 1")
+    if isinstance(chunksize, bool) or not isinstance(chunksize, int) or chunksize < 1:
+        raise InputError("chunksize", chunksize, "", "an integer >= 1")
+    if scheduler is not None and name != "dask":
+        raise InputError("scheduler", scheduler, "", f"no scheduler with backend {name!r} (only with 'dask')")
+    items = list(items)
+    total = len(items)
+    if total == 0:
+        return []
+    if name == "process" and workers == 1:
+        name = "serial"
+    batches = [items[start : start + chunksize] for start in range(0, total, chunksize)]
+    done = 0
+
+    def on_batch(index: int) -> None:
+        nonlocal done
+        done += len(batches[index])
+        if progress is not None:
+            progress(done, total)
+
+    results = BACKENDS[name](function, batches, workers, scheduler, on_batch)
+    return [result for batch in results for result in batch]

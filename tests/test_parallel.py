@@ -1,0 +1,193 @@
+"""The one parallel map: same results in the same order on every backend, errors that keep
+their type, and a Ctrl-C that leaves no process behind.
+
+The process pool and the Dask cluster are the real ones (a ``ProcessPoolExecutor`` and a
+``dask.distributed.LocalCluster`` on this machine), not mocks: what is tested is that jobs
+and their exceptions cross process boundaries and come back in order.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import psutil
+import pytest
+
+from shaftline import parallel
+from shaftline.errors import InputError, SolverFailure
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def slow_square(x: int) -> tuple[int, int]:
+    """x^2 and the process that computed it; later items finish first (reversed sleep)."""
+    time.sleep(0.02 * (5 - x % 5))
+    return x * x, os.getpid()
+
+
+def refuse(x: int) -> int:
+    if x == 3:
+        raise InputError("load_y", float(x), "N", "anything but 3")
+    if x == 4:
+        raise SolverFailure("did not settle")
+    return x
+
+
+@pytest.fixture(scope="module")
+def scheduler():
+    """A real Dask cluster of two single-threaded worker processes on this machine."""
+    from dask.distributed import LocalCluster
+
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        yield cluster.scheduler_address
+
+
+def test_every_backend_returns_the_serial_results_in_input_order(scheduler):
+    items = list(range(12))
+    serial = parallel.map(slow_square, items, backend="serial")
+    assert [r for r, _ in serial] == [x * x for x in items]
+    assert {pid for _, pid in serial} == {os.getpid()}
+    pooled = parallel.map(slow_square, items, workers=2, chunksize=2)
+    assert [r for r, _ in pooled] == [r for r, _ in serial]
+    assert os.getpid() not in {pid for _, pid in pooled}  # really elsewhere
+    on_dask = parallel.map(slow_square, items, scheduler=scheduler)
+    assert [r for r, _ in on_dask] == [r for r, _ in serial]
+    assert os.getpid() not in {pid for _, pid in on_dask}
+
+
+def test_progress_counts_items_as_jobs_finish():
+    told: list[tuple[int, int]] = []
+    parallel.map(slow_square, range(7), workers=2, chunksize=3, progress=lambda d, t: told.append((d, t)))
+    assert sorted(d for d, _ in told) == [d for d, _ in told]  # counts only grow
+    assert told[-1] == (7, 7) and {t for _, t in told} == {7} and len(told) == 3  # jobs of 3, 3 and 1
+
+
+@pytest.mark.parametrize("backend", ["serial", "process", "dask"])
+def test_a_worker_error_reaches_the_caller_with_its_type(backend, scheduler):
+    where = {"scheduler": scheduler} if backend == "dask" else {"backend": backend, "workers": 2}
+    with pytest.raises(InputError) as error:
+        parallel.map(refuse, [1, 2, 3], **where)
+    assert (error.value.field, error.value.value, error.value.unit) == ("load_y", 3.0, "N")
+    assert str(error.value) == "load_y = 3 N: allowed anything but 3"
+    with pytest.raises(SolverFailure, match="did not settle"):
+        parallel.map(refuse, [4, 1], **where)
+
+
+def test_bad_choices_are_one_line_input_errors():
+    with pytest.raises(InputError, match="backend = 'threads': allowed one of serial, process, dask"):
+        parallel.map(abs, [1], backend="threads")
+    with pytest.raises(InputError, match="workers = 0"):
+        parallel.map(abs, [1], workers=0)
+    with pytest.raises(InputError, match="chunksize = 0"):
+        parallel.map(abs, [1], chunksize=0)
+    with pytest.raises(InputError, match="scheduler"):
+        parallel.map(abs, [1], backend="process", scheduler="tcp://127.0.0.1:8786")
+    assert parallel.map(abs, [], workers=2) == []
+
+
+def test_a_scheduler_that_does_not_answer_is_an_input_error(monkeypatch):
+    monkeypatch.setattr(parallel, "_CONNECT_TIMEOUT", 1.0)
+    with pytest.raises(InputError, match=r"^scheduler = 'tcp://127.0.0.1:9': allowed the address of a running Dask"):
+        parallel.map(abs, [1, 2], scheduler="tcp://127.0.0.1:9")
+
+
+def _descendants(pid: int) -> list[psutil.Process]:
+    try:
+        return psutil.Process(pid).children(recursive=True)
+    except psutil.NoSuchProcess:
+        return []
+
+
+def _gone(process: psutil.Process) -> bool:
+    try:
+        return process.status() == psutil.STATUS_ZOMBIE
+    except psutil.NoSuchProcess:
+        return True
+
+
+def _interrupt(command: list[str], workers: int) -> tuple[subprocess.CompletedProcess[str], list[psutil.Process]]:
+    """Start ``command``, wait until ``workers`` pool workers run, send SIGINT; the result and
+    the descendants there were."""
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src") + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    child = subprocess.Popen(command, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    before: list[psutil.Process] = []
+    try:
+        deadline = time.monotonic() + 60.0
+        # The fork server and the workers (forkserver start), or the workers alone (spawn).
+        while len(_descendants(child.pid)) < workers + 1 and time.monotonic() < deadline and child.poll() is None:
+            time.sleep(0.1)
+        time.sleep(0.5)
+        before = _descendants(child.pid)
+        assert len(before) >= workers, f"the pool did not start: {child.poll()} {child.stderr and child.stderr.read()}"
+        child.send_signal(signal.SIGINT)
+        stdout, stderr = child.communicate(timeout=10.0)
+    except subprocess.TimeoutExpired:
+        # Not stopped: end what this test started (left-over workers hold the pipes open).
+        for process in [*before, psutil.Process(child.pid)]:
+            if not _gone(process):
+                process.kill()
+        child.communicate()
+        raise
+    return subprocess.CompletedProcess(command, child.returncode, stdout, stderr), before
+
+
+def _assert_all_gone(processes: list[psutil.Process]) -> None:
+    deadline = time.monotonic() + 5.0
+    while not all(_gone(p) for p in processes) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert all(_gone(p) for p in processes), [p.pid for p in processes if not _gone(p)]
+
+
+def test_ctrl_c_stops_a_pool_at_once_and_leaves_no_process():
+    """Jobs of 60 s each on two workers: SIGINT to the parent ends it in seconds, with
+    KeyboardInterrupt, and its fork server and workers are gone."""
+    script = textwrap.dedent(
+        """
+        import time
+        from shaftline import parallel
+
+        if __name__ == "__main__":
+            try:
+                parallel.map(time.sleep, [60.0] * 4, workers=2)
+            except KeyboardInterrupt:
+                print("interrupted")
+                raise SystemExit(130)
+        """
+    )
+    start = time.monotonic()
+    result, before = _interrupt([sys.executable, "-c", script], workers=2)
+    assert time.monotonic() - start < 30.0
+    assert result.returncode == 130 and result.stdout.strip() == "interrupted", result.stderr
+    assert "Traceback" not in result.stderr  # the workers ignore SIGINT: no trace from each
+    _assert_all_gone(before)
+
+
+def test_ctrl_c_in_a_run_on_the_pool_exits_130_and_leaves_no_process(tmp_path):
+    """``shaftline run`` spreading bearing variants over two workers: exit 130, one line, no output."""
+    # Each variant its own bore, so its own film problem: six jobs for the pool.
+    variants = "".join(
+        f'\n[[bearing.variants]]\nname = "v{k}"\n[[bearing.variants.bore]]\nlength_fraction = 1.0\n'
+        f"slope_ratio = {0.05 * (k + 1):.2f}\n"
+        for k in range(6)
+    )
+    case = tmp_path / "case.toml"
+    text = (ROOT / "examples" / "ntua_stern_tube.toml").read_text()
+    # A finer grid: each variant takes seconds, so the interrupt lands while the pool works.
+    text = text.replace("axial_nodes = 100", "axial_nodes = 200").replace(
+        "circumferential_nodes = 60", "circumferential_nodes = 240"
+    )
+    head, _, _ = text.partition("[[bearing.variants]]")
+    case.write_text(head + variants)
+    out = tmp_path / "out"
+    command = [sys.executable, "-m", "shaftline.cli", "run", str(case), "--out", str(out), "--workers", "2"]
+    result, before = _interrupt(command, workers=2)
+    assert result.returncode == 130, result.stderr
+    assert result.stderr.strip().splitlines()[-1] == "interrupted: nothing was written"
+    assert not out.exists()
+    _assert_all_gone(before)
