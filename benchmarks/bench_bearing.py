@@ -192,12 +192,15 @@ def scaled_equilibrium(shape: tuple[int, int], repeat: int) -> tuple[float, int,
     case = ntua_case()
     options = replace(case.options, axial_nodes=shape[0], circumferential_nodes=shape[1])
     bearing = JournalBearing(case.geometry, case.operating, options)
-    times = []
-    for _ in range(repeat):
-        with FactorCounter() as counter:
-            start = time.perf_counter()
-            eq = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y)
-            times.append(time.perf_counter() - start)
+    # The first run counts the factorisations (a bearing's first solver is built inside it).
+    with FactorCounter() as counter:
+        start = time.perf_counter()
+        eq = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y)
+        times = [time.perf_counter() - start]
+    for _ in range(repeat - 1):
+        start = time.perf_counter()
+        eq = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y)
+        times.append(time.perf_counter() - start)
     fine = sum(size > 0.27 * shape[0] * shape[1] for size in counter.sizes)
     return statistics.median(times), eq.iterations, fine, eq.state.eccentricity_ratio
 
