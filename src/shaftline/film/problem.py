@@ -129,7 +129,9 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
     the mass-conserving model its sparse LU. The factor grows faster than the node count
     (about ``n log n``), so a grid twice as fine each way takes more than four times the memory.
     Calibrated against the measured peak (docs/validation.md): from 5 000 to 300 000 nodes the
-    estimate is 3 % below to 27 % above it, on the high side by design.
+    estimate is 3 % below to 27 % above it, on the high side by design. Since issue 10 only
+    the free sub-matrix is factorised (:data:`_FREE_FACTOR_SHARE`): the measured peaks lie at
+    0.82-0.95 of the estimate from 5 000 to 300 000 nodes.
 
     Parameters
     ----------
@@ -145,10 +147,10 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
 
     Examples
     --------
-    >>> round(estimated_memory(41, 120) / 2**20, 1)  # the default grid, MiB
-    5.9
-    >>> round(estimated_memory(2561, 120) / 2**20)  # measured peak 392 MiB
-    431
+    >>> round(estimated_memory(41, 120) / 2**20, 1)  # the default grid, MiB (measured peak 4.8)
+    5.1
+    >>> round(estimated_memory(2561, 120) / 2**20)  # measured peak 329 MiB
+    360
     """
     total = 0.0
     shape: tuple[int, int] | None = (int(axial_nodes), int(circumferential_nodes))

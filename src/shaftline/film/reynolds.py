@@ -61,6 +61,10 @@ __all__ = [
 
 #: Active-set iterations allowed before the solver gives up.
 MAX_ACTIVE_SET_ITERATIONS = 200
+#: Factors kept per grid, keyed by active set. One: the active-set iteration visits 4-7 sets on
+#: each grid in turn, so a few more would all be evicted before their set came back, and the
+#: memory estimate (film/problem.py) counts one factor per grid.
+FACTOR_CACHE = 1
 #: Conjugate-gradient solves of the trial active sets, preconditioned by the factor of a nearby
 #: set: given up for a factorisation after this many iterations (a few dozen triangular solves
 #: cost about one factorisation), and converged when the energy-norm error is below this
@@ -68,6 +72,10 @@ MAX_ACTIVE_SET_ITERATIONS = 200
 #: again with its own factor).
 PCG_MAX_ITERATIONS = 30
 PCG_TOLERANCE = 1e-9
+#: Grids below this many nodes factorise every trial set: there a conjugate-gradient
+#: iteration, its array work in numpy included, costs a tenth of a factorisation or more
+#: (0.25 ms against 1-3 ms on 100 x 60), and a trial set needs 10-25 of them.
+PCG_MIN_NODES = 10_000
 
 
 class ReynoldsConvergenceError(SolverFailure):
@@ -233,6 +241,8 @@ class ReynoldsSolver:
         self.fixed_pressure = np.where(self.fixed, fixed_pressure, 0.0)
         self.pattern = _pattern(*shape)
         self._factor: qdldl.Solver | None = None
+        self._factors: dict[bytes, tuple[qdldl.Solver, Stencil]] = {}
+        self._cache_size = FACTOR_CACHE
         self._factor_mask: np.ndarray | None = None
         self._factor_stencil: Stencil | None = None
         self._coarse_cache: tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple[np.ndarray, ...]] | None = None
@@ -286,33 +296,34 @@ class ReynoldsSolver:
     def _factorise(self, stencil: Stencil, held: np.ndarray) -> Any:
         """LDL^T factor of the free sub-matrix ``A[free, free]`` (qdldl, AMD of that graph).
 
-        The factor of the last active set is kept with its symbolic analysis: the same set
-        again (a Newton step that does not move the cavitation boundary) costs only the
-        numeric factorisation, and the same set and film (the frozen-set derivatives after
-        a solution) nothing. The factor depends only on the matrix, so a solution computed
-        with it does not depend on the path that found the set. Returns None when no node
-        is free.
+        The factors of the last :data:`FACTOR_CACHE` active sets are kept, each with its
+        ordering and symbolic analysis, keyed by the set: the same set again (a Newton step
+        that does not move the cavitation boundary) costs only the numeric factorisation,
+        and the same set and film (the frozen-set derivatives after a solution) nothing. The factor
+        depends only on the matrix, so a solution computed with it does not depend on the
+        path that found the set. Returns None when no node is free.
         """
-        if (
-            self._factor_stencil is stencil
-            and self._factor_mask is not None
-            and np.array_equal(self._factor_mask, held)
-        ):
-            return self._factor
-        free = ~held.ravel()
-        if not free.any():
-            self._factor, self._factor_mask, self._factor_stencil = None, held.copy(), stencil
+        if not (~held).any():
+            self._factor, self._factor_mask, self._factor_stencil = None, None, None
             return None
-        matrix = self._free_matrix(stencil, free)
-        if self._factor is not None and self._factor_mask is not None and np.array_equal(self._factor_mask, held):
-            self._factor.update(matrix, upper=True)
+        key = np.packbits(held).tobytes()
+        entry = self._factors.pop(key, None)
+        if entry is not None and entry[1] is stencil:
+            solver = entry[0]
         else:
-            # Drop the old factor first: two factors of a fine grid need not fit in memory at once.
-            self._factor = None
-            self._factor = qdldl.Solver(matrix, upper=True)
-        self._factor_mask = held.copy()
-        self._factor_stencil = stencil
-        return self._factor
+            matrix = self._free_matrix(stencil, ~held.ravel())
+            if entry is not None:
+                solver = entry[0]
+                solver.update(matrix, upper=True)
+            else:
+                # Drop the oldest factor first: factors of a fine grid need not fit in memory twice.
+                while len(self._factors) >= self._cache_size:
+                    self._factors.pop(next(iter(self._factors)))
+                self._factor = None
+                solver = qdldl.Solver(matrix, upper=True)
+        self._factors[key] = (solver, stencil)
+        self._factor, self._factor_mask, self._factor_stencil = solver, held.copy(), stencil
+        return solver
 
     def _solve_free(
         self, stencil: Stencil, held: np.ndarray, rhs: np.ndarray, guess: np.ndarray | None, direct: bool
@@ -329,7 +340,8 @@ class ReynoldsSolver:
         out = np.zeros(free.size)
         if not free.any():
             return out
-        if not direct and self._factor is not None and self._factor_mask is not None:
+        iterative = free.size >= PCG_MIN_NODES and self._factor is not None and self._factor_mask is not None
+        if iterative and not direct:
             solution = self._pcg(stencil, free, rhs.ravel()[free], None if guess is None else guess[free])
             if solution is not None:
                 out[free] = solution
