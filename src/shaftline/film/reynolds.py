@@ -241,6 +241,11 @@ class ReynoldsSolver:
         self.fixed_pressure = np.where(self.fixed, fixed_pressure, 0.0)
         self.pattern = _pattern(*shape)
         self._factor: qdldl.Solver | None = None
+        #: Factorise the full periodic pattern with the held rows and columns zeroed (one
+        #: symbolic analysis for every set) instead of the free sub-matrix: set on the small
+        #: coarse grids that only predict the cavitated set.
+        self.masked = False
+        self._masked_factor: qdldl.Solver | None = None
         self._factors: dict[bytes, tuple[qdldl.Solver, Stencil]] = {}
         self._cache_size = FACTOR_CACHE
         self._factor_mask: np.ndarray | None = None
@@ -340,6 +345,8 @@ class ReynoldsSolver:
         out = np.zeros(free.size)
         if not free.any():
             return out
+        if self.masked:
+            return self._masked_factorisation(stencil, held).solve(np.where(free, rhs.ravel(), 0.0))
         iterative = free.size >= PCG_MIN_NODES and self._factor is not None and self._factor_mask is not None
         if iterative and not direct:
             solution = self._pcg(stencil, free, rhs.ravel()[free], None if guess is None else guess[free])
@@ -349,6 +356,18 @@ class ReynoldsSolver:
         factor = self._factorise(stencil, held)
         out[free] = factor.solve(rhs.ravel()[free])
         return out
+
+    def _masked_factorisation(self, stencil: Stencil, held: np.ndarray) -> Any:
+        """Factor of the full pattern with the held rows and columns zeroed, their diagonals
+        kept (so ``x = 0`` there for a zero right-hand side); the symbolic analysis is reused."""
+        values, _ = self._masked_values(stencil, held)
+        matrix = self.pattern.upper.copy()
+        matrix.data = values
+        if self._masked_factor is None:
+            self._masked_factor = qdldl.Solver(matrix, upper=True)
+        else:
+            self._masked_factor.update(matrix, upper=True)
+        return self._masked_factor
 
     def _is_factored(self, stencil: Stencil, held: np.ndarray) -> bool:
         """Whether the kept factor is that of ``stencil`` and ``held`` (or no node is free)."""
@@ -486,6 +505,9 @@ class ReynoldsSolver:
             solver = ReynoldsSolver(
                 (nz_c, nt_c), 2.0 * self.d_theta, self.d_z * (nz - 1) / (nz_c - 1), fixed_c, value_c
             )
+            # Small coarse grids only predict the set: one symbolic analysis of the full pattern,
+            # then numeric factorisations only (2-4 times cheaper there than a fresh ordering).
+            solver.masked = nz_c * nt_c < PCG_MIN_NODES
             self._coarse_cache = (solver, z_index, z_weight, (row_lo, row_hi, col_lo, col_hi, row_w))
         return self._coarse_cache
 
