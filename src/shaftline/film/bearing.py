@@ -140,7 +140,7 @@ class BearingState:
     cavitation : Cavitation
         Cavitation model used.
     iterations : int
-        Active-set iterations (factorisations) of this solution; a warm start
+        Active-set iterations (linear solves) of this solution; a warm start
         (``solve_at(..., warm_start=True)``) needs fewer for the same result.
 
     Equality is identity: the fields hold arrays, which have no single truth value.
@@ -198,7 +198,8 @@ class Equilibrium:
         True when the load cannot be carried above the film floor (``state`` is then
         the position reached at the floor).
     iterations : int
-        Newton iterations used.
+        Newton iterations used (on the bearing's grid; on a grid started from the
+        equilibrium of a coarser one, those after that start).
     residual : float
         Magnitude of ``force + load`` at the end, N.
     """
@@ -603,7 +604,10 @@ class JournalBearing:
         Newton's method on ``force(ey, ez) + load = 0`` with the Jacobian from the
         reused factorisation (frozen active set), a fraction-to-boundary rule that keeps
         the film above the floor, and a backtracking line search on the residual.
-        The tilts are held fixed (misalignment is an input).
+        The tilts are held fixed (misalignment is an input). Each trial starts its
+        cavitated set from the one the step predicts; without ``initial``, a grid of
+        :data:`CONTINUATION_NODES` or more starts from the equilibrium on the grid halved
+        both ways (docs/theory.md, Sect. 4.1).
 
         Parameters
         ----------

@@ -202,7 +202,9 @@ class ReynoldsSolution:
     cavitated : ndarray of bool (nz, nt)
         Nodes held at the cavitation pressure.
     iterations : int
-        Active-set iterations (factorisations) used.
+        Active-set iterations used: linear solves of trial sets (factorisations, or on
+        fine grids conjugate-gradient solves), the final solve with the settled set's
+        factor included.
     """
 
     pressure: np.ndarray
