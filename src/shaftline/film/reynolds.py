@@ -249,6 +249,7 @@ class ReynoldsSolver:
         self.masked = False
         self._masked_factor: qdldl.Solver | None = None
         self._factors: dict[bytes, tuple[qdldl.Solver, Stencil]] = {}
+        self._slot_cache: tuple[Stencil, np.ndarray] | None = None
         self._cache_size = FACTOR_CACHE
         self._factor_mask: np.ndarray | None = None
         self._factor_stencil: Stencil | None = None
@@ -285,20 +286,29 @@ class ReynoldsSolver:
         pattern = self.pattern
         keep = free[pattern.slot_row] & free[pattern.slot_col]
         index = np.cumsum(free) - 1
-        kind = pattern.slot_kind[keep]
-        link = pattern.slot_link[keep]
-        values = np.empty(kind.size)
-        is_diag = kind == 0
-        is_theta = kind == 1
-        is_z = kind == 2
-        values[is_diag] = stencil_diagonal(stencil).ravel()[link[is_diag]]
-        values[is_theta] = -stencil.c_theta.ravel()[link[is_theta]]
-        values[is_z] = -stencil.c_z.ravel()[link[is_z]]
+        values = self._slot_values(stencil)[keep]
         rows = index[pattern.slot_row[keep]]
         count = int(index[-1]) + 1 if free.size else 0
         indptr = np.zeros(count + 1, dtype=np.int64)
         np.cumsum(np.bincount(index[pattern.slot_col[keep]], minlength=count), out=indptr[1:])
         return sp.csc_matrix((values, rows, indptr), shape=(count, count))
+
+    def _slot_values(self, stencil: Stencil) -> np.ndarray:
+        """Values of A on every slot of the full pattern (upper triangle), kept per stencil:
+        an active-set iteration builds several sub-matrices of one film."""
+        cached = self._slot_cache
+        if cached is not None and cached[0] is stencil:
+            return cached[1]
+        pattern = self.pattern
+        values = np.empty(pattern.slot_kind.size)
+        is_diag = pattern.slot_kind == 0
+        is_theta = pattern.slot_kind == 1
+        is_z = pattern.slot_kind == 2
+        values[is_diag] = stencil_diagonal(stencil).ravel()[pattern.slot_link[is_diag]]
+        values[is_theta] = -stencil.c_theta.ravel()[pattern.slot_link[is_theta]]
+        values[is_z] = -stencil.c_z.ravel()[pattern.slot_link[is_z]]
+        self._slot_cache = (stencil, values)
+        return values
 
     def _factorise(self, stencil: Stencil, held: np.ndarray) -> Any:
         """LDL^T factor of the free sub-matrix ``A[free, free]`` (qdldl, AMD of that graph).
