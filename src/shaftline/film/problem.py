@@ -88,7 +88,7 @@ _FACTOR_BYTES = 22.0
 #: Share of the full periodic pattern's factor that the factor of the free sub-matrix holds
 #: (issue 10: only the pressurised nodes are factorised, with an ordering of their own graph,
 #: which the cavitated zone cuts open). The peak of an equilibrium with stiffness and damping
-#: then lies at 0.82-0.93 of the estimate on 161 x 120 to 641 x 240 (loaded and lightly
+#: then lies at 0.84-1.00 of the estimate on 41 x 120 to 2561 x 120 (loaded and lightly
 #: loaded); a film with no cavitated node at all would need up to about 1.2 times it.
 _FREE_FACTOR_SHARE = 0.7
 #: Further bytes per fine-grid node of the mass-conserving ("jfo") model: the unsymmetric
@@ -131,7 +131,7 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
     Calibrated against the measured peak (docs/validation.md): from 5 000 to 300 000 nodes the
     estimate is 3 % below to 27 % above it, on the high side by design. Since issue 10 only
     the free sub-matrix is factorised (:data:`_FREE_FACTOR_SHARE`): the measured peaks lie at
-    0.82-0.95 of the estimate from 5 000 to 300 000 nodes.
+    0.84-1.00 of the estimate from 5 000 to 300 000 nodes.
 
     Parameters
     ----------
@@ -147,9 +147,9 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
 
     Examples
     --------
-    >>> round(estimated_memory(41, 120) / 2**20, 1)  # the default grid, MiB (measured peak 4.8)
+    >>> round(estimated_memory(41, 120) / 2**20, 1)  # the default grid, MiB (measured peak 5.1)
     5.1
-    >>> round(estimated_memory(2561, 120) / 2**20)  # measured peak 329 MiB
+    >>> round(estimated_memory(2561, 120) / 2**20)  # measured peak 345 MiB
     360
     """
     total = 0.0
