@@ -1,7 +1,17 @@
-"""Bearing solver timings (issue 2 targets) and a side-by-side run with ROSS.
+"""Bearing solver timings (issue 2 and issue 10 targets) and a side-by-side run with ROSS.
 
 Run ``make bench`` (its own environment, with ROSS) or, without ROSS,
-``.venv/bin/python benchmarks/bench_bearing.py``. Prints medians and ratios.
+``.venv/bin/python benchmarks/bench_bearing.py [--large] [--quick]``. Prints medians and ratios.
+``--large`` adds the 800 x 480 equilibrium; ``--quick`` leaves out the scaling and ROSS.
+
+Issue 10 targets (Reynolds condition, NTUA case):
+  one cold pressure solution on 100 x 60 within 4x one factorisation + solve of its own final
+  matrix (the unit: qdldl's numeric factorisation of the free sub-matrix of the converged
+  active set, its ordering and symbolic analysis done beforehand, and one solve), one load
+  equilibrium within 12x of that unit; the equilibrium time growing no faster than N^1.4 from
+  100 x 60 to 400 x 240 and an 800 x 480 equilibrium in under 30 s. The ratios are also printed
+  against a fresh factorisation (AMD ordering included) and against the numeric factorisation
+  of the full periodic pattern with held rows and columns zeroed (the solver before issue 10).
 
 Targets on the 2-core machine:
   NTUA stern tube, 100 axial x 60 circumferential nodes, psi_x = 0.3, Reynolds condition:
@@ -13,11 +23,15 @@ Targets on the 2-core machine:
 from __future__ import annotations
 
 import statistics
+import sys
 import time
 import warnings
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
+import qdldl
+import scipy.sparse as sp
 
 from shaftline.cases import load_case
 from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
@@ -34,8 +48,98 @@ def median_time(function, repeat: int) -> tuple[float, object]:
     return statistics.median(times), result
 
 
+def operator_matrix(stencil, fixed: np.ndarray, cavitated: np.ndarray, free_only: bool) -> sp.csc_matrix:
+    """Upper triangle of the Reynolds operator A: its free sub-matrix (``free_only``), or the
+    full periodic pattern with the held rows and columns zeroed (held diagonals kept), built
+    from the stencil alone so that it does not depend on the solver's own code."""
+    nz, nt = fixed.shape
+    node = np.arange(nz * nt).reshape(nz, nt)
+    east = np.roll(node, -1, axis=1)
+    a = np.concatenate([node.ravel(), node[:-1].ravel()])
+    b = np.concatenate([east.ravel(), node[1:].ravel()])
+    c = np.concatenate([stencil.c_theta.ravel(), stencil.c_z.ravel()])
+    diag = np.zeros(nz * nt)
+    np.add.at(diag, a, c)
+    np.add.at(diag, b, c)
+    held = (fixed | cavitated).ravel()
+    links = ~held[a] & ~held[b]
+    lo, hi = np.minimum(a, b), np.maximum(a, b)
+    if free_only:
+        index = np.cumsum(~held) - 1
+        keep = np.flatnonzero(~held)
+        rows = np.concatenate([index[keep], index[lo[links]]])
+        cols = np.concatenate([index[keep], index[hi[links]]])
+        vals = np.concatenate([diag[keep], -c[links]])
+        size = keep.size
+    else:
+        rows = np.concatenate([np.arange(nz * nt), lo])
+        cols = np.concatenate([np.arange(nz * nt), hi])
+        vals = np.concatenate([diag, np.where(links, -c, 0.0)])
+        size = nz * nt
+    matrix = sp.csc_matrix((vals, (rows, cols)), shape=(size, size))
+    matrix.sort_indices()
+    return matrix
+
+
+def factor_units(bearing: JournalBearing, position) -> dict[str, float]:
+    """Medians of one factorisation + solve of the converged active set's matrix, s."""
+    evaluation = bearing._evaluate(position, warm=False)
+    fixed = bearing._solver_state().reynolds.fixed
+    cavitated = evaluation.solution.cavitated
+    free = operator_matrix(evaluation.stencil, fixed, cavitated, free_only=True)
+    full = operator_matrix(evaluation.stencil, fixed, cavitated, free_only=False)
+    rhs_free, rhs_full = np.ones(free.shape[0]), np.ones(full.shape[0])
+    repeat = 30 if free.shape[0] < 50_000 else 3
+    fresh, _ = median_time(lambda: qdldl.Solver(free, upper=True).solve(rhs_free), repeat)
+    numeric_free = qdldl.Solver(free, upper=True)
+    numeric, _ = median_time(lambda: (numeric_free.update(free, upper=True), numeric_free.solve(rhs_free)), repeat)
+    masked = qdldl.Solver(full, upper=True)
+    masked_time, _ = median_time(lambda: (masked.update(full, upper=True), masked.solve(rhs_full)), repeat)
+    return {"fresh": fresh, "numeric": numeric, "masked": masked_time, "free_nodes": free.shape[0]}
+
+
+class FactorCounter:
+    """Counts qdldl factorisations (new solvers and numeric updates) by wrapping qdldl.Solver."""
+
+    def __init__(self) -> None:
+        self.count = 0
+        self.sizes: list[int] = []
+        counter = self
+
+        class Solver:
+            def __init__(self, matrix, *args, **kwargs):
+                counter.count += 1
+                counter.sizes.append(matrix.shape[0])
+                self._inner = qdldl.Solver(matrix, *args, **kwargs)
+
+            def update(self, matrix, *args, **kwargs):
+                counter.count += 1
+                counter.sizes.append(matrix.shape[0])
+                return self._inner.update(matrix, *args, **kwargs)
+
+            def solve(self, *args, **kwargs):
+                return self._inner.solve(*args, **kwargs)
+
+        self.solver = Solver
+
+    def __enter__(self) -> FactorCounter:
+        import shaftline.film.reynolds as reynolds
+
+        self._module = reynolds
+        self._saved = reynolds.qdldl
+        reynolds.qdldl = type("qdldl_counting", (), {"Solver": self.solver})  # type: ignore[assignment]
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self._module.qdldl = self._saved
+
+
+def ntua_case():
+    return load_case(ROOT / "examples" / "ntua_stern_tube.toml")["bearing"].cases[0]
+
+
 def ntua() -> None:
-    case = load_case(ROOT / "examples" / "ntua_stern_tube.toml")["bearing"].cases[0]
+    case = ntua_case()
     bearing = JournalBearing(case.geometry, case.operating, case.options)
     equilibrium = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y)
     position = equilibrium.state.position
@@ -54,6 +158,73 @@ def ntua() -> None:
         f"  eps = {eq.state.eccentricity_ratio:.4f}, h_min = {eq.state.min_film_thickness * 1e6:.1f} um, "
         f"S = {eq.state.sommerfeld_number:.5f}"
     )
+    units = factor_units(bearing, position)
+    unit = units["numeric"]
+    print(f"\nIssue 10: cost against one factorisation + solve of the final matrix ({units['free_nodes']} free nodes)")
+    print(f"  unit: qdldl numeric factorisation + solve, free sub-matrix    : {unit * 1e3:7.3f} ms median")
+    print(f"        the same with a fresh AMD ordering and symbolic analysis : {units['fresh'] * 1e3:7.3f} ms")
+    print(f"        numeric factorisation + solve, full periodic pattern     : {units['masked'] * 1e3:7.3f} ms")
+    print(
+        f"  cold solution / unit : {cold / unit:6.1f}x  (target <= 4x; {cold / units['fresh']:.1f}x the fresh "
+        f"ordering, {cold / units['masked']:.1f}x the full pattern)"
+    )
+    print(
+        f"  equilibrium / unit   : {eq_time / unit:6.1f}x  (target <= 12x; {eq_time / units['fresh']:.1f}x the fresh "
+        f"ordering, {eq_time / units['masked']:.1f}x the full pattern)"
+    )
+    # Fine-grid factorisations: larger than the coarse grid (a quarter of the nodes) can be.
+    position_nodes = case.options.axial_nodes * case.options.circumferential_nodes
+    # A fresh bearing each: a solver built before the counter started would not be counted.
+    with FactorCounter() as counter:
+        JournalBearing(case.geometry, case.operating, case.options).solve_at(position, warm_start=False)
+    cold_count = counter.count
+    with FactorCounter() as counter:
+        JournalBearing(case.geometry, case.operating, case.options).equilibrium(
+            case.load_y, case.load_z, tilt_y=case.tilt_y
+        )
+    fine = sum(size > 0.27 * position_nodes for size in counter.sizes)
+    print(f"  factorisations: cold solution {cold_count}, equilibrium {counter.count} ({fine} on the fine grid)")
+
+
+def scaled_equilibrium(shape: tuple[int, int], repeat: int) -> tuple[float, int, int, float]:
+    """Median equilibrium time of the NTUA case on ``shape``; Newton iterations, fine
+    factorisations and eccentricity ratio of the last run."""
+    case = ntua_case()
+    options = replace(case.options, axial_nodes=shape[0], circumferential_nodes=shape[1])
+    bearing = JournalBearing(case.geometry, case.operating, options)
+    # The first run counts the factorisations (a bearing's first solver is built inside it).
+    with FactorCounter() as counter:
+        start = time.perf_counter()
+        eq = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y)
+        times = [time.perf_counter() - start]
+    for _ in range(repeat - 1):
+        start = time.perf_counter()
+        eq = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y)
+        times.append(time.perf_counter() - start)
+    fine = sum(size > 0.27 * shape[0] * shape[1] for size in counter.sizes)
+    return statistics.median(times), eq.iterations, fine, eq.state.eccentricity_ratio
+
+
+def scaling(large: bool) -> None:
+    shapes = [(100, 60), (200, 120), (400, 240)]
+    print("\nIssue 10: equilibrium time against the node count N (NTUA case, Reynolds condition)")
+    rows = []
+    for shape in shapes:
+        median, iterations, fine, eps = scaled_equilibrium(shape, 5 if shape[0] <= 200 else 1)
+        rows.append((shape[0] * shape[1], median))
+        print(
+            f"  {shape[0]:4d} x {shape[1]:3d}: {median:8.3f} s  ({iterations} Newton iterations, "
+            f"{fine} fine factorisations, eps = {eps:.5f})"
+        )
+    nodes, seconds = np.log([r[0] for r in rows]), np.log([r[1] for r in rows])
+    exponent = float(np.polyfit(nodes, seconds, 1)[0])
+    print(f"  fitted exponent 100 x 60 .. 400 x 240: N^{exponent:.2f}  (target <= 1.4)")
+    if large:
+        median, iterations, fine, eps = scaled_equilibrium((800, 480), 1)
+        print(
+            f"   800 x 480: {median:8.3f} s  (target < 30 s; {iterations} Newton iterations, "
+            f"{fine} fine factorisations, eps = {eps:.5f})"
+        )
 
 
 def ross_comparison() -> None:
@@ -116,4 +287,6 @@ def ross_comparison() -> None:
 
 if __name__ == "__main__":
     ntua()
-    ross_comparison()
+    if "--quick" not in sys.argv:
+        scaling(large="--large" in sys.argv)
+        ross_comparison()

@@ -23,7 +23,14 @@ import numpy as np
 
 from shaftline.errors import InputError, require_finite
 from shaftline.film.analytic import eccentricity_guess
-from shaftline.film.geometry import BearingGeometry, Grid, JournalPosition, film_thickness, squeeze_velocity
+from shaftline.film.geometry import (
+    BearingGeometry,
+    Grid,
+    JournalPosition,
+    coarse_shape,
+    film_thickness,
+    squeeze_velocity,
+)
 from shaftline.film.jfo import JfoSolution, void_transport
 from shaftline.film.problem import (
     CAVITATION_MODELS,
@@ -57,6 +64,13 @@ __all__ = [
     "FilmLinearisation",
     "JournalBearing",
 ]
+
+#: Grids with at least this many nodes start the equilibrium from the equilibrium on the grid
+#: halved in both directions (grid continuation): the fine Newton steps are then short, so
+#: each trial's predicted active set is nearly right.
+CONTINUATION_NODES = 20_000
+#: Force tolerance of that coarse equilibrium: it only places the start.
+CONTINUATION_TOLERANCE = 1e-5
 
 
 @dataclass(frozen=True, eq=False)
@@ -127,7 +141,7 @@ class BearingState:
     cavitation : Cavitation
         Cavitation model used.
     iterations : int
-        Active-set iterations (factorisations) of this solution; a warm start
+        Active-set iterations (linear solves) of this solution; a warm start
         (``solve_at(..., warm_start=True)``) needs fewer for the same result.
 
     Equality is identity: the fields hold arrays, which have no single truth value.
@@ -185,7 +199,8 @@ class Equilibrium:
         True when the load cannot be carried above the film floor (``state`` is then
         the position reached at the floor).
     iterations : int
-        Newton iterations used.
+        Newton iterations used (on the bearing's grid; on a grid started from the
+        equilibrium of a coarser one, those after that start).
     residual : float
         Magnitude of ``force + load`` at the end, N.
     """
@@ -307,6 +322,7 @@ class _SolverState:
             value[1:-1, 0] = 0.0
         relative = (value - op.cavitation_pressure) / problem.pressure_scale
         self.reynolds = ReynoldsSolver(grid.shape, self.d_theta, self.d_z, fixed, relative)
+        self.coarse_bearing: JournalBearing | None = None
 
 
 class JournalBearing:
@@ -437,7 +453,7 @@ class JournalBearing:
         """Film thickness on :meth:`grid` for ``position``, m, shape (nz, nt) (no clipping)."""
         return film_thickness(self.geometry, self.grid(position), position)
 
-    def _evaluate(self, position: JournalPosition, warm: bool = True) -> _Evaluation:
+    def _evaluate(self, position: JournalPosition, warm: bool = True, start: np.ndarray | None = None) -> _Evaluation:
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(self.geometry, grid, position)
@@ -450,7 +466,8 @@ class JournalBearing:
             rate = (2.0 / self.operating.speed) * squeeze_velocity(self.geometry, grid, position) / c
         stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate)
         solver = cache.reynolds
-        start = cache.last_cavitated if warm else None
+        if start is None and warm:
+            start = cache.last_cavitated
         solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
         cache.last_cavitated = solution.cavitated
         relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
@@ -598,7 +615,10 @@ class JournalBearing:
         Newton's method on ``force(ey, ez) + load = 0`` with the Jacobian from the
         reused factorisation (frozen active set), a fraction-to-boundary rule that keeps
         the film above the floor, and a backtracking line search on the residual.
-        The tilts are held fixed (misalignment is an input).
+        The tilts are held fixed (misalignment is an input). Each trial starts its
+        cavitated set from the one the step predicts; without ``initial``, a grid of
+        :data:`CONTINUATION_NODES` or more starts from the equilibrium on the grid halved
+        both ways (docs/theory.md, Sect. 4.1).
 
         Parameters
         ----------
@@ -630,6 +650,8 @@ class JournalBearing:
             raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
         c = self.geometry.radial_clearance
         floor = self.options.min_film_floor * c
+        if initial is None:
+            initial = self._coarse_equilibrium(load_y, load_z, tilt_y, tilt_z)
         position = initial or self._initial_position(load, tilt_y, tilt_z)
         position = replace(position, tilt_y=tilt_y, tilt_z=tilt_z, vy=0.0, vz=0.0)
         if self.min_film(position) <= floor:
@@ -650,7 +672,7 @@ class JournalBearing:
             jacobian = self._position_jacobian(evaluation)
             accepted = None
             for step, sufficient in self._candidate_steps(jacobian, residual, load, c):
-                accepted = self._line_search(position, step, load, norm, floor, sufficient)
+                accepted = self._line_search(evaluation, step, load, norm, floor, sufficient)
                 if accepted is not None:
                     break
             if accepted is None:
@@ -671,6 +693,29 @@ class JournalBearing:
         return Equilibrium(state, load_y, load_z, converged, contact, iterations, residual_norm)
 
     # -- helpers -------------------------------------------------------------------------
+    def _coarse_equilibrium(self, load_y: float, load_z: float, tilt_y: float, tilt_z: float) -> JournalPosition | None:
+        """Equilibrium position on the grid halved in both directions (grid continuation), or
+        None on a grid below :data:`CONTINUATION_NODES` or where it does not converge.
+
+        Depends only on the problem and the arguments, as the equilibrium does."""
+        options = self.options
+        shape = coarse_shape((options.axial_nodes, options.circumferential_nodes))
+        if options.axial_nodes * options.circumferential_nodes < CONTINUATION_NODES or shape is None:
+            return None
+        cache = self._solver_state()
+        if cache.coarse_bearing is None:
+            coarse_options = replace(
+                options,
+                axial_nodes=shape[0],
+                circumferential_nodes=shape[1],
+                tolerance=max(options.tolerance, CONTINUATION_TOLERANCE),
+            )
+            cache.coarse_bearing = JournalBearing(self.geometry, self.operating, coarse_options)
+        coarse = cache.coarse_bearing.equilibrium(load_y, load_z, tilt_y=tilt_y, tilt_z=tilt_z)
+        if not coarse.converged or coarse.contact:
+            return None
+        return coarse.state.position
+
     def _moved(self, position: JournalPosition, step: np.ndarray) -> JournalPosition:
         return replace(position, ey=position.ey + float(step[0]), ez=position.ez + float(step[1]))
 
@@ -690,7 +735,7 @@ class JournalBearing:
 
     def _line_search(
         self,
-        position: JournalPosition,
+        evaluation: _Evaluation,
         step: np.ndarray,
         load: np.ndarray,
         norm: float,
@@ -698,7 +743,11 @@ class JournalBearing:
         sufficient: float,
     ) -> _Evaluation | None:
         """Backtracking that keeps the film above the floor and lowers the force residual
-        (by the Armijo share ``sufficient * alpha`` for a Newton step, at all for a fallback)."""
+        (by the Armijo share ``sufficient * alpha`` for a Newton step, at all for a fallback).
+
+        Each trial starts its active set from the one predicted by the step (see
+        :meth:`_predicted_cavitation`), which depends only on the current evaluation."""
+        position = evaluation.position
         hmin_now = self.min_film(position)
         alpha = 1.0
         # Fraction to the boundary: never close more than 80 % of the film left above the floor.
@@ -708,7 +757,8 @@ class JournalBearing:
             alpha *= 0.5
         while alpha > 1e-8:
             try:
-                trial = self._evaluate(self._moved(position, alpha * step))
+                start = self._predicted_cavitation(evaluation, alpha * step)
+                trial = self._evaluate(self._moved(position, alpha * step), start=start)
             except _NegativeFilm:
                 alpha *= 0.5
                 continue
@@ -716,6 +766,33 @@ class JournalBearing:
                 return trial
             alpha *= 0.5
         return None
+
+    def _predicted_cavitation(self, evaluation: _Evaluation, step: np.ndarray) -> np.ndarray | None:
+        """Cavitated set after the journal moves by ``step`` (m), predicted to first order.
+
+        The film is linear in the offsets, so the change of the stencil is exact; the
+        pressure change ``dP`` with the set frozen comes from the factor of the current
+        set (one triangular solve). A free node whose predicted pressure ``P + dP`` is
+        negative cavitates; a cavitated node whose predicted multiplier
+        ``w + dR + A dP`` (``w = A P - b``) is negative fills. None for the
+        half-Sommerfeld model, which has no active set.
+        """
+        if self.options.cavitation == "half_sommerfeld":
+            return None
+        cache = self._solver_state()
+        solver = cache.reynolds
+        stencil, solution = evaluation.stencil, evaluation.solution
+        d_ey, d_ez = self._offset_directions(evaluation)
+        d_film = d_ey * float(step[0]) + d_ez * float(step[1])
+        film = evaluation.film / self.geometry.radial_clearance
+        dc_theta, dc_z, d_couette = stencil_derivative(film, d_film, cache.d_theta, cache.d_z)
+        pressure = evaluation.relative_pressure
+        d_residual = apply_operator(dc_theta, dc_z, pressure) - d_couette
+        d_pressure = solver.linear_response(stencil, solution, d_residual)[0]
+        multiplier = apply_operator(stencil.c_theta, stencil.c_z, pressure + d_pressure) - stencil.rhs + d_residual
+        cavitated = solution.cavitated
+        predicted = np.where(cavitated, multiplier > 0.0, pressure + d_pressure < 0.0)
+        return predicted & ~solver.fixed
 
     def _limit_step(self, step: np.ndarray, c: float) -> np.ndarray:
         length = float(np.hypot(*step))

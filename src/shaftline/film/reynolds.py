@@ -59,8 +59,23 @@ __all__ = [
     "stencil_diagonal",
 ]
 
-#: Active-set iterations allowed before the solver gives up (each is one factorisation).
+#: Active-set iterations allowed before the solver gives up.
 MAX_ACTIVE_SET_ITERATIONS = 200
+#: Factors kept per grid, keyed by active set. One: the active-set iteration visits 4-7 sets on
+#: each grid in turn, so a few more would all be evicted before their set came back, and the
+#: memory estimate (film/problem.py) counts one factor per grid.
+FACTOR_CACHE = 1
+#: Conjugate-gradient solves of the trial active sets, preconditioned by the factor of a nearby
+#: set: given up for a factorisation after this many iterations (a few dozen triangular solves
+#: cost about one factorisation), and converged when the energy-norm error is below this
+#: share of the solution's (the trial sets need only the signs; the settled set is solved
+#: again with its own factor).
+PCG_MAX_ITERATIONS = 30
+PCG_TOLERANCE = 1e-9
+#: Grids below this many nodes factorise every trial set: there a conjugate-gradient
+#: iteration, its array work in numpy included, costs a tenth of a factorisation or more
+#: (0.25 ms against 1-3 ms on 100 x 60), and a trial set needs 10-25 of them.
+PCG_MIN_NODES = 10_000
 
 
 class ReynoldsConvergenceError(SolverFailure):
@@ -187,7 +202,9 @@ class ReynoldsSolution:
     cavitated : ndarray of bool (nz, nt)
         Nodes held at the cavitation pressure.
     iterations : int
-        Active-set iterations (factorisations) used.
+        Active-set iterations used: linear solves of trial sets (factorisations, or on
+        fine grids conjugate-gradient solves), the final solve with the settled set's
+        factor included.
     """
 
     pressure: np.ndarray
@@ -226,10 +243,19 @@ class ReynoldsSolver:
         self.fixed_pressure = np.where(self.fixed, fixed_pressure, 0.0)
         self.pattern = _pattern(*shape)
         self._factor: qdldl.Solver | None = None
+        #: Factorise the full periodic pattern with the held rows and columns zeroed (one
+        #: symbolic analysis for every set) instead of the free sub-matrix: set on the small
+        #: coarse grids that only predict the cavitated set.
+        self.masked = False
+        self._masked_factor: qdldl.Solver | None = None
+        self._factors: dict[bytes, tuple[qdldl.Solver, Stencil]] = {}
+        self._slot_cache: tuple[Stencil, np.ndarray] | None = None
+        self._cache_size = FACTOR_CACHE
         self._factor_mask: np.ndarray | None = None
         self._factor_stencil: Stencil | None = None
         self._coarse_cache: tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple[np.ndarray, ...]] | None = None
         self.coarse_iterations = 0
+        self.pcg_iterations = 0
 
     # -- symmetric masked system -------------------------------------------------
     def _masked_values(self, stencil: Stencil, held: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -251,27 +277,188 @@ class ReynoldsSolver:
         values[~is_diag & ~both_free] = 0.0
         return values, diag
 
-    def _factorise(self, stencil: Stencil, held: np.ndarray) -> tuple[np.ndarray, Any]:
-        """Factorise the masked matrix; returns its diagonal and the (reused) qdldl solver."""
-        values, diag = self._masked_values(stencil, held)
+    def _free_matrix(self, stencil: Stencil, free: np.ndarray) -> sp.csc_matrix:
+        """Upper triangle of ``A[free, free]`` in CSC form, free nodes numbered in node order.
+
+        Filtered from the slots of the full periodic pattern: renumbering the kept rows and
+        columns in node order keeps them sorted, so no sort or format conversion is needed.
+        """
+        pattern = self.pattern
+        keep = free[pattern.slot_row] & free[pattern.slot_col]
+        index = np.cumsum(free) - 1
+        values = self._slot_values(stencil)[keep]
+        rows = index[pattern.slot_row[keep]]
+        count = int(index[-1]) + 1 if free.size else 0
+        indptr = np.zeros(count + 1, dtype=np.int64)
+        np.cumsum(np.bincount(index[pattern.slot_col[keep]], minlength=count), out=indptr[1:])
+        return sp.csc_matrix((values, rows, indptr), shape=(count, count))
+
+    def _slot_values(self, stencil: Stencil) -> np.ndarray:
+        """Values of A on every slot of the full pattern (upper triangle), kept per stencil:
+        an active-set iteration builds several sub-matrices of one film."""
+        cached = self._slot_cache
+        if cached is not None and cached[0] is stencil:
+            return cached[1]
+        pattern = self.pattern
+        values = np.empty(pattern.slot_kind.size)
+        is_diag = pattern.slot_kind == 0
+        is_theta = pattern.slot_kind == 1
+        is_z = pattern.slot_kind == 2
+        values[is_diag] = stencil_diagonal(stencil).ravel()[pattern.slot_link[is_diag]]
+        values[is_theta] = -stencil.c_theta.ravel()[pattern.slot_link[is_theta]]
+        values[is_z] = -stencil.c_z.ravel()[pattern.slot_link[is_z]]
+        self._slot_cache = (stencil, values)
+        return values
+
+    def _factorise(self, stencil: Stencil, held: np.ndarray) -> Any:
+        """LDL^T factor of the free sub-matrix ``A[free, free]`` (qdldl, AMD of that graph).
+
+        The factors of the last :data:`FACTOR_CACHE` active sets are kept, each with its
+        ordering and symbolic analysis, keyed by the set: the same set again (a Newton step
+        that does not move the cavitation boundary) costs only the numeric factorisation,
+        and the same set and film (the frozen-set derivatives after a solution) nothing. The factor
+        depends only on the matrix, so a solution computed with it does not depend on the
+        path that found the set. Returns None when no node is free.
+        """
+        if not (~held).any():
+            self._factor, self._factor_mask, self._factor_stencil = None, None, None
+            return None
+        key = np.packbits(held).tobytes()
+        entry = self._factors.pop(key, None)
+        if entry is not None and entry[1] is stencil:
+            solver = entry[0]
+        else:
+            matrix = self._free_matrix(stencil, ~held.ravel())
+            if entry is not None:
+                solver = entry[0]
+                solver.update(matrix, upper=True)
+            else:
+                # Drop the oldest factor first: factors of a fine grid need not fit in memory twice.
+                while len(self._factors) >= self._cache_size:
+                    self._factors.pop(next(iter(self._factors)))
+                self._factor = None
+                solver = qdldl.Solver(matrix, upper=True)
+        self._factors[key] = (solver, stencil)
+        self._factor, self._factor_mask, self._factor_stencil = solver, held.copy(), stencil
+        return solver
+
+    def _solve_free(
+        self, stencil: Stencil, held: np.ndarray, rhs: np.ndarray, guess: np.ndarray | None, direct: bool
+    ) -> np.ndarray:
+        """``x`` with ``A[free, free] x[free] = rhs[free]`` and ``x = 0`` on the held nodes (flat).
+
+        Unless ``direct``, conjugate gradients preconditioned by the kept factor (of a nearby
+        active set, possibly of a nearby film) come first: they end in a few iterations, as
+        the two matrices differ in the rows and columns of the switched nodes and by the
+        small change of the film. Otherwise, or when they do not converge, the factor of
+        this set. ``guess`` (flat, or None) starts the iteration.
+        """
+        free = ~held.ravel()
+        out = np.zeros(free.size)
+        if not free.any():
+            return out
+        if self.masked:
+            return self._masked_factorisation(stencil, held).solve(np.where(free, rhs.ravel(), 0.0))
+        iterative = free.size >= PCG_MIN_NODES and self._factor is not None and self._factor_mask is not None
+        if iterative and not direct:
+            solution = self._pcg(stencil, free, rhs.ravel()[free], None if guess is None else guess[free])
+            if solution is not None:
+                out[free] = solution
+                return out
+        factor = self._factorise(stencil, held)
+        out[free] = factor.solve(rhs.ravel()[free])
+        return out
+
+    def _masked_factorisation(self, stencil: Stencil, held: np.ndarray) -> Any:
+        """Factor of the full pattern with the held rows and columns zeroed, their diagonals
+        kept (so ``x = 0`` there for a zero right-hand side); the symbolic analysis is reused."""
+        values, _ = self._masked_values(stencil, held)
         matrix = self.pattern.upper.copy()
         matrix.data = values
-        if self._factor is None:
-            self._factor = qdldl.Solver(matrix, upper=True)
+        if self._masked_factor is None:
+            self._masked_factor = qdldl.Solver(matrix, upper=True)
         else:
-            self._factor.update(matrix, upper=True)
-        self._factor_mask = held.copy()
-        self._factor_stencil = stencil
-        return diag, self._factor
+            self._masked_factor.update(matrix, upper=True)
+        return self._masked_factor
 
-    def _solve_masked(self, stencil: Stencil, held: np.ndarray, held_values: np.ndarray) -> np.ndarray:
+    def _is_factored(self, stencil: Stencil, held: np.ndarray) -> bool:
+        """Whether the kept factor is that of ``stencil`` and ``held`` (or no node is free)."""
+        if held.all():
+            return True
+        mask = self._factor_mask
+        return self._factor_stencil is stencil and mask is not None and np.array_equal(mask, held)
+
+    def _pcg(self, stencil: Stencil, free: np.ndarray, rhs: np.ndarray, guess: np.ndarray | None) -> np.ndarray | None:
+        """Conjugate gradients on ``A[free, free]`` preconditioned by the kept factor.
+
+        The preconditioner applies the kept factor's inverse on the nodes free in both sets
+        and the inverse diagonal on the nodes freed since. For the same film it differs from
+        the inverse of the new matrix by a term of rank at most about twice the switched
+        nodes, so the iteration ends in about that many steps (Golub & Van Loan, Matrix
+        Computations, 4th ed., Sect. 11.5); a factor of a nearby film adds a perturbation
+        small in norm, which costs a few more.
+        Stops when the preconditioned residual (the error in the energy norm) falls below
+        ``PCG_TOLERANCE`` of the solution's energy norm; None when it does not within
+        ``PCG_MAX_ITERATIONS``.
+        """
+        assert self._factor is not None and self._factor_mask is not None
+        factor = self._factor
+        free_kept = ~self._factor_mask.ravel()
+        size = free.size
+        in_kept = free_kept[free]  # free now and in the kept factor
+        kept_pos = (np.cumsum(free_kept) - 1)[free][in_kept]  # their places in the factor
+        kept_count = int(np.count_nonzero(free_kept))
+        diag = stencil_diagonal(stencil).ravel()[free]
+        extra = ~in_kept
+        shape = self.shape
+
+        def operator(x: np.ndarray) -> np.ndarray:
+            full = np.zeros(size)
+            full[free] = x
+            return apply_operator(stencil.c_theta, stencil.c_z, full.reshape(shape)).ravel()[free]
+
+        def precondition(r: np.ndarray) -> np.ndarray:
+            z = r / diag
+            kept_rhs = np.zeros(kept_count)
+            kept_rhs[kept_pos] = r[in_kept]
+            z[in_kept] = factor.solve(kept_rhs)[kept_pos]
+            z[extra] = r[extra] / diag[extra]
+            return z
+
+        x = np.zeros(rhs.size) if guess is None else guess.copy()
+        r = rhs - operator(x)
+        z = precondition(r)
+        p = z.copy()
+        rz = _dot(r, z)
+        for step in range(PCG_MAX_ITERATIONS):
+            energy = abs(_dot(x, rhs)) + abs(_dot(x, r))
+            if rz <= PCG_TOLERANCE**2 * energy or rz == 0.0:
+                self.pcg_iterations += step
+                return x
+            q = operator(p)
+            alpha = rz / _dot(p, q)
+            x += alpha * p
+            r -= alpha * q
+            z = precondition(r)
+            rz_new = _dot(r, z)
+            p = z + (rz_new / rz) * p
+            rz = rz_new
+        return None
+
+    def _solve_masked(
+        self,
+        stencil: Stencil,
+        held: np.ndarray,
+        held_values: np.ndarray,
+        guess: np.ndarray | None = None,
+        direct: bool = True,
+    ) -> np.ndarray:
         """Solve ``A P = b`` on the free nodes with ``P = held_values`` on held nodes."""
-        diag, factor = self._factorise(stencil, held)
         # Moving the held values to the right-hand side: b - A_{free,held} P_held.
         boundary = np.where(held, held_values, 0.0)
         rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
-        rhs = np.where(held, diag.reshape(self.shape) * held_values, rhs)
-        return factor.solve(rhs.ravel()).reshape(self.shape)
+        pressure = self._solve_free(stencil, held, rhs, None if guess is None else guess.ravel(), direct)
+        return (pressure + boundary.ravel()).reshape(self.shape)
 
     def solve_linear(self, stencil: Stencil) -> np.ndarray:
         """Full-Sommerfeld solution (no cavitation), dimensionless pressure."""
@@ -331,6 +518,9 @@ class ReynoldsSolver:
             solver = ReynoldsSolver(
                 (nz_c, nt_c), 2.0 * self.d_theta, self.d_z * (nz - 1) / (nz_c - 1), fixed_c, value_c
             )
+            # Small coarse grids only predict the set: one symbolic analysis of the full pattern,
+            # then numeric factorisations only (2-4 times cheaper there than a fresh ordering).
+            solver.masked = nz_c * nt_c < PCG_MIN_NODES
             self._coarse_cache = (solver, z_index, z_weight, (row_lo, row_hi, col_lo, col_hi, row_w))
         return self._coarse_cache
 
@@ -348,7 +538,7 @@ class ReynoldsSolver:
         solver, z_index, z_weight, (row_lo, row_hi, col_lo, col_hi, row_w) = coarse
         film_c = (film[z_index] * (1.0 - z_weight)[:, None] + film[z_index + 1] * z_weight[:, None])[:, ::2]
         stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z)
-        solution = solver._solve_reynolds_lcp(stencil_c, None, film_c)
+        solution = solver._solve_reynolds_lcp(stencil_c, None, film_c, exact=False)
         self.coarse_iterations = solution.iterations
         diag = stencil_diagonal(stencil_c)
         multiplier = apply_operator(stencil_c.c_theta, stencil_c.c_z, solution.pressure) - stencil_c.rhs
@@ -360,8 +550,20 @@ class ReynoldsSolver:
         return (fine < 0.0) & ~self.fixed
 
     def _solve_reynolds_lcp(
-        self, stencil: Stencil, initial_cavitated: np.ndarray | None, film: np.ndarray | None = None
+        self,
+        stencil: Stencil,
+        initial_cavitated: np.ndarray | None,
+        film: np.ndarray | None = None,
+        exact: bool = True,
     ) -> ReynoldsSolution:
+        """Primal-dual active set (Hintermueller, Ito & Kunisch 2002) for the Reynolds LCP.
+
+        The trial sets are solved by :meth:`_solve_free` (conjugate gradients preconditioned
+        by the kept factor where they converge); once the set has settled, its pressures are
+        solved again with the factor of that set (``exact``), so that the result depends only
+        on the film and the set, which is unique, not on the start or the path. The coarse
+        grids that only predict the set skip that last solve.
+        """
         iterations = 0
         if initial_cavitated is None and film is not None and stencil.rhs.shape == film.shape:
             initial_cavitated = self._nested_start(film)
@@ -372,9 +574,13 @@ class ReynoldsSolver:
         else:
             cavitated = initial_cavitated & ~self.fixed
         scale = 1.0
+        guess: np.ndarray | None = None
+        values = np.where(self.fixed, self.fixed_pressure, 0.0)
+        direct = False
         for _ in range(MAX_ACTIVE_SET_ITERATIONS):
             held = self.fixed | cavitated
-            pressure = self._solve_masked(stencil, held, np.where(self.fixed, self.fixed_pressure, 0.0))
+            pressure = self._solve_masked(stencil, held, values, guess, direct=direct)
+            guess = pressure
             iterations += 1
             scale = max(float(np.abs(pressure).max()), 1e-300)
             multiplier = apply_operator(stencil.c_theta, stencil.c_z, pressure) - stencil.rhs
@@ -382,6 +588,11 @@ class ReynoldsSolver:
             leave = cavitated & (multiplier < -1e-12 * rhs_scale)
             enter = ~held & (pressure < -1e-12 * scale)
             if not leave.any() and not enter.any():
+                if exact and not self._is_factored(stencil, held):
+                    # Settled on an iterative solution: solve once more with this set's factor
+                    # (and check it again) so that the result does not depend on the path.
+                    direct = True
+                    continue
                 pressure = np.where(cavitated, 0.0, pressure)
                 return ReynoldsSolution(pressure, np.ones_like(pressure), cavitated, iterations)
             cavitated = (cavitated & ~leave) | enter
@@ -394,20 +605,15 @@ class ReynoldsSolver:
         factorisation of the converged active set when it is still held.
         """
         held = self.fixed | solution.cavitated
-        factor = self._factor
-        if (
-            factor is None
-            or self._factor_stencil is not stencil
-            or self._factor_mask is None
-            or not np.array_equal(self._factor_mask, held)
-        ):
-            _, factor = self._factorise(stencil, held)
         columns = np.atleast_2d(rhs_change.reshape(-1, self.shape[0] * self.shape[1]))
-        out = np.empty_like(columns)
-        for k, column in enumerate(columns):
-            rhs = np.where(held.ravel(), 0.0, -column)
-            out[k] = factor.solve(rhs)
+        out = np.array([self._solve_free(stencil, held, -column, None, direct=True) for column in columns])
         return out.reshape((-1,) + self.shape)
+
+
+def _dot(a: np.ndarray, b: np.ndarray) -> float:
+    """Inner product without BLAS: a BLAS ``ddot`` on a vector this short spends more time
+    waking its threads than computing, and far more on a machine shared with other work."""
+    return float(np.einsum("i,i->", a, b))
 
 
 def _marched_film_fraction(film: np.ndarray, cavitated: np.ndarray) -> np.ndarray:

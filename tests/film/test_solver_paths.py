@@ -1,0 +1,144 @@
+"""The Reynolds-condition pressure does not depend on the solver's path (issue 10).
+
+The discrete problem ``P >= 0, w = A P - b >= 0, P w = 0`` has a symmetric M-matrix ``A``,
+hence a P-matrix, and so exactly one solution (Cottle, Pang & Stone, The Linear
+Complementarity Problem, 1992, Thm. 3.3.7). The solver reaches it by several paths: the
+set predicted on the coarse grids (cold start), the set of an earlier solution (warm start),
+conjugate gradients preconditioned by the factor of another set or film, and one final
+solve with the factor of the settled set. The reference here takes none of them: a plain
+primal-dual active-set iteration (Hintermueller, Ito & Kunisch 2002) started from the
+full-Sommerfeld solution, with every trial set solved by scipy's ``spsolve`` (SuperLU) on
+an operator assembled in this file from the stencil's conductances.
+
+Cases: the design-data grid of ``test_design_data.py`` (61 x 240, film starting at the line
+of maximum film, L/D = 1 and 1/2) at eps = 0.2, 0.6 and 0.9, and the periodic film of the
+same bearing with the journal tilted (misaligned), on 41 x 144.
+
+Tolerance 1e-9 of the largest pressure: two direct solves of the same linear system agree
+to about the condition number of ``A`` (below 1e5 on these grids) times the unit roundoff
+(1.1e-16), i.e. 1e-11; 1e-9 leaves room for that and fails for any node on the wrong side
+of the cavitation boundary (which changes the pressure at its neighbours by 1e-4 or more).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from shaftline.film import JournalPosition
+from tests.conftest import CLEARANCE, make_bearing
+
+TOLERANCE = 1e-9
+
+
+def _operator(stencil) -> sp.csr_matrix:
+    """The finite-volume operator A (net diffusive outflow) from the link conductances."""
+    nz, nt = stencil.rhs.shape
+    node = np.arange(nz * nt).reshape(nz, nt)
+    a = np.concatenate([node.ravel(), node[:-1].ravel()])
+    b = np.concatenate([np.roll(node, -1, axis=1).ravel(), node[1:].ravel()])
+    c = np.concatenate([stencil.c_theta.ravel(), stencil.c_z.ravel()])
+    links = sp.coo_matrix((c, (a, b)), shape=(nz * nt, nz * nt)).tocsr()
+    links = links + links.T
+    return (sp.diags(np.asarray(links.sum(axis=1)).ravel()) - links).tocsr()
+
+
+def _reference_pressure(stencil, fixed: np.ndarray, fixed_pressure: np.ndarray) -> np.ndarray:
+    """Primal-dual active set from the full-Sommerfeld solution, each set by ``spsolve``."""
+    matrix = _operator(stencil)
+    rhs = stencil.rhs.ravel()
+    fixed = fixed.ravel()
+    cavitated = np.zeros(fixed.size, dtype=bool)
+    for _ in range(500):
+        held = fixed | cavitated
+        free = ~held
+        pressure = np.where(fixed, fixed_pressure.ravel(), 0.0)
+        system = matrix[free][:, free].tocsc()
+        pressure[free] = spla.spsolve(system, rhs[free] - matrix[free][:, held] @ pressure[held])
+        multiplier = matrix @ pressure - rhs
+        enter = free & (pressure < -1e-12 * np.abs(pressure).max())
+        leave = cavitated & (multiplier < -1e-12 * np.abs(rhs).max())
+        if not enter.any() and not leave.any():
+            return np.where(cavitated, 0.0, pressure).reshape(stencil.rhs.shape)
+        cavitated = (cavitated & ~leave) | enter
+    raise AssertionError("reference active set did not settle")
+
+
+def _reference(bearing, position: JournalPosition) -> np.ndarray:
+    """Reference pressure (dimensionless, above cavitation, fixed nodes included) at ``position``."""
+    evaluation = bearing._evaluate(position, warm=False)
+    solver = bearing._solver_state().reynolds
+    pressure = _reference_pressure(evaluation.stencil, solver.fixed, solver.fixed_pressure)
+    return np.where(solver.fixed, solver.fixed_pressure, pressure)
+
+
+def _relative(bearing, state_pressure: np.ndarray, reference: np.ndarray) -> float:
+    relative = (state_pressure - bearing.operating.cavitation_pressure) / bearing.pressure_scale
+    return float(np.abs(relative - reference).max() / np.abs(reference).max())
+
+
+def _design_bearing(length_to_diameter: float):
+    return make_bearing(
+        length_to_diameter,
+        axial_nodes=61,
+        circumferential_nodes=240,
+        film_start="max_film",
+        cavitated_shear="full_film",
+    )
+
+
+DESIGN_CASES = [(1.0, 0.2), (1.0, 0.6), (1.0, 0.9), (0.5, 0.6)]
+
+
+@pytest.mark.parametrize("length_to_diameter, epsilon", DESIGN_CASES, ids=lambda v: str(v))
+def test_cold_and_warm_start_match_the_reference(length_to_diameter, epsilon):
+    """Cold start (coarse-grid prediction), then a warm start from a solution at a nearby
+    position (its set and its factor, of another film): both match the reference."""
+    bearing = _design_bearing(length_to_diameter)
+    position = JournalPosition.from_polar(epsilon * CLEARANCE, np.pi)
+    nearby = JournalPosition.from_polar((epsilon + 0.02) * CLEARANCE, np.pi + 0.05)
+    reference = _reference(bearing, position)
+    cold = bearing.solve_at(position, warm_start=False)
+    assert _relative(bearing, cold.pressure, reference) <= TOLERANCE
+    bearing.solve_at(nearby, warm_start=False)
+    solver = bearing._solver_state().reynolds
+    before = solver.pcg_iterations
+    warm = bearing.solve_at(position, warm_start=True)
+    assert _relative(bearing, warm.pressure, reference) <= TOLERANCE
+    # The warm start took the iterative path (conjugate gradients) before its final solve.
+    assert solver.pcg_iterations > before
+    # and the final solve with the settled set's factor makes the two bit for bit equal
+    assert np.array_equal(warm.pressure, cold.pressure)
+
+
+@pytest.mark.parametrize(
+    "ey, ez, tilt_y, tilt_z",
+    [(-0.5e-4, 0.2e-4, 4e-4, 0.0), (-0.3e-4, -0.4e-4, -2e-4, 3e-4), (-0.75e-4, 0.3e-4, 1e-4, -1e-4)],
+)
+def test_misaligned_positions_match_the_reference(ey, ez, tilt_y, tilt_z):
+    """Tilted journals on the periodic film, solved one after the other with warm starts
+    (as a sweep does): every solution matches the reference."""
+    bearing = make_bearing(1.0, axial_nodes=41, circumferential_nodes=144)
+    bearing.solve_at(JournalPosition(ey=-0.4e-4, ez=0.0))  # a warm start from elsewhere
+    position = JournalPosition(ey=ey, ez=ez, tilt_y=tilt_y, tilt_z=tilt_z)
+    reference = _reference(bearing, position)
+    assert _relative(bearing, bearing.solve_at(position).pressure, reference) <= TOLERANCE
+    assert _relative(bearing, bearing.solve_at(position, warm_start=False).pressure, reference) <= TOLERANCE
+
+
+def test_frozen_set_derivatives_match_a_direct_solve():
+    """The pressure change with the cavitated set frozen (behind the Newton Jacobian and the
+    stiffness and damping) against ``spsolve`` on the free sub-matrix of the reference
+    operator: the same linear system, so the same 1e-9."""
+    bearing = _design_bearing(1.0)
+    evaluation = bearing._evaluate(JournalPosition.from_polar(0.6 * CLEARANCE, np.pi), warm=False)
+    solver = bearing._solver_state().reynolds
+    change = np.random.default_rng(10).normal(size=evaluation.film.shape)
+    d_pressure = solver.linear_response(evaluation.stencil, evaluation.solution, change)[0]
+    free = ~(solver.fixed | evaluation.solution.cavitated).ravel()
+    matrix = _operator(evaluation.stencil)[free][:, free].tocsc()
+    expected = np.zeros(free.size)
+    expected[free] = spla.spsolve(matrix, -change.ravel()[free])
+    assert np.abs(d_pressure.ravel() - expected).max() <= TOLERANCE * np.abs(expected).max()
