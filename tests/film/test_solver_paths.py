@@ -27,6 +27,7 @@ import pytest
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from shaftline.errors import InputError
 from shaftline.film import JournalPosition
 from tests.conftest import CLEARANCE, make_bearing
 
@@ -142,3 +143,55 @@ def test_frozen_set_derivatives_match_a_direct_solve():
     expected = np.zeros(free.size)
     expected[free] = spla.spsolve(matrix, -change.ravel()[free])
     assert np.abs(d_pressure.ravel() - expected).max() <= TOLERANCE * np.abs(expected).max()
+
+
+@pytest.mark.parametrize("tilt_y", [0.0, 4e-4])
+def test_equilibrium_started_from_a_neighbours_set_is_the_same_equilibrium(tilt_y):
+    """``initial_cavitated`` (the sweep's warm start) changes the path, not the answer.
+
+    The neighbour is the equilibrium under a load 10 % smaller; started from its position and
+    cavitated set, the equilibrium under the full load must land on the cold start's journal
+    position to 1e-9 of the clearance and on its pressure to the module's tolerance: the
+    Newton iterations of both end below the same force tolerance, and the pressure of each
+    film solution is the unique LCP solution (the argument at the top of this file). The
+    neighbour's set must also spare active-set iterations in the first film solution.
+    """
+    bearing = make_bearing(1.0, axial_nodes=41, circumferential_nodes=144, tolerance=1e-10)
+    load = -6e3
+    cold = bearing.equilibrium(load, tilt_y=tilt_y)
+    neighbour = bearing.equilibrium(0.9 * load, tilt_y=tilt_y)
+    start = neighbour.state.position
+    from_start = bearing.equilibrium(load, tilt_y=tilt_y, initial=start)
+    solver = bearing._solver_state().reynolds
+    starts = []
+    solve = solver.solve
+
+    def recording(stencil, film, cavitation="reynolds", initial_cavitated=None):
+        starts.append(initial_cavitated)
+        return solve(stencil, film, cavitation, initial_cavitated)
+
+    solver.solve = recording
+    from_set = bearing.equilibrium(load, tilt_y=tilt_y, initial=start, initial_cavitated=neighbour.state.cavitated)
+    del solver.solve
+    # The first film solution of the equilibrium started from the neighbour's set.
+    np.testing.assert_array_equal(starts[0], neighbour.state.cavitated)
+    for warm in (from_start, from_set):
+        assert warm.converged and not warm.contact
+        assert abs(warm.state.position.ey - cold.state.position.ey) < 1e-9 * CLEARANCE
+        assert abs(warm.state.position.ez - cold.state.position.ez) < 1e-9 * CLEARANCE
+        scale = np.abs(cold.state.pressure).max()
+        assert np.abs(warm.state.pressure - cold.state.pressure).max() < 1e-6 * scale
+    # The set carried over is the journal-position path's answer exactly (same first position).
+    np.testing.assert_array_equal(from_set.state.cavitated, from_start.state.cavitated)
+    assert from_set.iterations == from_start.iterations
+    first_cold = bearing.solve_at(start, warm_start=False)
+    bearing.solve_at(neighbour.state.position, warm_start=False)
+    first_warm = bearing.solve_at(start)  # warm from the neighbour's set, as initial_cavitated does
+    assert first_warm.iterations < first_cold.iterations
+    np.testing.assert_array_equal(first_warm.cavitated, first_cold.cavitated)
+
+
+def test_a_start_set_of_the_wrong_shape_names_the_argument():
+    bearing = make_bearing(1.0, axial_nodes=21, circumferential_nodes=72)
+    with pytest.raises(InputError, match="initial_cavitated"):
+        bearing.equilibrium(-5e3, initial_cavitated=np.zeros((5, 5), dtype=bool))

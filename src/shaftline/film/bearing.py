@@ -140,6 +140,9 @@ class BearingState:
         by a film this grid can resolve).
     cavitation : Cavitation
         Cavitation model used.
+    cavitated : ndarray of bool (nz, nt)
+        Nodes held at the cavitation pressure (the solution's active set); a nearby
+        equilibrium can start from it (``equilibrium(..., initial_cavitated=...)``).
     iterations : int
         Active-set iterations (linear solves) of this solution; a warm start
         (``solve_at(..., warm_start=True)``) needs fewer for the same result.
@@ -180,6 +183,7 @@ class BearingState:
     sommerfeld_number: float
     contact: bool
     cavitation: Cavitation
+    cavitated: np.ndarray
     iterations: int
 
 
@@ -609,6 +613,7 @@ class JournalBearing:
         tilt_z: float = 0.0,
         initial: JournalPosition | None = None,
         progress: Callable[[int, float], None] | None = None,
+        initial_cavitated: np.ndarray | None = None,
     ) -> Equilibrium:
         """Find the mid-plane journal offsets at which the film carries the applied load.
 
@@ -632,6 +637,11 @@ class JournalBearing:
             Called after each Newton iteration with its number and the force residual
             ``|force + load|`` as a share of the load; on a fine grid an iteration takes
             seconds to minutes. It does not change the result.
+        initial_cavitated : ndarray of bool (nz, nt), optional
+            Cavitated set to start the first film solution from, e.g. ``state.cavitated`` of
+            a neighbouring equilibrium (a sweep); without it the set comes from the coarse
+            grids. The solution of the cavitation problem is unique, so this changes the
+            active-set iterations, not the result.
 
         Raises
         ------
@@ -660,7 +670,17 @@ class JournalBearing:
         # Start the active set from the coarse grid, never from an earlier call: the
         # equilibrium then depends only on the problem and its arguments.
         self._solver_state().last_cavitated = None
-        evaluation = self._evaluate(position)
+        start = None
+        if initial_cavitated is not None:
+            start = np.asarray(initial_cavitated, dtype=bool)
+            if start.shape != self._solver_state().grid.shape:
+                raise InputError(
+                    "initial_cavitated",
+                    f"shape {start.shape}",
+                    "",
+                    f"the grid's shape {self._solver_state().grid.shape} (axial, circumferential nodes)",
+                )
+        evaluation = self._evaluate(position, start=start)
         residual = evaluation.force + load
         contact = False
         iterations = 0
@@ -926,6 +946,7 @@ class JournalBearing:
             sommerfeld_number=sommerfeld,
             contact=bool(hmin <= self.options.min_film_floor * g.radial_clearance),
             cavitation=self.options.cavitation,
+            cavitated=evaluation.solution.cavitated,
             iterations=evaluation.solution.iterations,
         )
 

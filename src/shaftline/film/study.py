@@ -17,6 +17,8 @@ from shaftline.film.geometry import BearingGeometry
 from shaftline.film.problem import OperatingPoint, SolverOptions
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from shaftline.film.bearing import Equilibrium, JournalBearing
     from shaftline.film.dynamics import DynamicCoefficients
     from shaftline.film.geometry import JournalPosition
@@ -96,6 +98,7 @@ def solve_case(
     bearing: JournalBearing | None = None,
     initial: JournalPosition | None = None,
     coefficients: bool = True,
+    initial_cavitated: np.ndarray | None = None,
 ) -> BearingResult:
     """Equilibrium under the case load, then stiffness and damping there (not at contact).
 
@@ -105,8 +108,9 @@ def solve_case(
 
     ``bearing`` is a :class:`~shaftline.film.JournalBearing` of the case's problem to reuse
     (its factorisation pattern and coarse grids; :func:`shaftline.film.sweep` passes one per
-    group of cases), ``initial`` the start of the equilibrium's Newton iteration (a warm start
-    from a solved neighbour). Without them the case is solved from scratch. ``coefficients``
+    group of cases), ``initial`` the start of the equilibrium's Newton iteration and
+    ``initial_cavitated`` the cavitated set of its first film solution (a warm start from a
+    solved neighbour). Without them the case is solved from scratch. ``coefficients``
     False leaves out the stiffness and damping.
     """
     from shaftline.errors import located
@@ -122,7 +126,13 @@ def solve_case(
     # A tilt that does not fit in the clearance is found only here; name it as the case file does.
     with located("", case.error_fields):
         equilibrium = bearing.equilibrium(
-            case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z, initial=initial, progress=newton
+            case.load_y,
+            case.load_z,
+            tilt_y=case.tilt_y,
+            tilt_z=case.tilt_z,
+            initial=initial,
+            progress=newton,
+            initial_cavitated=initial_cavitated,
         )
     dynamics = None
     if coefficients and equilibrium.converged and not equilibrium.contact:

@@ -140,18 +140,30 @@ def _solve_chunk(chunk: _Chunk, progress: Callable[[str], None] | None = None) -
     analytic = [_analytic_offsets(chunk.problem, case.load_y, case.load_z) for case in chunk.cases]
     positions: dict[int, np.ndarray] = {}
     parents: dict[int, int] = {}
+    cavitated: dict[int, np.ndarray] = {}
     results: list[BearingResult] = []
     for index, case in enumerate(chunk.cases):
         if progress is not None:
             progress(case.name)
         guess = _predict(parameters, index, list(range(index)), positions, parents)
         initial = None
+        start_set = None
         if guess is not None:
             parents[index] = guess[0]
             ey, ez = (float(v) for v in guess[1] + analytic[index])
             initial = JournalPosition(ey=ey, ez=ez, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
+            # The neighbour's cavitated set spares the first film solution its cold start
+            # (coarse grids and several fine factorisations); the result does not depend on it.
+            start_set = cavitated.get(guess[0])
         # Through the module, so that the one per-case path is the one a test replaces.
-        result = study.solve_case(case, progress, bearing=bearing, initial=initial, coefficients=chunk.coefficients)
+        result = study.solve_case(
+            case,
+            progress,
+            bearing=bearing,
+            initial=initial,
+            coefficients=chunk.coefficients,
+            initial_cavitated=start_set,
+        )
         if initial is not None and (result.equilibrium.contact or not result.equilibrium.converged):
             # A hard case (at the film floor, or not settling): its answer is the cold start's,
             # as when it is solved alone.
@@ -162,6 +174,7 @@ def _solve_chunk(chunk: _Chunk, progress: Callable[[str], None] | None = None) -
             offsets = np.array([position.ey, position.ez], dtype=float) - analytic[index]
             if np.all(np.isfinite(offsets)):
                 positions[index] = offsets
+                cavitated[index] = equilibrium.state.cavitated
         results.append(result)
     return results
 
