@@ -795,9 +795,11 @@ class JournalBearing:
         set (one triangular solve). A free node whose predicted pressure ``P + dP`` is
         negative cavitates; a cavitated node whose predicted multiplier
         ``w + dR + A dP`` (``w = A P - b``) is negative fills. None for the
-        half-Sommerfeld model, which has no active set.
+        half-Sommerfeld model, which has no active set, and for the mass-conserving model,
+        whose own solver predicts the set of a warm start (a chord step of its last factor,
+        :func:`shaftline.film.jfo.solve_jfo`) and whose multipliers are not these.
         """
-        if self.options.cavitation == "half_sommerfeld":
+        if self.options.cavitation in ("half_sommerfeld", "jfo"):
             return None
         cache = self._solver_state()
         solver = cache.reynolds
