@@ -160,8 +160,8 @@ def test_cavity_film_fraction_and_mass_conservation(slices):
     """Mass conservation, the defining JFO property, against the closed form on 2000 nodes.
     The film fraction in the pocket's cavity is 2q/(V h1) = 0.1000417 to 1e-5 (seen 2.2e-6,
     4.4e-6 on 1000 nodes); the inlet land's flow is q to 5e-6 of the Couette flow V h0/2
-    (seen 2.1e-6: the film ruptures on the node half a cell before the step, which shortens
-    the inlet land by half a cell, a first-order error); the exit land carries the inlet
+    (seen 2.1e-6: the cavity starts on the node before the step, which shortens the inlet
+    land by about one cell, 1 % of it on 1000 nodes: a first-order error); the exit land carries the inlet
     land's flow to 3e-7 of the Couette flow (seen 4e-8, 1.3e-7 on 1000 nodes: the slice's
     leak into its two fixed rows, which falls as 1/d_z^2 and is 1e-9 with d_z = 1e4).
     The Reynolds condition on the same film makes mass at rupture: its exit land carries
