@@ -30,6 +30,8 @@ lint: $(STAMP)
 bench:
 	bash benchmarks/setup_env.sh
 	.venv-bench/bin/python benchmarks/bench_bearing.py
+	.venv-bench/bin/python benchmarks/bench_jfo.py
+	.venv-bench/bin/python benchmarks/bench_sweep.py
 	.venv-bench/bin/python benchmarks/bench_alignment.py
 	.venv-bench/bin/python benchmarks/bench_wear.py
 	.venv-bench/bin/python benchmarks/bench_cpp.py

@@ -12,6 +12,9 @@ The cases: examples/ntua_stern_tube.toml (100 x 60 nodes, psi_x = 0.3), 20 loads
   sweep, 2 procs : the same on a process pool of two workers (pool start-up included)
 
 Targets: sweep serial >= 3x faster than naive; the pool of two >= 1.8x faster than serial.
+The issue measured the naive loop with the solver before it ("today's naive loop"); with
+``--before SRC`` (the ``src`` folder of a checkout of that solver, e.g. a worktree at 9f6e95a)
+the same naive loop also runs on it in a subprocess, and the sweep is compared with both.
 The machine has 2 cores; run it on a quiet machine (the ratios are taken pair by pair in one
 process, each timing a median of ``repeats`` runs).
 """
@@ -19,6 +22,7 @@ process, each timing a median of ``repeats`` runs).
 from __future__ import annotations
 
 import statistics
+import subprocess
 import sys
 import time
 from dataclasses import replace
@@ -56,7 +60,47 @@ def median_time(function, repeat: int) -> tuple[float, object]:
     return statistics.median(times), result
 
 
-def run(coefficients: bool, repeat: int) -> None:
+_NAIVE_BEFORE = """
+import statistics, sys, time
+from dataclasses import replace
+from pathlib import Path
+import numpy as np
+from shaftline.cases import load_case
+from shaftline.film import JournalBearing
+base = load_case(Path(sys.argv[1]))["bearing"].cases[0]
+cases = [
+    replace(base, load_y=base.load_y * share, operating=replace(base.operating, speed=speed * np.pi / 30.0))
+    for speed in np.linspace(60.0, 120.0, 10)
+    for share in np.linspace(0.5, 1.5, 20)
+]
+JournalBearing(base.geometry, base.operating, base.options).equilibrium(base.load_y, tilt_y=base.tilt_y)
+times = []
+for _ in range(int(sys.argv[2])):
+    start = time.perf_counter()
+    for c in cases:
+        JournalBearing(c.geometry, c.operating, c.options).equilibrium(
+            c.load_y, c.load_z, tilt_y=c.tilt_y, tilt_z=c.tilt_z
+        )
+    times.append(time.perf_counter() - start)
+print(statistics.median(times))
+"""
+
+
+def naive_before(source: str, repeat: int) -> float:
+    """The naive loop (new bearing and cold start per case, no stiffness) on the solver in
+    ``source``, timed in a subprocess that imports it; seconds, median of ``repeat``."""
+    example = str(ROOT / "examples" / "ntua_stern_tube.toml")
+    done = subprocess.run(
+        [sys.executable, "-c", _NAIVE_BEFORE, example, str(repeat)],
+        env={"PYTHONPATH": source, "PATH": "/usr/bin:/bin"},
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    return float(done.stdout.split()[-1])
+
+
+def run(coefficients: bool, repeat: int, before: float | None = None) -> None:
     cases = sweep_cases()
     what = "equilibria with stiffness and damping" if coefficients else "equilibria"
     naive_time, naive = median_time(lambda: [solve_case(case, coefficients=coefficients) for case in cases], repeat)
@@ -79,12 +123,23 @@ def run(coefficients: bool, repeat: int) -> None:
         f"  sweep, 2 processes   : {pool_time:7.2f} s  ({n / pool_time:5.1f} /s)"
         f"  {serial_time / pool_time:.2f}x the serial sweep (target >= 1.8), {naive_time / pool_time:.2f}x naive"
     )
+    if before is not None:
+        print(
+            f"  naive loop, solver before issue 10: {before:7.2f} s  ({n / before:5.1f} /s): sweep serial "
+            f"{before / serial_time:.2f}x, 2 processes {before / pool_time:.2f}x"
+        )
     print(f"  pool = serial bit for bit: {same}; largest |d eps| sweep vs naive: {shift:.1e}")
 
 
 if __name__ == "__main__":
-    repeats = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+    arguments = sys.argv[1:]
+    old_source = None
+    if "--before" in arguments:
+        at = arguments.index("--before")
+        old_source = arguments[at + 1]
+        del arguments[at : at + 2]
+    repeats = int(arguments[0]) if arguments else 3
     sweep(sweep_cases()[:2], backend="serial")  # imports and first-call set-up out of the timings
-    run(False, repeats)
+    run(False, repeats, None if old_source is None else naive_before(old_source, repeats))
     print()
     run(True, repeats)

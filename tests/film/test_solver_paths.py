@@ -195,3 +195,18 @@ def test_a_start_set_of_the_wrong_shape_names_the_argument():
     bearing = make_bearing(1.0, axial_nodes=21, circumferential_nodes=72)
     with pytest.raises(InputError, match="initial_cavitated"):
         bearing.equilibrium(-5e3, initial_cavitated=np.zeros((5, 5), dtype=bool))
+
+
+def test_linearisation_from_the_equilibrium_set_is_the_cold_linearisation():
+    """``dynamic_coefficients`` starts the film solution at the equilibrium from the state's
+    own cavitated set: it must reach the cold start's set and give its stiffness and damping
+    to 1e-9 relative (both factorise the same free matrix of the same set; only rounding in
+    the assembly order may differ)."""
+    bearing = make_bearing(1.0, axial_nodes=41, circumferential_nodes=144)
+    state = bearing.equilibrium(-6e3, tilt_y=4e-4).state
+    cold = bearing.linearise(state.position)
+    warm = bearing.linearise(state.position, initial_cavitated=state.cavitated)
+    pairs = ((cold.offset_derivative, warm.offset_derivative), (cold.velocity_derivative, warm.velocity_derivative))
+    for a, b in pairs:
+        assert np.abs(a - b).max() <= 1e-9 * np.abs(a).max()
+    np.testing.assert_allclose(warm.force, cold.force, rtol=1e-12)

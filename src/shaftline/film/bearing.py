@@ -478,10 +478,10 @@ class JournalBearing:
         force = self._integrate_force(grid, relative)
         return _Evaluation(position, grid, film, stencil, solution, relative, force)
 
-    def _evaluate_inside(self, position: JournalPosition, warm: bool) -> _Evaluation:
+    def _evaluate_inside(self, position: JournalPosition, warm: bool, start: np.ndarray | None = None) -> _Evaluation:
         """:meth:`_evaluate`, with a journal cutting the bore reported as bad input."""
         try:
-            return self._evaluate(position, warm=warm)
+            return self._evaluate(position, warm=warm, start=start)
         except _NegativeFilm as exc:
             raise InputError(
                 "position",
@@ -562,12 +562,15 @@ class JournalBearing:
         """
         return self._state(self._evaluate_inside(position, warm=warm_start))
 
-    def linearise(self, position: JournalPosition) -> FilmLinearisation:
+    def linearise(self, position: JournalPosition, initial_cavitated: np.ndarray | None = None) -> FilmLinearisation:
         """Film force at ``position`` and its derivatives by journal offset and velocity.
 
-        Solved from the coarse-grid guess (no warm start), so the result depends only on
-        the problem and ``position``; the four derivatives reuse the factorisation of the
-        converged active set (one triangular solve each). ``position`` may carry
+        Solved from the coarse-grid guess, or from ``initial_cavitated`` (e.g. the
+        ``cavitated`` set of the equilibrium state at ``position``, which spares the cold
+        start), never from an earlier call, so the result depends only on the problem and
+        ``position`` (the solution of the cavitation problem is unique); the four
+        derivatives reuse the factorisation of the converged active set (one triangular
+        solve each). ``position`` may carry
         velocities ``vy, vz``; the derivatives are taken about them. The stiffness and
         damping of :func:`shaftline.film.dynamics.dynamic_coefficients` are
         ``-offset_derivative`` and ``-velocity_derivative``.
@@ -576,6 +579,8 @@ class JournalBearing:
         ----------
         position : JournalPosition
             Journal offsets (m), tilts (rad) and velocities (m/s).
+        initial_cavitated : ndarray of bool (nz, nt), optional
+            Cavitated set to start the film solution from.
 
         Returns
         -------
@@ -587,7 +592,7 @@ class JournalBearing:
         InputError
             ``"position"`` when the journal at that position would cut into the bore (h <= 0).
         """
-        evaluation = self._evaluate_inside(position, warm=False)
+        evaluation = self._evaluate_inside(position, warm=False, start=self._start_set(initial_cavitated))
         d_ey, d_ez = self._offset_directions(evaluation)
         # A velocity changes the squeeze term (2/omega) dH/dt, not the film itself.
         rate = 2.0 / self.operating.speed
@@ -670,17 +675,7 @@ class JournalBearing:
         # Start the active set from the coarse grid, never from an earlier call: the
         # equilibrium then depends only on the problem and its arguments.
         self._solver_state().last_cavitated = None
-        start = None
-        if initial_cavitated is not None:
-            start = np.asarray(initial_cavitated, dtype=bool)
-            if start.shape != self._solver_state().grid.shape:
-                raise InputError(
-                    "initial_cavitated",
-                    f"shape {start.shape}",
-                    "",
-                    f"the grid's shape {self._solver_state().grid.shape} (axial, circumferential nodes)",
-                )
-        evaluation = self._evaluate(position, start=start)
+        evaluation = self._evaluate(position, start=self._start_set(initial_cavitated))
         residual = evaluation.force + load
         contact = False
         iterations = 0
@@ -713,6 +708,21 @@ class JournalBearing:
         return Equilibrium(state, load_y, load_z, converged, contact, iterations, residual_norm)
 
     # -- helpers -------------------------------------------------------------------------
+    def _start_set(self, initial_cavitated: np.ndarray | None) -> np.ndarray | None:
+        """A caller's start set for the active set, checked against the grid."""
+        if initial_cavitated is None:
+            return None
+        start = np.asarray(initial_cavitated, dtype=bool)
+        shape = self._solver_state().grid.shape
+        if start.shape != shape:
+            raise InputError(
+                "initial_cavitated",
+                f"shape {start.shape}",
+                "",
+                f"the grid's shape {shape} (axial, circumferential nodes)",
+            )
+        return start
+
     def _coarse_equilibrium(self, load_y: float, load_z: float, tilt_y: float, tilt_z: float) -> JournalPosition | None:
         """Equilibrium position on the grid halved in both directions (grid continuation), or
         None on a grid below :data:`CONTINUATION_NODES` or where it does not converge.

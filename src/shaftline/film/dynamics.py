@@ -43,7 +43,9 @@ class DynamicCoefficients:
 def dynamic_coefficients(bearing: JournalBearing, state: BearingState) -> DynamicCoefficients:
     """Stiffness and damping of ``bearing`` about the position of ``state``.
 
-    The negated derivatives of :meth:`JournalBearing.linearise` at ``state.position``.
+    The negated derivatives of :meth:`JournalBearing.linearise` at ``state.position``,
+    started from the state's cavitated set (the film solution there is unique, so this only
+    spares the cold start).
     """
-    linearisation = bearing.linearise(state.position)
+    linearisation = bearing.linearise(state.position, initial_cavitated=state.cavitated)
     return DynamicCoefficients(stiffness=linearisation.stiffness, damping=linearisation.damping)
