@@ -169,7 +169,9 @@ def _dask(
             n_workers=min(workers or available_workers(), len(batches)),
             threads_per_worker=1,
             processes=True,
-            dashboard_address=None,
+            # A free port: None does not turn the dashboard off (dask/distributed#8136), and
+            # the default 8787 warns when another cluster holds it.
+            dashboard_address=":0",
         )
     try:
         client = Client(cluster if cluster is not None else scheduler, timeout=_CONNECT_TIMEOUT)
