@@ -32,20 +32,12 @@ from pathlib import Path
 import numpy as np
 import qdldl
 import scipy.sparse as sp
+from timing import median_time
 
 from shaftline.cases import load_case
 from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def median_time(function, repeat: int) -> tuple[float, object]:
-    times, result = [], None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        result = function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times), result
 
 
 def operator_matrix(stencil, fixed: np.ndarray, cavitated: np.ndarray, free_only: bool) -> sp.csc_matrix:

@@ -16,17 +16,15 @@ backward Euler. scipy's Radau (rtol 1e-6) is printed as an independent check.
 from __future__ import annotations
 
 import importlib.util
-import statistics
 import subprocess
 import sys
 import tempfile
-import time
-from collections.abc import Callable
 from functools import partial
 from pathlib import Path
 from types import ModuleType
 
 import numpy as np
+from timing import median_time
 
 from shaftline.cpp.motion import CarrierModel, _parameters, simulate_carrier
 
@@ -53,15 +51,6 @@ def benchmark_model() -> CarrierModel:
         pitch_angle=np.radians(28.0),
         friction="lugre",
     )
-
-
-def median_time(function: Callable[[], object], repeat: int = 5) -> tuple[float, object]:
-    times, result = [], None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        result = function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times), result
 
 
 def kernel_before(folder: Path) -> ModuleType | None:

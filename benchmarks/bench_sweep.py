@@ -21,14 +21,13 @@ process, each timing a median of ``repeats`` runs).
 
 from __future__ import annotations
 
-import statistics
 import subprocess
 import sys
-import time
 from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
+from timing import median_time
 
 from shaftline.cases import load_case
 from shaftline.film import sweep
@@ -49,15 +48,6 @@ def sweep_cases() -> list[BearingCase]:
         for speed in np.linspace(60.0, 120.0, 10)
         for share in np.linspace(0.5, 1.5, 20)
     ]
-
-
-def median_time(function, repeat: int) -> tuple[float, object]:
-    times, result = [], None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        result = function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times), result
 
 
 _NAIVE_BEFORE = """
