@@ -97,6 +97,37 @@ def test_a_scheduler_that_does_not_answer_is_an_input_error(monkeypatch):
         parallel.map(abs, [1, 2], scheduler="tcp://127.0.0.1:9")
 
 
+@pytest.mark.parametrize("address", ["garbage", "http://127.0.0.1:8786", "", "tcp://127.0.0.1"])
+def test_an_address_dask_cannot_read_is_an_input_error(address):
+    """Dask raises ValueError for these; the user gets the one line naming the option."""
+    with pytest.raises(InputError, match=r"^--scheduler = .*allowed the address of a running Dask scheduler"):
+        parallel.check_scheduler(address, "--scheduler")
+    with pytest.raises(InputError, match=r"^scheduler = "):
+        parallel.map(abs, [1, 2], scheduler=address)
+
+
+def test_a_scheduler_without_workers_is_told_not_waited_for():
+    """A real scheduler with no worker: jobs would queue for ever without a word."""
+    from dask.distributed import LocalCluster
+
+    with LocalCluster(n_workers=0, dashboard_address=":0") as cluster:
+        start = time.perf_counter()
+        with pytest.raises(InputError, match="at least one worker"):
+            parallel.check_scheduler(cluster.scheduler_address, timeout=1.0)
+        assert time.perf_counter() - start < 10.0
+
+
+def test_a_backend_name_is_checked_even_when_the_work_runs_here():
+    from shaftline.film import sweep
+    from shaftline.film.study import BearingCase
+    from tests.conftest import make_bearing
+
+    bearing = make_bearing(1.0, axial_nodes=11, circumferential_nodes=36)
+    case = BearingCase("one", bearing.geometry, bearing.operating, bearing.options, load_y=-3e3)
+    with pytest.raises(InputError, match="backend = 'foo'"):
+        sweep([case], backend="foo")
+
+
 def _descendants(pid: int) -> list[psutil.Process]:
     try:
         return psutil.Process(pid).children(recursive=True)

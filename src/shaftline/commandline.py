@@ -95,12 +95,9 @@ def parallel_options(keys: Sequence[str], workers: int | None, scheduler: str | 
     if scheduler is not None:
         if workers is not None:
             raise InputError("--workers", workers, "", "no --workers with --scheduler (the cluster has its workers)")
-        from importlib.util import find_spec
+        from shaftline.parallel import check_scheduler
 
-        if find_spec("distributed") is None:
-            raise InputError(
-                "--scheduler", scheduler, "", "a machine with dask.distributed (pip install 'shaftline[parallel]')"
-            )
+        check_scheduler(scheduler, "--scheduler")
     given = {name: value for name, value in (("workers", workers), ("scheduler", scheduler)) if value is not None}
     registry = capabilities()
     return {key: dict(given) for key in keys if key in registry and registry[key].parallel}

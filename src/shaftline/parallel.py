@@ -40,13 +40,15 @@ from typing import Any, TypeVar
 
 from shaftline.errors import InputError
 
-__all__ = ["BACKENDS", "Backend", "available_workers", "map"]
+__all__ = ["BACKENDS", "Backend", "available_workers", "backend_name", "check_scheduler", "map"]
 
 T = TypeVar("T")
 R = TypeVar("R")
 
 #: Seconds to wait for a Dask scheduler to answer before the address is called wrong.
 _CONNECT_TIMEOUT = 10.0
+#: Seconds a run waits for the first worker to join a scheduler that has none.
+_WORKER_TIMEOUT = 60.0
 #: ``progress(done, total)``: told, in the calling process, how many items are finished.
 ProgressCallback = Callable[[int, int], None]
 #: A backend: ``(function, batches, workers, scheduler, on_batch)`` -> one result list per
@@ -173,16 +175,16 @@ def _dask(
             # the default 8787 warns when another cluster holds it.
             dashboard_address=":0",
         )
-    try:
-        client = Client(cluster if cluster is not None else scheduler, timeout=_CONNECT_TIMEOUT)
-    except OSError as error:
-        if cluster is not None:
-            cluster.close()
-        raise InputError(
-            "scheduler", scheduler, "", f"the address of a running Dask scheduler (no answer: {error})"
-        ) from None
+    if cluster is not None:
+        client = Client(cluster, timeout=_CONNECT_TIMEOUT)
+    else:
+        assert scheduler is not None
+        client = _connect(scheduler, "scheduler")
     futures: list[Any] = []
     try:
+        if cluster is None:
+            # Jobs sent to a scheduler without workers would wait for ever, silently.
+            _wait_for_workers(client, str(scheduler), "scheduler", _WORKER_TIMEOUT)
         futures = [client.submit(_run_batch, function, batch, pure=False) for batch in batches]
         where = {future.key: index for index, future in enumerate(futures)}
         results: list[list[Any]] = [[] for _ in batches]
@@ -201,6 +203,58 @@ def _dask(
 
 #: The backends by name (``backend=`` of :func:`map`).
 BACKENDS: dict[str, Backend] = {"serial": _serial, "process": _process, "dask": _dask}
+
+
+def backend_name(backend: str | None, workers: int | None, scheduler: str | None) -> str:
+    """The backend that :func:`map` uses for these arguments, checked (raises
+    :class:`InputError` naming ``"backend"``, ``"workers"`` or ``"scheduler"``)."""
+    name = backend if backend is not None else ("dask" if scheduler is not None else "process")
+    if name not in BACKENDS:
+        raise InputError("backend", name, "", "one of " + ", ".join(BACKENDS))
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
+        raise InputError("workers", workers if isinstance(workers, int) else repr(workers), "", "an integer >= 1")
+    if scheduler is not None and name != "dask":
+        raise InputError("scheduler", scheduler, "", f"no scheduler with backend {name!r} (only with 'dask')")
+    return name
+
+
+def check_scheduler(scheduler: str, field: str = "scheduler", timeout: float = _CONNECT_TIMEOUT) -> None:
+    """Connect to the Dask scheduler at ``scheduler`` and wait up to ``timeout`` seconds for a
+    worker, so that a wrong address or an empty cluster is told at once, not after the case is
+    read (the command line calls it before solving). Raises :class:`InputError` naming
+    ``field``."""
+    client = _connect(scheduler, field)
+    try:
+        _wait_for_workers(client, scheduler, field, timeout)
+    finally:
+        client.close()
+
+
+def _connect(scheduler: str, field: str) -> Any:
+    """A Dask client of the scheduler at ``scheduler``, or an :class:`InputError`."""
+    try:
+        from dask.distributed import Client
+    except ImportError:
+        raise InputError(
+            field, scheduler, "", "a machine with dask.distributed (pip install 'shaftline[parallel]')"
+        ) from None
+    allowed = "the address of a running Dask scheduler, e.g. tcp://10.0.0.5:8786"
+    if not isinstance(scheduler, str) or not scheduler.strip():
+        raise InputError(field, repr(scheduler), "", allowed)
+    try:
+        return Client(scheduler, timeout=_CONNECT_TIMEOUT)
+    except (OSError, ValueError, TypeError) as error:
+        # OSError: no answer; ValueError/TypeError: an address Dask cannot parse.
+        raise InputError(field, scheduler, "", f"{allowed} ({type(error).__name__}: {error})") from None
+
+
+def _wait_for_workers(client: Any, scheduler: str, field: str, timeout: float) -> None:
+    try:
+        client.wait_for_workers(1, timeout=timeout)
+    except TimeoutError:
+        raise InputError(
+            field, scheduler, "", f"a Dask scheduler with at least one worker (none joined within {timeout:g} s)"
+        ) from None
 
 
 def map(
@@ -255,15 +309,9 @@ def map(
     >>> parallel.map(abs, [-2, 3, -5], backend="serial")
     [2, 3, 5]
     """
-    name = backend if backend is not None else ("dask" if scheduler is not None else "process")
-    if name not in BACKENDS:
-        raise InputError("backend", name, "", "one of " + ", ".join(BACKENDS))
-    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
-        raise InputError("workers", workers, "", "an integer >= 1")
+    name = backend_name(backend, workers, scheduler)
     if isinstance(chunksize, bool) or not isinstance(chunksize, int) or chunksize < 1:
         raise InputError("chunksize", chunksize, "", "an integer >= 1")
-    if scheduler is not None and name != "dask":
-        raise InputError("scheduler", scheduler, "", f"no scheduler with backend {name!r} (only with 'dask')")
     items = list(items)
     total = len(items)
     if total == 0:

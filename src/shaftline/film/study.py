@@ -157,7 +157,8 @@ def solve_study(
 
     ``progress`` is told each case's name, then its Newton iterations (:func:`solve_case`),
     when the cases are solved in this process (serially, or one group only); from a pool it
-    is told each case as it is finished.
+    is told how many cases are done each time a chunk of them finishes (a chunk is the cases
+    of one film problem, up to ``chunk_size`` of :func:`shaftline.film.sweep`).
     """
     from shaftline.film.sweeps import sweep
 

@@ -271,7 +271,7 @@ def sweep(
         raise InputError("chunk_size", chunk_size, "", "an integer >= 1")
     cases = list(cases)
     chunks = _chunks(cases, chunk_size, coefficients)
-    name = backend if backend is not None else ("dask" if scheduler is not None else "process")
+    name = parallel.backend_name(backend, workers, scheduler)  # checked even when it runs here
     local = name == "serial" or (scheduler is None and (workers == 1 or len(chunks) <= 1))
     function = functools.partial(_solve_chunk, progress=progress if local else None)
     single = all(len(part) == 1 for part, _ in chunks)
