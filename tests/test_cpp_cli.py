@@ -136,3 +136,26 @@ def test_the_case_file_sets_the_integration_and_the_periodic_stop(tmp_path):
         case.write_text(text.replace("revolutions = 40", f"revolutions = 40\nperiodic_tolerance = {value}"))
         result = shaftline("cpp", "motion", str(case))
         assert result.exit_code == 2 and "cpp.motion.periodic_tolerance" in result.stderr
+
+
+def test_a_motion_that_never_repeats_is_said_above_the_results(tmp_path):
+    """The example's backlash keeps the motion from repeating (the change from one cycle to
+    the next stays near 0.3): the summary and the report open the section with a warning that
+    the settled amplitude is not that of a cycle; the settled motion without backlash has none.
+    The periodic stop is a true/false switch: "yes" is refused, not read as true."""
+    out = tmp_path / "out"
+    result = shaftline("cpp", "motion", str(EXAMPLE), "--out", str(out))
+    assert result.exit_code == 0, result.stderr
+    assert "did not become periodic in 20 revolutions" in " ".join(result.stdout.split())
+    assert "did not become periodic" in (out / "report.html").read_text()
+
+    settled = EXAMPLE.read_text().replace('backlash = "0.05 mm"', 'backlash = "0 mm"')
+    settled = settled.replace("revolutions = 20", "revolutions = 40")
+    case = tmp_path / "settled.toml"
+    case.write_text(settled[: settled.index("[cpp.study]")])
+    result = shaftline("cpp", "motion", str(case))
+    assert result.exit_code == 0 and "did not become periodic" not in result.stdout
+
+    case.write_text(EXAMPLE.read_text().replace("revolutions = 20", 'revolutions = 20\nstop_when_periodic = "yes"'))
+    result = shaftline("cpp", "motion", str(case))
+    assert result.exit_code == 2 and "cpp.motion.stop_when_periodic = 'yes'" in result.stderr

@@ -180,14 +180,40 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
             )
         ]
 
+    def _unsettled(self, result: BladeBearingResult) -> list[Block]:
+        """A warning when the motion was asked to stop at its periodic state and never reached
+        it: its settled amplitudes are then extremes of the run's second half, not of a cycle."""
+        m = result.motion
+        if m is None or m.periodic or m.revolutions < 2 or m.periodic_change is None:
+            return []  # periodic, too short to judge, or come to rest
+        state = periodicity(
+            {
+                "periodic_change": m.periodic_change,
+                "revolutions": m.revolutions,
+                "period": m.period,
+                "periodic": m.periodic,
+                "periodic_tolerance": m.periodic_tolerance,
+            }
+        )
+        return [
+            Paragraph(
+                f"The carrier motion did not become periodic in {m.revolutions} revolutions "
+                f"({state}). The settled fretting amplitude is the extreme "
+                "of the second half of the run and may still change with more revolutions; with "
+                "backlash the motion may never repeat. Run more revolutions to see whether it settles.",
+                "warn",
+            )
+        ]
+
     def summary(self, result: BladeBearingResult) -> list[Block]:
-        return [self._table(result)]
+        return [*self._unsettled(result), self._table(result)]
 
     def report(self, result: BladeBearingResult) -> list[Block]:
         from shaftline.cpp import figures
         from shaftline.cpp.study import settled_amplitude
 
         blocks: list[Block] = [
+            *self._unsettled(result),
             self._table(result),
             Figure("cpp_torques.png", figures.torques, (result,), caption="spindle and friction torque"),
         ]

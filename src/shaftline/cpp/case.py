@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import Field, StrictFloat, StrictInt, model_validator
+from pydantic import Field, StrictBool, StrictFloat, StrictInt, model_validator
 
 from shaftline.cases.types import (
     SHAFT_SPEED,
@@ -309,7 +309,7 @@ class MotionSection(Section):
     method: MethodName = default_of(CarrierMotionRequest, "method")
     """Integration method: trbdf2 (second order, L-stable), backward_euler (first order, the
     earlier default) or radau (scipy's adaptive Radau IIA, the reference, slower)."""
-    stop_when_periodic: bool = default_of(CarrierMotionRequest, "stop_when_periodic")
+    stop_when_periodic: StrictBool = default_of(CarrierMotionRequest, "stop_when_periodic")
     """Stop at the first revolution at which the motion repeats the revolutions before it to
     periodic_tolerance (a cycle of up to 8 revolutions); false integrates all revolutions."""
     periodic_tolerance: Annotated[

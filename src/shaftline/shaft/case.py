@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, StrictBool, model_validator
 
 from shaftline.cases.types import (
     Angle,
@@ -192,7 +192,7 @@ class ShaftSection(Section):
         Plausible(0.001, 10.0, "a mesh of mm to m elements (default 0.25 m); mm written as m is above 10 m"),
     ] = default_of(ShaftLine, "element_length")
     """Largest element length of the mesh."""
-    self_weight: bool = default_of(ShaftLine, "self_weight")
+    self_weight: StrictBool = default_of(ShaftLine, "self_weight")
     """Include the shaft's own weight."""
     gravity: Annotated[
         PositiveAcceleration,
@@ -298,7 +298,7 @@ class SupportSection(Section):
     """Support points of a multi-point support."""
     position: SupportPosition = default_of(Bearing, "position")
     """Where a point support acts: the centre or a third of the length from the aft end."""
-    one_sided: bool = default_of(Bearing, "one_sided")
+    one_sided: StrictBool = default_of(Bearing, "one_sided")
     """The shaft can lift off (the bearing only pushes up)."""
     slope: Annotated[
         Angle,
