@@ -241,6 +241,18 @@ def _connect(scheduler: str, field: str) -> Any:
     allowed = "the address of a running Dask scheduler, e.g. tcp://10.0.0.5:8786"
     if not isinstance(scheduler, str) or not scheduler.strip():
         raise InputError(field, repr(scheduler), "", allowed)
+    from distributed.comm.addressing import parse_address, parse_host_port
+    from distributed.comm.registry import get_backend
+
+    try:
+        # Read the address first: a Client made for one it cannot read starts (and may leave)
+        # an event-loop thread before it fails.
+        scheme, location = parse_address(scheduler)
+        get_backend(scheme)
+        if scheme in ("tcp", "tls"):
+            parse_host_port(location)
+    except ValueError as error:
+        raise InputError(field, scheduler, "", f"{allowed} ({error})") from None
     try:
         return Client(scheduler, timeout=_CONNECT_TIMEOUT)
     except (OSError, ValueError, TypeError) as error:
