@@ -117,3 +117,16 @@ def test_measured_jack_curve_from_csv(tmp_path):
     with pytest.raises(InputError) as error:
         load_case(tmp_path / "case.toml")
     assert "row 6" in str(error.value)
+
+
+def test_a_load_spread_without_weight_at_a_bearing_is_one_line(tmp_path):
+    """Without the shaft's self weight the forward stern-tube bearing has no weight share, so
+    the load-spread objective (each reaction over its share) is undefined: one line naming the
+    objective, exit 2, nothing written (it was a linprog traceback)."""
+    case = tmp_path / "weightless.toml"
+    case.write_text(EXAMPLE.read_text().replace("[alignment.shaft]", "[alignment.shaft]\nself_weight = false", 1))
+    out = tmp_path / "out"
+    result = invoke("align", str(case), "--out", str(out))
+    assert result.exit_code == 2
+    assert result.stderr.startswith("error: alignment.optimise.objective = 'load_spread': allowed aft_slope here")
+    assert "Traceback" not in result.stderr and not out.exists()

@@ -131,6 +131,16 @@ def optimise_offsets(
         - _interpolation_weights(model.mesh.x, aft.x - 0.5 * aft.length)
     ) / aft.length
     shares = weight_shares(model)
+    if objective == "load_spread" and not np.all(shares > 0.0):
+        # The spread is each reaction over its weight share: undefined where the share is zero.
+        bare = names[int(np.flatnonzero(~(shares > 0.0))[0])]
+        raise InputError(
+            "objective",
+            objective,
+            "",
+            f"aft_slope here: bearing {bare!r} carries no share of the line's weight (a shaft without "
+            "self weight and no mass near it), so the load spread is not defined",
+        )
     offsets = np.zeros(len(adjustable))
     rounds = 0
     while rounds < max_rounds:
@@ -159,8 +169,9 @@ def optimise_offsets(
             rows_b.append(high[finite] - reactions[finite])
             slope_rows.append(jac_s)
             slope_rhs.append(slope)
-            use_rows.append(jac_r / shares[:, None])
-            use_rhs.append(reactions / shares - 1.0)
+            if objective == "load_spread":
+                use_rows.append(jac_r / shares[:, None])
+                use_rhs.append(reactions / shares - 1.0)
         n = len(adjustable)
         # variables: d (n), t
         c = np.zeros(n + 1)
