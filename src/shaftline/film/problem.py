@@ -313,9 +313,9 @@ class SolverOptions:
         machine's memory.
 
     The time of a solution grows faster than the node count, as the memory does: on a 2-core
-    machine an equilibrium with stiffness and damping took 0.07 s on the default 41 x 120
-    grid, 8 s on 321 x 240, 33 s on 1281 x 120 and 2 min on 2561 x 120 (6 to 13 times as long
-    with ``cavitation = "jfo"``).
+    machine an equilibrium with stiffness and damping took 0.05 s on the default 41 x 120
+    grid, 1.6 s on 321 x 240, 9 s on 1281 x 120 and 33 s on 2561 x 120 (1.3 to 2.4 times as
+    long with ``cavitation = "jfo"``; measured after issue 10).
 
     Raises
     ------
