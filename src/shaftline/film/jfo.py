@@ -34,7 +34,6 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from shaftline.film.geometry import coarse_shape
 from shaftline.film.reynolds import (
     MAX_ACTIVE_SET_ITERATIONS,
     ReynoldsConvergenceError,
@@ -362,58 +361,6 @@ def solve_jfo(
     raise ReynoldsConvergenceError("JFO active set did not settle")
 
 
-@dataclass(frozen=True, eq=False)
-class _Coarse:
-    """The grid halved in both directions under a solver's grid, and the maps between them."""
-
-    solver: ReynoldsSolver
-    z_index: np.ndarray  # fine row below each coarse row
-    z_weight: np.ndarray  # and the weight of the row above
-    row_lo: np.ndarray  # coarse rows around each fine row
-    row_hi: np.ndarray
-    row_w: np.ndarray
-    col_lo: np.ndarray  # coarse columns around each fine column
-    col_hi: np.ndarray
-
-
-#: Coarse grids of the solvers in use (solver state of one process, never pickled).
-_COARSE: _PerSolver[_Coarse | None] = _PerSolver()
-
-
-def _coarse(solver: ReynoldsSolver) -> _Coarse | None:
-    """The coarse grid of ``solver``: every other column, rows interpolated, edges and grooves kept."""
-    if _COARSE.has(solver):
-        return _COARSE.get(solver)
-    nz, nt = solver.shape
-    halved = coarse_shape(solver.shape)
-    coarse = None
-    if halved is not None:
-        nz_c, nt_c = halved
-        z_coarse = np.linspace(0.0, 1.0, nz_c)
-        position = z_coarse * (nz - 1)
-        z_index = np.minimum(np.floor(position).astype(int), nz - 2)
-        fine_in_coarse = np.linspace(0.0, 1.0, nz) * (nz_c - 1)
-        row_lo = np.minimum(np.floor(fine_in_coarse).astype(int), nz_c - 2)
-        rows = np.rint(position).astype(int)
-        fixed_c = solver.fixed[rows][:, ::2].copy()
-        value_c = solver.fixed_pressure[rows][:, ::2].copy()
-        fixed_c[[0, -1]] = True
-        coarse = _Coarse(
-            solver=ReynoldsSolver(
-                (nz_c, nt_c), 2.0 * solver.d_theta, solver.d_z * (nz - 1) / (nz_c - 1), fixed_c, value_c
-            ),
-            z_index=z_index,
-            z_weight=position - z_index,
-            row_lo=row_lo,
-            row_hi=row_lo + 1,
-            row_w=fine_in_coarse - row_lo,
-            col_lo=(np.arange(nt) // 2) % nt_c,
-            col_hi=((np.arange(nt) + 1) // 2) % nt_c,
-        )
-    _COARSE.set(solver, coarse)
-    return coarse
-
-
 def _nested_start(solver: ReynoldsSolver, stencil: Stencil, film: np.ndarray) -> np.ndarray | None:
     """Cavitated set predicted by the JFO solution of the same film on the grid halved each way.
 
@@ -422,26 +369,18 @@ def _nested_start(solver: ReynoldsSolver, stencil: Stencil, film: np.ndarray) ->
     grid it places them to within a fraction of a coarse cell. Recursive down to the
     coarsest grid, which starts from the Reynolds condition.
     """
-    coarse = _coarse(solver)
+    coarse = solver.coarse_grid()
     if coarse is None:
         return None
     d_theta, d_z = solver.d_theta, solver.d_z
     # The squeeze part of the right-hand side, (2/omega) dH/dt per cell, restricted with the film.
     rate = (np.roll(stencil.couette_face, 1, axis=1) - stencil.couette_face - stencil.rhs) / (d_theta * d_z)
 
-    def restrict(field: np.ndarray) -> np.ndarray:
-        w = coarse.z_weight[:, None]
-        return (field[coarse.z_index] * (1.0 - w) + field[coarse.z_index + 1] * w)[:, ::2]
-
-    film_c = restrict(film)
-    rate_c = restrict(rate) if np.any(rate) else None
+    film_c = coarse.restrict(film)
+    rate_c = coarse.restrict(rate) if np.any(rate) else None
     solver_c = coarse.solver
     stencil_c = build_stencil(film_c, solver_c.d_theta, solver_c.d_z, rate_c)
     solution = solve_jfo(solver_c, stencil_c, film_c, remember=False)
     indicator = np.where(solution.cavitated, -solution.void, solution.pressure)
     indicator = np.where(solver_c.fixed, 0.0, indicator)
-    col_w = 0.5 * (np.arange(solver.shape[1]) % 2)
-    row_w = coarse.row_w[:, None]
-    lo = indicator[coarse.row_lo] * (1.0 - row_w) + indicator[coarse.row_hi] * row_w
-    fine = lo[:, coarse.col_lo] * (1.0 - col_w)[None, :] + lo[:, coarse.col_hi] * col_w[None, :]
-    return (fine < 0.0) & ~solver.fixed
+    return (coarse.prolong(indicator) < 0.0) & ~solver.fixed

@@ -48,6 +48,7 @@ from shaftline.film.problem import CAVITATION_MODELS, Cavitation
 
 __all__ = [
     "CAVITATION_MODELS",
+    "CoarseGrid",
     "MAX_ACTIVE_SET_ITERATIONS",
     "ReynoldsConvergenceError",
     "ReynoldsSolution",
@@ -253,7 +254,7 @@ class ReynoldsSolver:
         self._cache_size = FACTOR_CACHE
         self._factor_mask: np.ndarray | None = None
         self._factor_stencil: Stencil | None = None
-        self._coarse_cache: tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple[np.ndarray, ...]] | None = None
+        self._coarse_grid: CoarseGrid | None = None
         self.coarse_iterations = 0
         self.pcg_iterations = 0
 
@@ -383,8 +384,8 @@ class ReynoldsSolver:
 
     def _is_factored(self, stencil: Stencil, held: np.ndarray) -> bool:
         """Whether the kept factor is that of ``stencil`` and ``held`` (or no node is free)."""
-        if held.all():
-            return True
+        if held.all() or self.masked:
+            return True  # a masked solve is always a direct solve of that set's own matrix
         mask = self._factor_mask
         return self._factor_stencil is stencil and mask is not None and np.array_equal(mask, held)
 
@@ -487,42 +488,14 @@ class ReynoldsSolver:
             return reynolds
         raise ValueError(f"unknown cavitation model {cavitation!r}")
 
-    def _coarse(self) -> tuple[ReynoldsSolver, np.ndarray, np.ndarray, tuple[np.ndarray, ...]] | None:
-        """Solver on a grid halved in both directions, with the maps between the grids.
-
-        Returns ``(solver, z_index, z_weight, brackets)``: the fine film is restricted
-        by linear interpolation in z (coarse columns are every other fine column), and
-        ``brackets`` holds, for every fine node, the rows and columns of the coarse
-        nodes around it.
-        """
-        nz, nt = self.shape
+    def coarse_grid(self) -> CoarseGrid | None:
+        """The grid halved in both directions under this one (kept), or None when too small."""
         halved = coarse_shape(self.shape)
         if halved is None:
             return None
-        if self._coarse_cache is None:
-            nz_c, nt_c = halved
-            z_coarse = np.linspace(0.0, 1.0, nz_c)
-            position = z_coarse * (nz - 1)
-            z_index = np.minimum(np.floor(position).astype(int), nz - 2)
-            z_weight = position - z_index
-            fine_in_coarse = np.linspace(0.0, 1.0, nz) * (nz_c - 1)
-            row_lo = np.minimum(np.floor(fine_in_coarse).astype(int), nz_c - 2)
-            row_hi = row_lo + 1
-            row_w = fine_in_coarse - row_lo
-            col_lo = (np.arange(nt) // 2) % nt_c
-            col_hi = ((np.arange(nt) + 1) // 2) % nt_c
-            rows = np.rint(z_coarse * (nz - 1)).astype(int)
-            fixed_c = self.fixed[rows][:, ::2].copy()
-            value_c = self.fixed_pressure[rows][:, ::2].copy()
-            fixed_c[[0, -1]] = True
-            solver = ReynoldsSolver(
-                (nz_c, nt_c), 2.0 * self.d_theta, self.d_z * (nz - 1) / (nz_c - 1), fixed_c, value_c
-            )
-            # Small coarse grids only predict the set: one symbolic analysis of the full pattern,
-            # then numeric factorisations only (2-4 times cheaper there than a fresh ordering).
-            solver.masked = nz_c * nt_c < PCG_MIN_NODES
-            self._coarse_cache = (solver, z_index, z_weight, (row_lo, row_hi, col_lo, col_hi, row_w))
-        return self._coarse_cache
+        if self._coarse_grid is None:
+            self._coarse_grid = CoarseGrid.under(self, halved)
+        return self._coarse_grid
 
     def _nested_start(self, film: np.ndarray) -> np.ndarray | None:
         """Cavitated set predicted by solving the same problem on the coarser grid.
@@ -532,11 +505,11 @@ class ReynoldsSolver:
         sign on the cavitation boundary; interpolated bilinearly onto the fine grid it
         places that boundary to within a fraction of a fine cell.
         """
-        coarse = self._coarse()
+        coarse = self.coarse_grid()
         if coarse is None:
             return None
-        solver, z_index, z_weight, (row_lo, row_hi, col_lo, col_hi, row_w) = coarse
-        film_c = (film[z_index] * (1.0 - z_weight)[:, None] + film[z_index + 1] * z_weight[:, None])[:, ::2]
+        solver = coarse.solver
+        film_c = coarse.restrict(film)
         stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z)
         solution = solver._solve_reynolds_lcp(stencil_c, None, film_c, exact=False)
         self.coarse_iterations = solution.iterations
@@ -544,10 +517,7 @@ class ReynoldsSolver:
         multiplier = apply_operator(stencil_c.c_theta, stencil_c.c_z, solution.pressure) - stencil_c.rhs
         indicator = np.where(solution.cavitated, -np.maximum(multiplier, 0.0) / diag, solution.pressure)
         indicator = np.where(solver.fixed, 0.0, indicator)
-        col_w = 0.5 * (np.arange(self.shape[1]) % 2)
-        lo = indicator[row_lo] * (1.0 - row_w)[:, None] + indicator[row_hi] * row_w[:, None]
-        fine = lo[:, col_lo] * (1.0 - col_w)[None, :] + lo[:, col_hi] * col_w[None, :]
-        return (fine < 0.0) & ~self.fixed
+        return (coarse.prolong(indicator) < 0.0) & ~self.fixed
 
     def _solve_reynolds_lcp(
         self,
@@ -608,6 +578,78 @@ class ReynoldsSolver:
         columns = np.atleast_2d(rhs_change.reshape(-1, self.shape[0] * self.shape[1]))
         out = np.array([self._solve_free(stencil, held, -column, None, direct=True) for column in columns])
         return out.reshape((-1,) + self.shape)
+
+
+@dataclass(frozen=True, eq=False)
+class CoarseGrid:
+    """A grid halved in both directions under a solver's grid, and the maps between them.
+
+    Coarse columns are every other fine column; coarse rows lie evenly from edge to edge, so
+    a fine field is restricted by linear interpolation in z, and a coarse field is brought
+    back to the fine grid bilinearly. Both nested starts (Reynolds condition and JFO) predict
+    the fine cavitated set this way.
+
+    Attributes
+    ----------
+    solver : ReynoldsSolver
+        Solver of the coarse grid: its fixed nodes are the fine ones on the coarse rows and
+        columns, and both edges.
+    z_index, z_weight : ndarray (nz_c,)
+        Fine row below each coarse row, and the weight of the row above it.
+    row_lo, row_hi, row_w : ndarray (nz,)
+        Coarse rows around each fine row, and the weight of the upper one.
+    col_lo, col_hi : ndarray (nt,)
+        Coarse columns around each fine column (the same one for even fine columns).
+    """
+
+    solver: ReynoldsSolver
+    z_index: np.ndarray
+    z_weight: np.ndarray
+    row_lo: np.ndarray
+    row_hi: np.ndarray
+    row_w: np.ndarray
+    col_lo: np.ndarray
+    col_hi: np.ndarray
+
+    @classmethod
+    def under(cls, fine: ReynoldsSolver, shape: tuple[int, int]) -> CoarseGrid:
+        """The coarse grid of ``shape`` (from :func:`coarse_shape`) under ``fine``."""
+        nz, nt = fine.shape
+        nz_c, nt_c = shape
+        position = np.linspace(0.0, 1.0, nz_c) * (nz - 1)
+        z_index = np.minimum(np.floor(position).astype(int), nz - 2)
+        fine_in_coarse = np.linspace(0.0, 1.0, nz) * (nz_c - 1)
+        row_lo = np.minimum(np.floor(fine_in_coarse).astype(int), nz_c - 2)
+        rows = np.rint(position).astype(int)
+        fixed_c = fine.fixed[rows][:, ::2].copy()
+        value_c = fine.fixed_pressure[rows][:, ::2].copy()
+        fixed_c[[0, -1]] = True
+        solver = ReynoldsSolver((nz_c, nt_c), 2.0 * fine.d_theta, fine.d_z * (nz - 1) / (nz_c - 1), fixed_c, value_c)
+        # Small coarse grids only predict the set: one symbolic analysis of the full pattern,
+        # then numeric factorisations only (2-4 times cheaper there than a fresh ordering).
+        solver.masked = nz_c * nt_c < PCG_MIN_NODES
+        return cls(
+            solver=solver,
+            z_index=z_index,
+            z_weight=position - z_index,
+            row_lo=row_lo,
+            row_hi=row_lo + 1,
+            row_w=fine_in_coarse - row_lo,
+            col_lo=(np.arange(nt) // 2) % nt_c,
+            col_hi=((np.arange(nt) + 1) // 2) % nt_c,
+        )
+
+    def restrict(self, field: np.ndarray) -> np.ndarray:
+        """A fine field (nz, nt) on the coarse grid: linear in z, every other column."""
+        w = self.z_weight[:, None]
+        return (field[self.z_index] * (1.0 - w) + field[self.z_index + 1] * w)[:, ::2]
+
+    def prolong(self, field: np.ndarray) -> np.ndarray:
+        """A coarse field on the fine grid, bilinearly."""
+        row_w = self.row_w[:, None]
+        col_w = 0.5 * (np.arange(self.col_lo.size) % 2)[None, :]
+        lo = field[self.row_lo] * (1.0 - row_w) + field[self.row_hi] * row_w
+        return lo[:, self.col_lo] * (1.0 - col_w) + lo[:, self.col_hi] * col_w
 
 
 def _dot(a: np.ndarray, b: np.ndarray) -> float:
