@@ -113,17 +113,7 @@ def active_set_qp(
             drop = candidates[np.argmin(multipliers_bound[candidates])]
             working[drop] = False
             continue
-        blocking = free & bounded & (step < 0)
-        alpha, block = 1.0, -1
-        if blocking.any():
-            ratios = -x[blocking] / step[blocking]
-            k = int(np.argmin(ratios))
-            if ratios[k] < 1.0:
-                alpha, block = float(ratios[k]), int(np.flatnonzero(blocking)[k])
-        x = x + alpha * step
-        if block >= 0:
-            x[block] = 0.0
-            working[block] = True
+        x = _step_to_bound(x, step, free & bounded & (step < 0), working)
     raise SolverFailure("alignment contact iteration did not terminate")  # pragma: no cover
 
 
@@ -306,17 +296,7 @@ class ContactQP:
                     return x, mu, iteration
                 working[candidates[np.argmin(gaps[candidates])]] = False
                 continue
-            blocking = ~working & bounded & (step < 0)
-            alpha, block = 1.0, -1
-            if blocking.any():
-                ratios = -x[blocking] / step[blocking]
-                k = int(np.argmin(ratios))
-                if ratios[k] < 1.0:
-                    alpha, block = float(ratios[k]), int(np.flatnonzero(blocking)[k])
-            x = x + alpha * step
-            if block >= 0:
-                x[block] = 0.0
-                working[block] = True
+            x = _step_to_bound(x, step, ~working & bounded & (step < 0), working)
         raise SolverFailure("alignment contact iteration did not terminate")  # pragma: no cover
 
     def _least_squares_step(
@@ -337,3 +317,20 @@ class ContactQP:
         count = int(free.sum())
         step[free] = solved[:count]
         return solved[count:], step
+
+
+def _step_to_bound(x: np.ndarray, step: np.ndarray, blocking: np.ndarray, working: np.ndarray) -> np.ndarray:
+    """``x + alpha * step`` with the largest ``alpha <= 1`` that keeps the ``blocking``
+    variables (those the step drives down) at or above zero; the first one to reach zero
+    is set to exactly zero and joins the ``working`` set (changed in place)."""
+    alpha, block = 1.0, -1
+    if blocking.any():
+        ratios = -x[blocking] / step[blocking]
+        k = int(np.argmin(ratios))
+        if ratios[k] < 1.0:
+            alpha, block = float(ratios[k]), int(np.flatnonzero(blocking)[k])
+    x = x + alpha * step
+    if block >= 0:
+        x[block] = 0.0
+        working[block] = True
+    return x
