@@ -511,6 +511,14 @@ class JournalBearing:
         Each direction is ``(dH, dRate)`` with ``dH`` the change of H = h/c and
         ``dRate`` the change of ``(2/omega) dH/dt`` per unit of the parameter.
         """
+        _, d_pressure = self._pressure_derivatives(evaluation, directions)
+        return [self._integrate_force(evaluation.grid, dp, gauge=False) for dp in d_pressure]
+
+    def _pressure_derivatives(
+        self, evaluation: _Evaluation, directions: list[tuple[np.ndarray, np.ndarray | None]]
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Residual and pressure changes, each (k, nz, nt), for the ``directions`` of
+        :meth:`_force_derivatives`."""
         cache = self._solver_state()
         solution = evaluation.solution
         changes = []
@@ -526,11 +534,12 @@ class JournalBearing:
                 d_face = cache.d_z * 0.5 * (d_film + np.roll(d_film, -1, axis=1))
                 d_residual = d_residual + void_transport(d_face, solution.void)
             changes.append(d_residual)
+        d_residual = np.array(changes)
         if isinstance(solution, JfoSolution):
-            d_pressure = solution.pressure_response(np.array(changes))
+            d_pressure = solution.pressure_response(d_residual)
         else:
-            d_pressure = cache.reynolds.linear_response(evaluation.stencil, solution, np.array(changes))
-        return [self._integrate_force(evaluation.grid, dp, gauge=False) for dp in d_pressure]
+            d_pressure = cache.reynolds.linear_response(evaluation.stencil, solution, d_residual)
+        return d_residual, d_pressure
 
     def _offset_directions(self, evaluation: _Evaluation) -> tuple[np.ndarray, np.ndarray]:
         """Changes of H = h/c per metre of journal offset ey and ez, shape (nz, nt)."""
@@ -543,9 +552,16 @@ class JournalBearing:
 
     def _position_jacobian(self, evaluation: _Evaluation) -> np.ndarray:
         """d(force)/d(ey, ez), N/m, with the active set frozen (exact for the Reynolds condition)."""
+        return self._position_response(evaluation)[0]
+
+    def _position_response(self, evaluation: _Evaluation) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The Jacobian of :meth:`_position_jacobian` with the residual and pressure changes
+        per metre of ey and ez it comes from, each (2, nz, nt): a Newton step's trials predict
+        their cavitated sets from these (:meth:`_predicted_cavitation`)."""
         d_ey, d_ez = self._offset_directions(evaluation)
-        dfy, dfz = self._force_derivatives(evaluation, [(d_ey, None), (d_ez, None)])
-        return np.column_stack([dfy, dfz])
+        d_residual, d_pressure = self._pressure_derivatives(evaluation, [(d_ey, None), (d_ez, None)])
+        dfy, dfz = (self._integrate_force(evaluation.grid, dp, gauge=False) for dp in d_pressure)
+        return np.column_stack([dfy, dfz]), d_residual, d_pressure
 
     # -- public API ----------------------------------------------------------------------
     def solve_at(self, position: JournalPosition, warm_start: bool = True) -> BearingState:
@@ -684,10 +700,10 @@ class JournalBearing:
             if norm <= tolerance:
                 break
             iterations += 1
-            jacobian = self._position_jacobian(evaluation)
+            jacobian, d_residual, d_pressure = self._position_response(evaluation)
             accepted = None
             for step, sufficient in self._candidate_steps(jacobian, residual, load, c):
-                accepted = self._line_search(evaluation, step, load, norm, floor, sufficient)
+                accepted = self._line_search(evaluation, (d_residual, d_pressure), step, load, norm, floor, sufficient)
                 if accepted is not None:
                     break
             if accepted is None:
@@ -766,6 +782,7 @@ class JournalBearing:
     def _line_search(
         self,
         evaluation: _Evaluation,
+        response: tuple[np.ndarray, np.ndarray],
         step: np.ndarray,
         load: np.ndarray,
         norm: float,
@@ -775,8 +792,9 @@ class JournalBearing:
         """Backtracking that keeps the film above the floor and lowers the force residual
         (by the Armijo share ``sufficient * alpha`` for a Newton step, at all for a fallback).
 
-        Each trial starts its active set from the one predicted by the step (see
-        :meth:`_predicted_cavitation`), which depends only on the current evaluation."""
+        Each trial starts its active set from the one predicted by the step from the
+        evaluation's ``response`` (the residual and pressure changes per metre of ey and ez of
+        :meth:`_position_response`; see :meth:`_predicted_cavitation`)."""
         position = evaluation.position
         hmin_now = self.min_film(position)
         alpha = 1.0
@@ -787,7 +805,7 @@ class JournalBearing:
             alpha *= 0.5
         while alpha > 1e-8:
             try:
-                start = self._predicted_cavitation(evaluation, alpha * step)
+                start = self._predicted_cavitation(evaluation, response, alpha * step)
                 trial = self._evaluate(self._moved(position, alpha * step), start=start)
             except _NegativeFilm:
                 alpha *= 0.5
@@ -797,34 +815,29 @@ class JournalBearing:
             alpha *= 0.5
         return None
 
-    def _predicted_cavitation(self, evaluation: _Evaluation, step: np.ndarray) -> np.ndarray | None:
+    def _predicted_cavitation(
+        self, evaluation: _Evaluation, response: tuple[np.ndarray, np.ndarray], step: np.ndarray
+    ) -> np.ndarray | None:
         """Cavitated set after the journal moves by ``step`` (m), predicted to first order.
 
-        The film is linear in the offsets, so the change of the stencil is exact; the
-        pressure change ``dP`` with the set frozen comes from the factor of the current
-        set (one triangular solve). A free node whose predicted pressure ``P + dP`` is
-        negative cavitates; a cavitated node whose predicted multiplier
-        ``w + dR + A dP`` (``w = A P - b``) is negative fills. None for the
-        half-Sommerfeld model, which has no active set, and for the mass-conserving model,
-        whose own solver predicts the set of a warm start (a chord step of its last factor,
+        The film is linear in the offsets, so the residual change ``dR`` and the pressure
+        change ``dP`` with the set frozen are those per metre of ey and ez (``response``, from
+        the Jacobian's own solves) combined by the step. A free node whose predicted pressure
+        ``P + dP`` is negative cavitates; a cavitated node whose predicted multiplier
+        ``w + dR + A dP`` (``w = A P - b``) is negative fills. None for the half-Sommerfeld
+        model, which has no active set, and for the mass-conserving model, whose own solver
+        predicts the set of a warm start (a chord step of its last factor,
         :func:`shaftline.film.jfo.solve_jfo`) and whose multipliers are not these.
         """
         if self.options.cavitation in ("half_sommerfeld", "jfo"):
             return None
-        cache = self._solver_state()
-        solver = cache.reynolds
         stencil, solution = evaluation.stencil, evaluation.solution
-        d_ey, d_ez = self._offset_directions(evaluation)
-        d_film = d_ey * float(step[0]) + d_ez * float(step[1])
-        film = evaluation.film / self.geometry.radial_clearance
-        dc_theta, dc_z, d_couette = stencil_derivative(film, d_film, cache.d_theta, cache.d_z)
+        d_residual = np.tensordot(step, response[0], axes=1)
+        d_pressure = np.tensordot(step, response[1], axes=1)
         pressure = evaluation.relative_pressure
-        d_residual = apply_operator(dc_theta, dc_z, pressure) - d_couette
-        d_pressure = solver.linear_response(stencil, solution, d_residual)[0]
         multiplier = apply_operator(stencil.c_theta, stencil.c_z, pressure + d_pressure) - stencil.rhs + d_residual
-        cavitated = solution.cavitated
-        predicted = np.where(cavitated, multiplier > 0.0, pressure + d_pressure < 0.0)
-        return predicted & ~solver.fixed
+        predicted = np.where(solution.cavitated, multiplier > 0.0, pressure + d_pressure < 0.0)
+        return predicted & ~self._solver_state().reynolds.fixed
 
     def _limit_step(self, step: np.ndarray, c: float) -> np.ndarray:
         length = float(np.hypot(*step))
