@@ -861,22 +861,9 @@ class JournalBearing:
 
     def _initial_position(self, load: np.ndarray, tilt_y: float, tilt_z: float) -> JournalPosition:
         g = self.geometry
-        op = self.operating
-        magnitude = float(np.hypot(*load))
-        sommerfeld = (
-            (g.radius / g.radial_clearance) ** 2
-            * op.viscosity
-            * (op.speed / (2 * np.pi))
-            / (magnitude / (g.length * g.diameter))
-        )
-        epsilon, attitude = eccentricity_guess(sommerfeld, g.length / g.diameter)
-        epsilon = min(epsilon, 0.95)
-        load_angle = float(np.arctan2(g.rotation * load[1], load[0]))
-        local = JournalPosition.from_polar(epsilon * g.radial_clearance, load_angle + attitude, g.rotation)
+        ey, ez = closed_form_offsets(g, self.operating, float(load[0]), float(load[1]), max_eccentricity=0.95)
         bore_y, bore_z = g.bore_centre_line(np.array([0.5 * g.length]))
-        return JournalPosition(
-            ey=local.ey + float(bore_y[0]), ez=local.ez + float(bore_z[0]), tilt_y=tilt_y, tilt_z=tilt_z
-        )
+        return JournalPosition(ey=ey + float(bore_y[0]), ez=ez + float(bore_z[0]), tilt_y=tilt_y, tilt_z=tilt_z)
 
     def _state(self, evaluation: _Evaluation, load: np.ndarray | None = None) -> BearingState:
         g = self.geometry
@@ -993,6 +980,26 @@ class JournalBearing:
         mid = evaluation.film.shape[0] // 2
         column = int(np.argmax(evaluation.film[mid]))
         return float(circumferential[column])
+
+
+def closed_form_offsets(
+    geometry: BearingGeometry, operating: OperatingPoint, load_y: float, load_z: float, max_eccentricity: float = 1.0
+) -> tuple[float, float]:
+    """Journal offsets (ey, ez) from the bore centre that carry the load by the closed-form
+    finite-bearing estimate (:func:`shaftline.film.analytic.eccentricity_guess`), m.
+
+    The cold start of :meth:`JournalBearing.equilibrium` (with the eccentricity ratio capped
+    at ``max_eccentricity``) and, uncapped and so smooth in the load, the part of a swept
+    position that :func:`shaftline.film.sweep` does not extrapolate. The load must not be zero.
+    """
+    g = geometry
+    mean_pressure = math.hypot(load_y, load_z) / (g.length * g.diameter)
+    sommerfeld = (g.radius / g.radial_clearance) ** 2 * operating.viscosity * (operating.speed / (2 * math.pi))
+    epsilon, attitude = eccentricity_guess(sommerfeld / mean_pressure, g.length / g.diameter)
+    epsilon = min(epsilon, max_eccentricity)
+    load_angle = math.atan2(g.rotation * load_z, load_y)
+    local = JournalPosition.from_polar(epsilon * g.radial_clearance, load_angle + attitude, g.rotation)
+    return local.ey, local.ez
 
 
 class _NegativeFilm(Exception):

@@ -37,8 +37,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from shaftline.film import study
-from shaftline.film.analytic import eccentricity_guess
-from shaftline.film.bearing import JournalBearing
+from shaftline.film.bearing import JournalBearing, closed_form_offsets
 from shaftline.film.geometry import JournalPosition
 from shaftline.film.problem import BearingProblem
 from shaftline.film.study import BearingCase, BearingResult
@@ -77,23 +76,12 @@ def _parameters(cases: Sequence[BearingCase], problem: BearingProblem) -> np.nda
 
 
 def _analytic_offsets(problem: BearingProblem, load_y: float, load_z: float) -> np.ndarray:
-    """Journal offsets (ey, ez) from the bore centre that carry the load by the closed-form
-    finite-bearing estimate (:func:`shaftline.film.analytic.eccentricity_guess`, the cold start
-    of :meth:`JournalBearing.equilibrium`), m. Smooth in the load; NaN for no load."""
-    g, op = problem.geometry, problem.operating
+    """The closed-form offsets of :func:`~shaftline.film.bearing.closed_form_offsets` (not
+    capped: smooth in the load), m; NaN for no load."""
     magnitude = math.hypot(load_y, load_z)
     if not magnitude or not math.isfinite(magnitude):
         return np.full(2, np.nan)
-    sommerfeld = (
-        (g.radius / g.radial_clearance) ** 2
-        * op.viscosity
-        * (op.speed / (2 * math.pi))
-        / (magnitude / (g.length * g.diameter))
-    )
-    epsilon, attitude = eccentricity_guess(sommerfeld, g.length / g.diameter)
-    load_angle = math.atan2(g.rotation * load_z, load_y)
-    local = JournalPosition.from_polar(epsilon * g.radial_clearance, load_angle + attitude, g.rotation)
-    return np.array([local.ey, local.ez], dtype=float)
+    return np.array(closed_form_offsets(problem.geometry, problem.operating, load_y, load_z), dtype=float)
 
 
 def _predict(
