@@ -12,7 +12,7 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from shaftline.film.bearing import BearingState, Equilibrium, FilmLinearisation, JournalBearing
+    from shaftline.film.bearing import BearingState, Equilibrium, FilmLinearisation, FilmLoad, JournalBearing
     from shaftline.film.dynamics import DynamicCoefficients, dynamic_coefficients
     from shaftline.film.geometry import (
         BearingGeometry,
@@ -53,6 +53,7 @@ _WHERE = {
     "BearingState": "bearing",
     "Equilibrium": "bearing",
     "FilmLinearisation": "bearing",
+    "FilmLoad": "bearing",
     "JournalBearing": "bearing",
     "DynamicCoefficients": "dynamics",
     "dynamic_coefficients": "dynamics",
@@ -70,6 +71,7 @@ __all__ = [
     "DynamicCoefficients",
     "Equilibrium",
     "FilmLinearisation",
+    "FilmLoad",
     "FilmProfile",
     "FilmStart",
     "Grid",

@@ -25,6 +25,7 @@ from shaftline.errors import InputError, require_finite
 from shaftline.film.analytic import eccentricity_guess
 from shaftline.film.geometry import (
     BearingGeometry,
+    BentJournal,
     Grid,
     JournalPosition,
     coarse_shape,
@@ -62,6 +63,7 @@ __all__ = [
     "BearingState",
     "Equilibrium",
     "FilmLinearisation",
+    "FilmLoad",
     "JournalBearing",
 ]
 
@@ -265,6 +267,29 @@ class FilmLinearisation:
         return -self.velocity_derivative
 
 
+@dataclass(frozen=True, eq=False)
+class FilmLoad:
+    """Film solution for a journal centre line of any shape, with its load along the bearing.
+
+    Attributes
+    ----------
+    state : BearingState
+        The film solution (position: the line's mid-plane offsets and chord tilts).
+    row_force : ndarray (2, nz)
+        Film force on the journal carried by each axial grid row (trapezoid share of the
+        bore), ``(F_y, F_z)``, N; the rows sum to ``state.force_y``, ``state.force_z``.
+    derivative : ndarray (2, nz, k)
+        ``d row_force / d parameter`` for the requested centre-line directions, N per unit,
+        with the cavitated set frozen.
+
+    Equality is identity: the fields hold arrays, which have no single truth value.
+    """
+
+    state: BearingState
+    row_force: np.ndarray = field(repr=False)
+    derivative: np.ndarray = field(repr=False)
+
+
 @dataclass(eq=False)
 class _Evaluation:
     position: JournalPosition
@@ -457,10 +482,16 @@ class JournalBearing:
         """Film thickness on :meth:`grid` for ``position``, m, shape (nz, nt) (no clipping)."""
         return film_thickness(self.geometry, self.grid(position), position)
 
-    def _evaluate(self, position: JournalPosition, warm: bool = True, start: np.ndarray | None = None) -> _Evaluation:
+    def _evaluate(
+        self,
+        position: JournalPosition,
+        warm: bool = True,
+        start: np.ndarray | None = None,
+        geometry: BearingGeometry | None = None,
+    ) -> _Evaluation:
         cache = self._solver_state()
         grid = self.grid(position)
-        film = film_thickness(self.geometry, grid, position)
+        film = film_thickness(geometry or self.geometry, grid, position)
         if film.min() <= 0.0:
             raise _NegativeFilm(float(film.min()))
         c = self.geometry.radial_clearance
@@ -621,6 +652,107 @@ class JournalBearing:
             offset_derivative=np.column_stack([dfy, dfz]),
             velocity_derivative=np.column_stack([dfvy, dfvz]),
         )
+
+    @property
+    def axial_stations(self) -> np.ndarray:
+        """Axial grid stations from the aft edge, m (where :meth:`film_load` takes the journal)."""
+        return self._solver_state().grid.z
+
+    def film_load(
+        self,
+        centre_y: np.ndarray,
+        centre_z: np.ndarray,
+        directions: np.ndarray | None = None,
+        warm_start: bool = True,
+        initial_cavitated: np.ndarray | None = None,
+    ) -> FilmLoad:
+        """Film solution and its load along the bearing for a journal centre line of any shape.
+
+        The journal of an elastohydrodynamic alignment (:mod:`shaftline.shaft.coupled`) is the
+        shaft's elastic line: its centre is given at every axial grid station, and the film
+        returns its force per grid row and, optionally, how those forces change with chosen
+        changes of the centre line (the film stiffness of the shaft's degrees of freedom).
+
+        Parameters
+        ----------
+        centre_y, centre_z : ndarray (nz,)
+            Journal centre offsets from the nominal bore axis (the bore of a straight bearing;
+            a slope-bored bore is the geometry's) at :attr:`axial_stations`, m. Any bent
+            journal of the geometry is replaced by this line.
+        directions : ndarray (k, 2, nz), optional
+            Changes of ``(centre_y, centre_z)`` per unit of k parameters.
+        warm_start : bool
+            Start the cavitation set from this bearing's previous solution (nearby shapes).
+        initial_cavitated : ndarray of bool (nz, nt), optional
+            Start set instead (it wins over ``warm_start``); the result does not depend on it.
+
+        Returns
+        -------
+        FilmLoad
+            The state at the mid-plane offsets and chord tilt of the line, the force per row
+            and its derivatives (cavitated set frozen, exact for the Reynolds condition).
+
+        Raises
+        ------
+        InputError
+            ``"centre_y"`` for a line of the wrong length or one that cuts into the bore.
+        """
+        z = self.axial_stations
+        position, geometry = self._centre_line(centre_y, centre_z)
+        start = self._start_set(initial_cavitated)
+        try:
+            evaluation = self._evaluate(position, warm=warm_start, start=start, geometry=geometry)
+        except _NegativeFilm as exc:
+            raise InputError(
+                "centre_y", f"hmin {exc.value:.3g}", "m", "a journal centre line inside the clearance"
+            ) from None
+        state = self._state(evaluation)
+        row_force = self._row_forces(evaluation.grid, evaluation.relative_pressure, gauge=True)
+        if directions is None:
+            derivative = np.zeros((2, z.size, 0))
+        else:
+            steps = np.asarray(directions, dtype=float)
+            theta = evaluation.grid.theta
+            c = self.geometry.radial_clearance
+            d_film = (
+                -(
+                    steps[:, 0, :, None] * np.cos(theta)[None, None, :]
+                    + self.geometry.rotation * steps[:, 1, :, None] * np.sin(theta)[None, None, :]
+                )
+                / c
+            )
+            _, d_pressure = self._pressure_derivatives(evaluation, [(d, None) for d in d_film])
+            derivative = np.stack([self._row_forces(evaluation.grid, dp, gauge=False) for dp in d_pressure], axis=-1)
+        return FilmLoad(state=state, row_force=row_force, derivative=derivative)
+
+    def _centre_line(self, centre_y: np.ndarray, centre_z: np.ndarray) -> tuple[JournalPosition, BearingGeometry]:
+        """The mid-plane position and chord tilt of a centre line, and the geometry whose bent
+        journal is the rest of it (see :meth:`film_load`)."""
+        z = self.axial_stations
+        line_y = np.asarray(centre_y, dtype=float)
+        line_z = np.asarray(centre_z, dtype=float)
+        for name, line in (("centre_y", line_y), ("centre_z", line_z)):
+            if line.shape != z.shape or not np.all(np.isfinite(line)):
+                raise InputError(name, f"shape {line.shape}", "m", f"{z.size} finite offsets, one per axial station")
+        length = self.geometry.length
+        mid_y, mid_z = float(np.interp(0.5 * length, z, line_y)), float(np.interp(0.5 * length, z, line_z))
+        tilt_y, tilt_z = (line_y[-1] - line_y[0]) / length, (line_z[-1] - line_z[0]) / length
+        arm = z - 0.5 * length
+        bent = BentJournal(z=z, dy=line_y - mid_y - tilt_y * arm, dz=line_z - mid_z - tilt_z * arm)
+        position = JournalPosition(ey=mid_y, ez=mid_z, tilt_y=float(tilt_y), tilt_z=float(tilt_z))
+        return position, replace(self.geometry, bent_journal=bent)
+
+    def min_film_of_line(self, centre_y: np.ndarray, centre_z: np.ndarray) -> float:
+        """Smallest film for a journal centre line given as in :meth:`film_load`, m (no solve)."""
+        position, geometry = self._centre_line(centre_y, centre_z)
+        return float(film_thickness(geometry, self.grid(position), position).min())
+
+    def _row_forces(self, grid: Grid, relative: np.ndarray, gauge: bool) -> np.ndarray:
+        """Film force on the journal per axial grid row, (2, nz), N (sums to :meth:`_integrate_force`)."""
+        pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
+        weighted = pressure * self._solver_state().area_weights
+        theta = grid.theta
+        return np.stack([-weighted @ np.cos(theta), -self.geometry.rotation * (weighted @ np.sin(theta))])
 
     def min_film(self, position: JournalPosition) -> float:
         """Smallest film thickness at ``position``, m (negative when the journal cuts the bore)."""

@@ -303,14 +303,25 @@ class AlignmentModel:
         """Solve every condition of the line (or the given ones)."""
         return [self.solve_condition(c) for c in (conditions or self.line.all_conditions())]
 
-    def solve_condition(self, condition: Condition, two_sided: bool = False) -> ConditionResult:
+    def solve_condition(
+        self,
+        condition: Condition,
+        two_sided: bool = False,
+        extra_forces: tuple[np.ndarray, np.ndarray] | None = None,
+    ) -> ConditionResult:
         """Elastic line and bearing results of ``condition``.
 
         ``two_sided`` holds every support point in contact (no lift-off, no top contact): the
-        linear model behind the influence matrix.
+        linear model behind the influence matrix. ``extra_forces`` are nodal force vectors
+        (vertical, horizontal; each (2n,): force and moment per node, N and N m) added to the
+        condition's loads, e.g. the consistent nodal forces of a bearing film
+        (:mod:`shaftline.shaft.coupled`).
         """
         mesh, supports = self.mesh, self.supports
         fy, fz, uniform_y, uniform_z = self._loads(condition)
+        if extra_forces is not None:
+            fy = fy + extra_forces[0]
+            fz = fz + extra_forces[1]
         oy, oz = self._offsets(condition)
         reactions_y, rigid_y, iterations, state = self._contact(fy, oy, vertical=not two_sided)
         reactions_z, rigid_z, _, _ = self._contact(fz, oz, vertical=False)
@@ -434,6 +445,53 @@ class AlignmentModel:
             if setup.top.size:
                 state[setup.top[solution[m:] > 0.0]] = "top"
         return reactions, multipliers, iterations, state
+
+    def displacement_response(self, contact: ConditionResult, forces: np.ndarray, vertical: bool) -> np.ndarray:
+        """Change of the displacements per unit nodal force, contact set held.
+
+        Parameters
+        ----------
+        contact : ConditionResult
+            A solution of this model; its closed contacts stay closed and its lifted points
+            lifted (the horizontal plane's supports are always closed).
+        forces : ndarray (2n, k)
+            Nodal force columns (force and moment per node, N and N m).
+        vertical : bool
+            The plane: vertical (with lift-off and top contact) or horizontal.
+
+        Returns
+        -------
+        ndarray (2n, k)
+            Displacements (deflection and rotation per node) per unit of each column: exact
+            while the contact set holds, since the solution is then affine in the loads.
+        """
+        supports = self.supports
+        m = supports.x.size
+        setup = self._contact_setup(vertical=vertical)
+        if vertical:
+            state = np.concatenate([b.point_contact for b in contact.bearings])
+            if state.size != m:
+                raise ValueError("contact: a result of another model (its support points differ)")
+            free = np.concatenate([state == "bottom", state[setup.top] == "top"])
+        else:
+            free = np.ones(setup.columns.shape[1], dtype=bool)
+        columns = setup.columns[:, free]
+        k = columns.shape[1]
+        equality = setup.equality[:, free]
+        kkt = np.block([[setup.hessian[np.ix_(free, free)], equality.T], [equality, np.zeros((2, 2))]])
+        forces = np.asarray(forces, dtype=float).reshape(2 * self.mesh.nodes, -1)
+        x = self.mesh.x
+        pinned = self.beam.solve(forces)
+        d_linear = columns.T @ pinned[2 * supports.node]
+        d_target = -np.vstack([forces[0::2].sum(axis=0), x @ forces[0::2] + forces[1::2].sum(axis=0)])
+        # The KKT system of the contact QP: H lambda + E' mu = -linear, E lambda = target.
+        solved = np.linalg.solve(kkt, np.vstack([-d_linear, d_target]))
+        total = forces.copy()
+        np.add.at(total, 2 * supports.node, columns @ solved[:k])
+        u = self.beam.solve(total)
+        u[0::2] += solved[k] + x[:, None] * solved[k + 1]
+        u[1::2] += solved[k + 1]
+        return u
 
     # -- influence coefficients ---------------------------------------------------------
     def influence_matrix(self, contact: ConditionResult | None = None) -> InfluenceMatrix:

@@ -1,0 +1,780 @@
+"""Elastohydrodynamic shaft alignment: the shaft line solved together with its bearing films.
+
+A bearing marked hydrodynamic is supported by its film, not by a point: the shaft's elastic
+line across the bearing is the journal centre line the film solver takes (a bent journal),
+and the film's pressure acts back on the shaft as a distributed load, applied as the
+consistent nodal forces and moments of the beam elements across the bearing (docs/theory.md,
+"Elastohydrodynamic alignment"). Every other bearing keeps its point, spring or multi-point
+model with lift-off.
+
+Method. The unknowns are the shaft's degrees of freedom across the film bearings, ``s``
+(deflection and rotation of every node of the elements the bearing covers, both planes).
+For given ``s`` the film gives its nodal forces ``f(s)`` and stiffness ``df/ds`` (the film
+solver's own frozen-set linearisation, one triangular solve per degree of freedom); the rest
+of the line is the existing contact problem (:class:`~shaftline.shaft.alignment.AlignmentModel`)
+with those forces applied. So that this inner problem keeps its supports when a film bearing
+is one of only two (a mechanism otherwise), each film bearing is also held there by auxiliary
+two-sided springs ``k0`` at its points whose force the outer iteration adds back exactly:
+
+    s = G( f(s) + K0 (s - s_ref) ),
+
+``G`` the inner alignment (affine while its contact set holds). Newton's method on
+``R(s) = s - G(...)`` uses ``dR/ds = I - dG/df (df/ds + K0)``, with ``dG/df`` from
+:meth:`AlignmentModel.displacement_response`; steps keep the film above its floor (fraction
+to the boundary) and lower ``|R|`` (backtracking). At convergence ``s = G(...)`` and the
+springs carry nothing: the film alone supports the shaft there.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from shaftline.errors import InputError, require_positive
+from shaftline.film.bearing import BearingState, FilmLoad, JournalBearing
+from shaftline.film.problem import BearingProblem
+from shaftline.shaft.alignment import AlignmentModel, ConditionResult
+from shaftline.shaft.model import Condition, ShaftLine
+
+__all__ = [
+    "CouplingOptions",
+    "CoupledAlignment",
+    "CoupledResult",
+    "FilmBearingResult",
+    "FilmSupport",
+    "hermite_shape",
+]
+
+
+@dataclass(frozen=True)
+class FilmSupport:
+    """A bearing of the line supported by its film.
+
+    Attributes
+    ----------
+    bearing : str
+        Name of the bearing of the :class:`~shaftline.shaft.model.ShaftLine`.
+    problem : BearingProblem
+        Its film: geometry (length equal to the bearing's; clearance, bore profile),
+        operating point (speed, lubricant) and grid. The journal centre line comes from the
+        shaft, so the geometry must not carry a bent journal of its own.
+    elements : int
+        Beam elements across the bearing (at least this many: the line's own mesh may add
+        nodes), the stations at which the film load enters the shaft. Seed 004 uses 10.
+    """
+
+    bearing: str
+    problem: BearingProblem
+    elements: int = 10
+
+
+@dataclass(frozen=True)
+class CouplingOptions:
+    """Tolerances and limits of the coupled solution.
+
+    Attributes
+    ----------
+    force_tolerance : float
+        Largest change of any film's resultant force, as a share of that force, that the
+        remaining mismatch between shaft and film would cause (film stiffness times the
+        mismatch of the journal line).
+    film_tolerance : float
+        Largest mismatch between the journal line the film was solved for and the line the
+        shaft takes under that film, as a share of the radial clearance (deflections; the
+        rotations are weighted by the bearing length).
+    max_iterations : int
+        Newton iterations allowed.
+    """
+
+    force_tolerance: float = 1e-6
+    film_tolerance: float = 1e-5
+    max_iterations: int = 40
+
+    def __post_init__(self) -> None:
+        for name in ("force_tolerance", "film_tolerance"):
+            value = require_positive(name, getattr(self, name))
+            if value >= 0.1:
+                raise InputError(name, value, "", "in (0, 0.1)")
+        if not 1 <= int(self.max_iterations) <= 1000:
+            raise InputError("max_iterations", self.max_iterations, "", "an integer in [1, 1000]")
+
+
+@dataclass(frozen=True, eq=False)
+class FilmBearingResult:
+    """A film bearing at the coupled equilibrium. SI units.
+
+    Attributes
+    ----------
+    name : str
+    state : BearingState
+        The film solution (pressure and film maps, hmin and pmax with their places,
+        friction, flows; eccentricity and attitude at the mid-plane).
+    z : ndarray (nz,)
+        Axial stations of the film grid from the aft bearing edge, m.
+    centre_y, centre_z : ndarray (nz,)
+        Journal centre line relative to the nominal (unbored) bore centre line, m.
+    bore_y, bore_z : ndarray (nz,)
+        Machined bore centre line (slope boring) relative to the same line, m.
+    force_y, force_z : float
+        Film force on the shaft, N.
+    line_load : ndarray (2, nz)
+        Film force per unit length along the bearing (vertical, horizontal), N/m.
+    support_point : float
+        Axial position of the film resultant from the mid-length, m, positive forward
+        (towards the bow); seed 004's "contact point" is ``L/2 + support_point`` from the
+        aft edge.
+    relative_slope : float
+        Chord slope of the journal across the bearing relative to the bore axis, rad.
+    contact : bool
+        True when the film could not carry its share above the film floor: the bearing was
+        then solved as contact at the bore (multi-point, edge loading) and ``state`` is the
+        film at the last journal line reached.
+    """
+
+    name: str
+    state: BearingState
+    z: np.ndarray = field(repr=False)
+    centre_y: np.ndarray = field(repr=False)
+    centre_z: np.ndarray = field(repr=False)
+    bore_y: np.ndarray = field(repr=False)
+    bore_z: np.ndarray = field(repr=False)
+    force_y: float
+    force_z: float
+    line_load: np.ndarray = field(repr=False)
+    support_point: float
+    relative_slope: float
+    contact: bool
+
+
+@dataclass(frozen=True, eq=False)
+class CoupledResult:
+    """One condition of a line with film bearings.
+
+    Attributes
+    ----------
+    condition : ConditionResult
+        Elastic line, moments, stresses and every bearing's result; a film bearing's
+        reaction is its film force and its ``contact`` is ``"film"`` (or ``"bottom"`` /
+        ``"partial"`` after the fall-back to contact).
+    films : list of FilmBearingResult
+    point_supports : ConditionResult
+        The same condition with every bearing as declared in the line (point, spring or
+        multi-point): the comparison "point supports vs film supports".
+    converged : bool
+    iterations : int
+        Newton iterations.
+    film_solutions : int
+        Film solutions used (all film bearings, line-search trials included).
+    residual_history : list of float
+        Film mismatch (share of the clearance) after each iteration, starting value first.
+    force_residual : float
+        Final force mismatch, share of the film force.
+    message : str
+        Empty when converged; otherwise what happened and what to try.
+    """
+
+    condition: ConditionResult
+    films: list[FilmBearingResult]
+    point_supports: ConditionResult
+    converged: bool
+    iterations: int
+    film_solutions: int
+    residual_history: list[float]
+    force_residual: float
+    message: str = ""
+
+    def film(self, name: str) -> FilmBearingResult:
+        for result in self.films:
+            if result.name == name:
+                return result
+        raise KeyError(name)
+
+
+def hermite_shape(nodes: np.ndarray, stations: np.ndarray) -> np.ndarray:
+    """Cubic Hermite interpolation of a beam's (deflection, rotation) nodal values.
+
+    Parameters
+    ----------
+    nodes : ndarray (n,)
+        Node stations, m, increasing.
+    stations : ndarray (q,)
+        Where to interpolate, m, within ``[nodes[0], nodes[-1]]``.
+
+    Returns
+    -------
+    ndarray (q, 2n)
+        Row ``i`` gives the deflection at ``stations[i]`` from the nodal vector
+        ``(v0, theta0, v1, theta1, ...)``; its transpose turns point forces at the stations
+        into consistent nodal forces and moments.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> shape = hermite_shape(np.array([0.0, 2.0]), np.array([1.0]))
+    >>> shape.round(3).tolist()  # mid-element: half of each deflection, +-L/8 of each rotation
+    [[0.5, 0.25, 0.5, -0.25]]
+    """
+    element = np.clip(np.searchsorted(nodes, stations, side="right") - 1, 0, nodes.size - 2)
+    length = nodes[element + 1] - nodes[element]
+    xi = (stations - nodes[element]) / length
+    shape = np.zeros((stations.size, 2 * nodes.size))
+    rows = np.arange(stations.size)
+    shape[rows, 2 * element] = 1 - 3 * xi**2 + 2 * xi**3
+    shape[rows, 2 * element + 1] = length * (xi - 2 * xi**2 + xi**3)
+    shape[rows, 2 * element + 2] = 3 * xi**2 - 2 * xi**3
+    shape[rows, 2 * element + 3] = length * (-(xi**2) + xi**3)
+    return shape
+
+
+@dataclass(eq=False)
+class _Film:
+    """What the solver keeps for one film bearing."""
+
+    support: FilmSupport
+    index: int  # in line.bearings
+    bearing: JournalBearing
+    dofs: np.ndarray  # global dof numbers (per plane) of the nodes the bearing covers
+    shape: np.ndarray  # (nz, len(dofs)) Hermite map dofs -> centre line at the film stations
+    points: np.ndarray  # support-point indices of its auxiliary springs (inner model)
+    point_dofs: np.ndarray  # positions in ``dofs`` of those points' deflections
+    spring: float  # auxiliary spring stiffness per point, N/m
+    aft_edge: float
+
+
+@dataclass(eq=False)
+class _Iterate:
+    """The coupled state at one ``s``: films, inner alignment and residual."""
+
+    s: np.ndarray  # (2, total dofs): vertical and horizontal
+    loads: list[FilmLoad]
+    inner: ConditionResult
+    image: np.ndarray  # G(...) at the same dofs
+    residual: np.ndarray
+    norm: float
+
+
+class CoupledAlignment:
+    """A shaft line whose hydrodynamic bearings are supported by their films.
+
+    Parameters
+    ----------
+    line : ShaftLine
+        The line as for :class:`~shaftline.shaft.alignment.AlignmentModel`; the bearings named
+        in ``films`` are solved with their film instead of their declared support (which
+        stays the model of the comparison "point supports").
+    films : sequence of FilmSupport
+    options : CouplingOptions
+
+    Raises
+    ------
+    InputError
+        ``films[k].bearing`` naming no bearing, or a bearing with ``support = "spring"``;
+        ``films[k].problem.geometry.length`` differing from the bearing's length;
+        ``films[k].problem.geometry.bent_journal`` set; ``films[k].problem.options.axial_nodes``
+        for a film grid coarser than the shaft elements across the bearing.
+    """
+
+    def __init__(
+        self,
+        line: ShaftLine,
+        films: tuple[FilmSupport, ...] | list[FilmSupport],
+        options: CouplingOptions | None = None,
+    ) -> None:
+        self.line = line
+        self.options = options or CouplingOptions()
+        self.point_model = AlignmentModel(line)
+        names = [b.name for b in line.bearings]
+        seen: set[str] = set()
+        for k, support in enumerate(films):
+            where = f"films[{k}]"
+            if support.bearing not in names:
+                raise InputError(f"{where}.bearing", support.bearing, "", "the name of a bearing: " + ", ".join(names))
+            if support.bearing in seen:
+                raise InputError(f"{where}.bearing", support.bearing, "", "a bearing not given a film twice")
+            seen.add(support.bearing)
+            bearing = line.bearings[names.index(support.bearing)]
+            if bearing.support == "spring":
+                raise InputError(
+                    f"{where}.bearing",
+                    support.bearing,
+                    "",
+                    'a bearing with support "point" or "multi_point": a film is the support itself, '
+                    "not a spring (give the liner's compliance to the film instead)",
+                )
+            geometry = support.problem.geometry
+            if abs(geometry.length - bearing.length) > 1e-6 * bearing.length:
+                raise InputError(
+                    f"{where}.problem.geometry.length", geometry.length, "m", f"the bearing's length {bearing.length}"
+                )
+            if geometry.bent_journal is not None:
+                raise InputError(
+                    f"{where}.problem.geometry.bent_journal",
+                    "given",
+                    "",
+                    "none: the shaft's elastic line is the journal",
+                )
+            if not 2 <= int(support.elements) <= 50:
+                raise InputError(f"{where}.elements", support.elements, "", "an integer in [2, 50]")
+        self._supports = tuple(films)
+        self._build()
+
+    # -- set-up ----------------------------------------------------------------------------
+    def _inner_line(self, springs: dict[str, float]) -> ShaftLine:
+        bearings = []
+        film_of = {f.bearing: f for f in self._supports}
+        for bearing in self.line.bearings:
+            support = film_of.get(bearing.name)
+            if support is None:
+                bearings.append(bearing)
+                continue
+            c = support.problem.geometry.radial_clearance
+            bearings.append(
+                replace(
+                    bearing,
+                    support="multi_point",
+                    points=int(support.elements),
+                    stiffness=springs[bearing.name],
+                    one_sided=False,
+                    vertical_clearance=math.inf,
+                    offset_y=bearing.offset_y + c,
+                )
+            )
+        return replace(self.line, bearings=tuple(bearings))
+
+    def _build(self) -> None:
+        base = self.point_model.solve_condition(self.line.all_conditions()[0])
+        springs = {}
+        for support in self._supports:
+            c = support.problem.geometry.radial_clearance
+            result = base.bearing(support.bearing)
+            # About the film's own stiffness (load over a share of the clearance): the outer
+            # Newton iteration does not depend on it, the conditioning of its matrix does.
+            load = max(math.hypot(result.reaction_y, result.reaction_z), 1e3)
+            springs[support.bearing] = load / (0.5 * c) / support.elements
+        self.model = AlignmentModel(self._inner_line(springs))
+        mesh = self.model.mesh
+        self._films: list[_Film] = []
+        names = [b.name for b in self.line.bearings]
+        for support in self._supports:
+            index = names.index(support.bearing)
+            bearing = self.line.bearings[index]
+            film = JournalBearing.from_problem(support.problem)
+            aft = bearing.x - 0.5 * bearing.length
+            stations = aft + film.axial_stations
+            first = int(np.clip(np.searchsorted(mesh.x, stations[0], side="right") - 1, 0, mesh.nodes - 2))
+            last = int(np.clip(np.searchsorted(mesh.x, stations[-1], side="left"), first + 1, mesh.nodes - 1))
+            nodes = np.arange(first, last + 1)
+            element_length = float(np.max(np.diff(mesh.x[nodes])))
+            spacing = film.axial_stations[1] - film.axial_stations[0]
+            if spacing > element_length * (1 + 1e-9):
+                raise InputError(
+                    f"films[{self._supports.index(support)}].problem.options.axial_nodes",
+                    support.problem.options.axial_nodes,
+                    "",
+                    f"a film grid at least as fine as the shaft elements across the bearing "
+                    f"({element_length:.4g} m): >= {math.ceil(bearing.length / element_length) + 1} nodes",
+                )
+            dofs = np.stack([2 * nodes, 2 * nodes + 1], axis=1).ravel()
+            shape = hermite_shape(mesh.x[nodes], stations)
+            points = np.flatnonzero(self.model.supports.bearing == index)
+            point_nodes = self.model.supports.node[points]
+            point_dofs = np.searchsorted(dofs, 2 * point_nodes)
+            if not np.array_equal(dofs[point_dofs], 2 * point_nodes):
+                raise RuntimeError("film support points off the bearing's nodes")  # a meshing bug
+            self._films.append(
+                _Film(support, index, film, dofs, shape, points, point_dofs, springs[support.bearing], aft)
+            )
+        self._offsets = [np.concatenate([[0], np.cumsum([f.dofs.size for f in self._films])])]
+
+    # -- pieces of the iteration ---------------------------------------------------------
+    def _slices(self) -> list[slice]:
+        edges = self._offsets[0]
+        return [slice(int(a), int(b)) for a, b in zip(edges[:-1], edges[1:], strict=True)]
+
+    def _bore_reference(self, film: _Film, condition: Condition) -> tuple[np.ndarray, np.ndarray]:
+        """Nominal bore centre line at the film stations (y, z), m: offset, clearance and slope."""
+        bearing = self.line.bearings[film.index]
+        x = film.aft_edge + film.bearing.axial_stations
+        c = film.support.problem.geometry.radial_clearance
+        y = bearing.offset_y + condition.offsets_y.get(bearing.name, 0.0) + c + bearing.slope * (x - bearing.x)
+        z = np.full(x.size, bearing.offset_z + condition.offsets_z.get(bearing.name, 0.0))
+        return y, z
+
+    def _centre_lines(self, s: np.ndarray, condition: Condition) -> list[tuple[np.ndarray, np.ndarray]]:
+        lines = []
+        for film, part in zip(self._films, self._slices(), strict=True):
+            ref_y, ref_z = self._bore_reference(film, condition)
+            lines.append((film.shape @ s[0, part] - ref_y, film.shape @ s[1, part] - ref_z))
+        return lines
+
+    def _min_film_share(self, s: np.ndarray, condition: Condition) -> float:
+        """Smallest film over all film bearings less its floor, as a share of the clearance."""
+        shares = []
+        for film, (cy, cz) in zip(self._films, self._centre_lines(s, condition), strict=True):
+            c = film.support.problem.geometry.radial_clearance
+            floor = film.support.problem.options.min_film_floor
+            shares.append(film.bearing.min_film_of_line(cy, cz) / c - floor)
+        return min(shares)
+
+    def _evaluate(self, s: np.ndarray, condition: Condition) -> _Iterate:
+        mesh = self.model.mesh
+        extra = np.zeros((2, 2 * mesh.nodes))
+        loads = []
+        oy, oz = self.model._offsets(condition)
+        offsets = np.stack([oy, oz])
+        for film, part, (cy, cz) in zip(self._films, self._slices(), self._centre_lines(s, condition), strict=True):
+            k = film.dofs.size
+            directions = np.zeros((2 * k, 2, cy.size))
+            directions[:k, 0] = film.shape.T
+            directions[k:, 1] = film.shape.T
+            load = film.bearing.film_load(cy, cz, directions)
+            loads.append(load)
+            for plane in range(2):
+                nodal = film.shape.T @ load.row_force[plane]
+                # The auxiliary springs' force, added back (see the module docstring).
+                correction = np.zeros(k)
+                deflection = s[plane, part][film.point_dofs]
+                correction[film.point_dofs] = film.spring * (deflection - offsets[plane, film.points])
+                np.add.at(extra[plane], film.dofs, nodal + correction)
+        inner = self.model.solve_condition(condition, extra_forces=(extra[0], extra[1]))
+        image = np.zeros_like(s)
+        for film, part in zip(self._films, self._slices(), strict=True):
+            v = np.empty(2 * mesh.nodes)
+            w = np.empty(2 * mesh.nodes)
+            v[0::2], v[1::2] = inner.deflection_y, inner.rotation_y
+            w[0::2], w[1::2] = inner.deflection_z, inner.rotation_z
+            image[0, part] = v[film.dofs]
+            image[1, part] = w[film.dofs]
+        residual = s - image
+        return _Iterate(s, loads, inner, image, residual, self._norm(residual))
+
+    def _scale(self) -> np.ndarray:
+        """Weights making a dof mismatch a share of the clearance (rotations times the length)."""
+        weights = []
+        for film in self._films:
+            c = film.support.problem.geometry.radial_clearance
+            length = film.support.problem.geometry.length
+            w = np.empty(film.dofs.size)
+            w[0::2] = 1.0 / c
+            w[1::2] = length / c
+            weights.append(w)
+        return np.concatenate(weights)
+
+    def _norm(self, residual: np.ndarray) -> float:
+        return float(np.max(np.abs(residual * self._scale()[None, :])))
+
+    def _jacobian(self, iterate: _Iterate) -> tuple[np.ndarray, np.ndarray]:
+        """d R / d s, both planes stacked: (2 m, 2 m), m the film dofs per plane; and the film
+        (plus spring) stiffness it is made of."""
+        mesh = self.model.mesh
+        m = iterate.s.shape[1]
+        stiffness = np.zeros((2 * m, 2 * m))  # d (nodal film force + spring correction) / d s
+        columns = np.zeros((2, 2 * mesh.nodes, m))  # unit nodal forces at the film dofs, per plane
+        for film, part, load in zip(self._films, self._slices(), iterate.loads, strict=True):
+            k = film.dofs.size
+            for plane in range(2):
+                rows = slice(plane * m + part.start, plane * m + part.stop)
+                for other in range(2):
+                    cols = slice(other * m + part.start, other * m + part.stop)
+                    derivative = load.derivative[plane][:, other * k : (other + 1) * k]
+                    stiffness[rows, cols] = film.shape.T @ derivative
+                diagonal = plane * m + part.start + film.point_dofs
+                stiffness[diagonal, diagonal] += film.spring
+                columns[plane, film.dofs, np.arange(part.start, part.stop)] = 1.0
+        response = np.zeros((2 * m, 2 * m))
+        for plane in range(2):
+            u = self.model.displacement_response(iterate.inner, columns[plane], vertical=plane == 0)
+            picked = np.concatenate([u[film.dofs] for film in self._films])
+            response[plane * m : (plane + 1) * m, plane * m : (plane + 1) * m] = picked
+        return np.eye(2 * m) - response @ stiffness, stiffness
+
+    def _start(self, condition: Condition, points: ConditionResult) -> np.ndarray:
+        """Journal lines from each film's own equilibrium under its point-support reaction and
+        relative slope (the seed's uncoupled analysis), as nodal dofs."""
+        mesh = self.model.mesh
+        total = self._offsets[0][-1]
+        s = np.zeros((2, total))
+        for film, part in zip(self._films, self._slices(), strict=True):
+            bearing = self.line.bearings[film.index]
+            result = points.bearing(bearing.name)
+            load_y, load_z = -result.reaction_y, -result.reaction_z
+            if math.hypot(load_y, load_z) < 1.0:
+                load_y = -1.0
+            c = film.support.problem.geometry.radial_clearance
+            tilt = result.relative_slope
+            try:
+                found = film.bearing.equilibrium(load_y, load_z, tilt_y=tilt)
+                position = found.state.position
+            except InputError:  # the point model's slope does not fit the clearance
+                position = film.bearing._initial_position(np.array([load_y, load_z]), 0.0, 0.0)
+            ref_y = bearing.offset_y + condition.offsets_y.get(bearing.name, 0.0) + c
+            ref_z = bearing.offset_z + condition.offsets_z.get(bearing.name, 0.0)
+            x = mesh.x[film.dofs[0::2] // 2]
+            arm = x - bearing.x
+            s[0, part][0::2] = ref_y + bearing.slope * arm + position.ey + position.tilt_y * arm
+            s[0, part][1::2] = bearing.slope + position.tilt_y
+            s[1, part][0::2] = ref_z + position.ez + position.tilt_z * arm
+            s[1, part][1::2] = position.tilt_z
+        return s
+
+    # -- solution --------------------------------------------------------------------------
+    def solve(
+        self, condition: Condition | None = None, progress: Callable[[int, float], None] | None = None
+    ) -> CoupledResult:
+        """Solve one condition (default: the line's first) with the film bearings coupled.
+
+        Parameters
+        ----------
+        condition : Condition, optional
+        progress : callable, optional
+            Called after each Newton iteration with its number and the film mismatch (share
+            of the clearance).
+        """
+        condition = condition or self.line.all_conditions()[0]
+        points = self.point_model.solve_condition(condition)
+        s = self._start(condition, points)
+        if self._min_film_share(s, condition) <= 0.0:
+            s = self._pulled_inside(s, condition)
+        current = self._evaluate(s, condition)
+        solutions = 1
+        history = [current.norm]
+        iterations = 0
+        converged = False
+        force_residual = math.inf
+        message = ""
+        options = self.options
+        while True:
+            jacobian, stiffness = self._jacobian(current)
+            force_residual = self._force_residual(current, stiffness)
+            if current.norm <= options.film_tolerance and force_residual <= options.force_tolerance:
+                converged = True
+                break
+            if iterations >= options.max_iterations:
+                message = (
+                    f"not converged in {iterations} iterations: film mismatch {current.norm:.3g} of the clearance, "
+                    f"force mismatch {force_residual:.3g}; raise max_iterations or the tolerances, "
+                    "or refine the film grid"
+                )
+                break
+            iterations += 1
+            flat = np.concatenate([current.residual[0], current.residual[1]])
+            try:
+                step = np.linalg.solve(jacobian, -flat).reshape(2, -1)
+            except np.linalg.LinAlgError:
+                message = "the coupled Jacobian is singular (a mechanism): check the supports"
+                break
+            accepted = None
+            alpha = 1.0
+            room = self._min_film_share(current.s, condition)
+            while alpha > 1e-6 and self._min_film_share(current.s + alpha * step, condition) < 0.2 * room:
+                alpha *= 0.5
+            while alpha > 1e-6:
+                trial = self._evaluate(current.s + alpha * step, condition)
+                solutions += 1
+                if trial.norm < (1.0 - 1e-4 * alpha) * current.norm:
+                    accepted = trial
+                    break
+                alpha *= 0.5
+            if accepted is None:
+                grounded = self._grounded(current.s, condition)
+                if grounded:
+                    return self._fall_back(grounded, current, points, condition, progress)
+                message = f"the coupled iteration stalled at a film mismatch of {current.norm:.3g} of the clearance"
+                break
+            current = accepted
+            history.append(current.norm)
+            if progress is not None:
+                progress(iterations, current.norm)
+        return self._result(
+            current,
+            points,
+            converged,
+            iterations,
+            solutions * len(self._films),
+            history,
+            force_residual,
+            message,
+            condition,
+        )
+
+    def _grounded(self, s: np.ndarray, condition: Condition) -> list[int]:
+        """Film bearings (indices into the films) whose film is within twice its floor."""
+        grounded = []
+        for k, (film, (cy, cz)) in enumerate(zip(self._films, self._centre_lines(s, condition), strict=True)):
+            c = film.support.problem.geometry.radial_clearance
+            floor = film.support.problem.options.min_film_floor * c
+            if film.bearing.min_film_of_line(cy, cz) <= 2.0 * floor:
+                grounded.append(k)
+        return grounded
+
+    def _fall_back(
+        self,
+        grounded: list[int],
+        last: _Iterate,
+        points: ConditionResult,
+        condition: Condition,
+        progress: Callable[[int, float], None] | None,
+    ) -> CoupledResult:
+        """Solve again with the grounded films as contact at their bore: a multi-point support
+        along the bore bottom with the top of the bore as a second contact (edge loading)."""
+        line = self.line
+        bearings = list(line.bearings)
+        for k in grounded:
+            film = self._films[k]
+            geometry = film.support.problem.geometry
+            bore_y, _ = geometry.bore_centre_line(np.array([0.0, geometry.length]))
+            bearing = bearings[film.index]
+            bearings[film.index] = replace(
+                bearing,
+                support="multi_point",
+                points=int(film.support.elements),
+                one_sided=True,
+                vertical_clearance=2.0 * geometry.radial_clearance,
+                # The chord of a slope-bored bore: its knuckles are not modelled by the fall-back.
+                slope=bearing.slope + float(bore_y[1] - bore_y[0]) / geometry.length,
+                offset_y=bearing.offset_y + float(np.mean(bore_y)),
+            )
+        remaining = [f.support for k, f in enumerate(self._films) if k not in grounded]
+        contact_line = replace(line, bearings=tuple(bearings))
+        if remaining:
+            inner = CoupledAlignment(contact_line, remaining, self.options).solve(condition, progress)
+            result_condition = inner.condition
+            films = list(inner.films)
+            converged, iterations, solutions = inner.converged, inner.iterations, inner.film_solutions
+            history, force_residual = inner.residual_history, inner.force_residual
+        else:
+            result_condition = AlignmentModel(contact_line).solve_condition(condition)
+            films = []
+            converged, iterations, solutions, history, force_residual = True, 0, 0, [], 0.0
+        own = self._result(last, points, False, 0, 0, [], math.inf, "", condition)
+        for k in grounded:
+            films.append(replace(own.films[k], contact=True))
+        order = {b.name: i for i, b in enumerate(line.bearings)}
+        films.sort(key=lambda f: order[f.name])
+        names = ", ".join(self._films[k].support.bearing for k in grounded)
+        message = (
+            f"film at its floor in {names}: the film cannot carry its share there, so the bearing was solved "
+            "as contact at the bore (edge loading); the film results are those at the floor"
+        )
+        return CoupledResult(
+            condition=result_condition,
+            films=films,
+            point_supports=points,
+            converged=converged,
+            iterations=iterations,
+            film_solutions=solutions,
+            residual_history=history,
+            force_residual=force_residual,
+            message=message,
+        )
+
+    def _pulled_inside(self, s: np.ndarray, condition: Condition) -> np.ndarray:
+        """Move each journal line towards its bore centre until every film is open."""
+        centre = np.zeros_like(s)
+        for film, part in zip(self._films, self._slices(), strict=True):
+            bearing = self.line.bearings[film.index]
+            c = film.support.problem.geometry.radial_clearance
+            x = self.model.mesh.x[film.dofs[0::2] // 2]
+            centre[0, part][0::2] = (
+                bearing.offset_y + condition.offsets_y.get(bearing.name, 0.0) + c + bearing.slope * (x - bearing.x)
+            )
+            centre[0, part][1::2] = bearing.slope
+            centre[1, part][0::2] = bearing.offset_z + condition.offsets_z.get(bearing.name, 0.0)
+        for _ in range(60):
+            if self._min_film_share(s, condition) > 0.05:
+                return s
+            s = centre + 0.8 * (s - centre)
+        return centre
+
+    def _force_residual(self, iterate: _Iterate, stiffness: np.ndarray) -> float:
+        """Largest change of a film's resultant that moving it onto the shaft's line would cause,
+        as a share of that resultant."""
+        m = iterate.s.shape[1]
+        flat = np.concatenate([iterate.residual[0], iterate.residual[1]])
+        change = stiffness @ flat  # nodal film force change (springs: they cancel at the fixed point)
+        worst = 0.0
+        for film, part, load in zip(self._films, self._slices(), iterate.loads, strict=True):
+            spring = np.zeros(2 * m)
+            for plane in range(2):
+                spring[plane * m + part.start + film.point_dofs] = (
+                    film.spring * flat[plane * m + part.start + film.point_dofs]
+                )
+            film_change = change - spring
+            resultant = np.array(
+                [film_change[plane * m + part.start : plane * m + part.stop][0::2].sum() for plane in range(2)]
+            )
+            magnitude = max(float(np.hypot(*load.row_force.sum(axis=1))), 1e-30)
+            worst = max(worst, float(np.hypot(*resultant)) / magnitude)
+        return worst
+
+    def _result(
+        self,
+        current: _Iterate,
+        points: ConditionResult,
+        converged: bool,
+        iterations: int,
+        solutions: int,
+        history: list[float],
+        force_residual: float,
+        message: str,
+        condition: Condition,
+    ) -> CoupledResult:
+        inner = current.inner
+        films = []
+        bearings = list(inner.bearings)
+        for film, load, (cy, cz) in zip(
+            self._films, current.loads, self._centre_lines(current.s, condition), strict=True
+        ):
+            state = load.state
+            geometry = film.support.problem.geometry
+            z = film.bearing.axial_stations
+            bore_y, bore_z = geometry.bore_centre_line(z)
+            weights = np.full(z.size, z[1] - z[0])
+            weights[[0, -1]] *= 0.5
+            fy, fz = (float(v) for v in load.row_force.sum(axis=1))
+            contact = bool(state.contact)
+            films.append(
+                FilmBearingResult(
+                    name=self.line.bearings[film.index].name,
+                    state=state,
+                    z=z,
+                    centre_y=cy,
+                    centre_z=cz,
+                    bore_y=bore_y,
+                    bore_z=bore_z,
+                    force_y=fy,
+                    force_z=fz,
+                    line_load=load.row_force / weights[None, :],
+                    support_point=state.load_centre_offset,
+                    relative_slope=float((cy[-1] - cy[0]) / geometry.length),
+                    contact=contact,
+                )
+            )
+            old = bearings[film.index]
+            diameter = geometry.diameter
+            bearing = self.line.bearings[film.index]
+            bearings[film.index] = replace(
+                old,
+                reaction_y=fy,
+                reaction_z=fz,
+                mean_pressure=abs(fy) / (bearing.length * diameter),
+                contact="film",
+                relative_slope=float(old.shaft_slope - bearing.slope),
+                point_reactions=(film.shape.T @ load.row_force[0])[0::2],
+                point_contact=np.full(film.dofs.size // 2, "film", dtype=object),
+            )
+        condition_result = replace(inner, bearings=bearings)
+        return CoupledResult(
+            condition=condition_result,
+            films=films,
+            point_supports=points,
+            converged=converged,
+            iterations=iterations,
+            film_solutions=solutions,
+            residual_history=history,
+            force_residual=force_residual,
+            message=message,
+        )
