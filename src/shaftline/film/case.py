@@ -65,6 +65,7 @@ from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
     from shaftline.film.study import BearingStudy
+    from shaftline.lubricants import Lubricant
 
 ROTATION_ALIASES = {
     "clockwise_from_aft": "clockwise",
@@ -543,11 +544,40 @@ def _tilt(angle: float | None, ratio: float | None, length: float, clearance: fl
     return 0.0 if angle is None else angle
 
 
+def lubricant_properties(lube: LubricantSection) -> tuple[Lubricant, float, float]:
+    """The lubricant of a ``lubricant`` table, and its film viscosity (Pa s) and density (kg/m^3)."""
+    from shaftline.lubricants import Lubricant
+
+    with located("lubricant", {"name": "lubricant.preset", "density_15": "lubricant.density"}):
+        if lube.viscosity is not None:
+            lubricant = Lubricant.constant(
+                lube.viscosity, lube.density or 880.0, name=lube.name or "constant viscosity"
+            )
+            viscosity, density = lube.viscosity, lube.density or 880.0
+        else:
+            if lube.preset is not None:
+                lubricant = Lubricant.preset(lube.preset)
+            else:
+                assert lube.temperature_1 is not None and lube.temperature_2 is not None
+                assert lube.kinematic_viscosity_1 is not None and lube.kinematic_viscosity_2 is not None
+                lubricant = Lubricant.from_two_points(
+                    lube.name or "two-point oil",
+                    lube.temperature_1,
+                    lube.kinematic_viscosity_1,
+                    lube.temperature_2,
+                    lube.kinematic_viscosity_2,
+                    lube.density or 880.0,
+                )
+            assert lube.temperature is not None  # checked by the schema
+            viscosity = float(lubricant.dynamic_viscosity(lube.temperature))
+            density = float(lubricant.density(lube.temperature))
+    return lubricant, viscosity, density
+
+
 def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
     """The base case and its variants in SI domain objects (raises :class:`InputError` with
     the field's path inside ``[bearing]``)."""
     from shaftline.film.study import BearingCase, BearingStudy
-    from shaftline.lubricants import Lubricant
 
     clearance = (
         section.radial_clearance if section.radial_clearance is not None else 0.5 * (section.diametral_clearance or 0.0)
@@ -581,30 +611,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             )
 
     base_geometry = geometry(_bore(section.bore, length, clearance), "bore")
-    lube = section.lubricant
-    with located("lubricant", {"name": "lubricant.preset", "density_15": "lubricant.density"}):
-        if lube.viscosity is not None:
-            lubricant = Lubricant.constant(
-                lube.viscosity, lube.density or 880.0, name=lube.name or "constant viscosity"
-            )
-            viscosity, density = lube.viscosity, lube.density or 880.0
-        else:
-            if lube.preset is not None:
-                lubricant = Lubricant.preset(lube.preset)
-            else:
-                assert lube.temperature_1 is not None and lube.temperature_2 is not None
-                assert lube.kinematic_viscosity_1 is not None and lube.kinematic_viscosity_2 is not None
-                lubricant = Lubricant.from_two_points(
-                    lube.name or "two-point oil",
-                    lube.temperature_1,
-                    lube.kinematic_viscosity_1,
-                    lube.temperature_2,
-                    lube.kinematic_viscosity_2,
-                    lube.density or 880.0,
-                )
-            assert lube.temperature is not None  # checked by the schema
-            viscosity = float(lubricant.dynamic_viscosity(lube.temperature))
-            density = float(lubricant.density(lube.temperature))
+    lubricant, viscosity, density = lubricant_properties(section.lubricant)
     op = section.operation
     # OperatingPoint carries the lubricant's viscosity and density: their errors belong there.
     with located("operation", {"viscosity": "lubricant.viscosity", "density": "lubricant.density"}):
@@ -653,7 +660,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             tilt_y=tilt,
             tilt_z=tilt_z,
             lubricant=lubricant,
-            temperature=lube.temperature,
+            temperature=section.lubricant.temperature,
             surface_roughness=section.surface_roughness,
             error_fields=fields,
         )

@@ -5,11 +5,14 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Details, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
     from shaftline.shaft.case import AlignmentSection
+    from shaftline.shaft.coupled import CoupledResult
     from shaftline.shaft.rules import RuleCheck
     from shaftline.shaft.study import AlignmentResult, AlignmentStudy
 
@@ -56,6 +59,156 @@ def rule_check_rows(checks: list[RuleCheck]) -> list[list[str]]:
             ]
         )
     return rows
+
+
+#: Units of the film-support fields of results.json.
+FILM_UNITS = {
+    "force_y": "N",
+    "force_z": "N",
+    "min_film_thickness": "m",
+    "min_film_theta": "rad",
+    "min_film_z": "m",
+    "max_pressure": "Pa",
+    "max_pressure_theta": "rad",
+    "max_pressure_z": "m",
+    "support_point": "m",
+    "attitude_angle": "rad",
+    "power_loss": "W",
+    "side_leakage": "m^3/s",
+    "centre_y": "m",
+    "centre_z": "m",
+    "line_load": "N/m",
+}
+
+
+def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
+    """One condition's film supports: convergence, each film, and the point-support comparison."""
+    return {
+        "condition": coupled.condition.name,
+        "converged": coupled.converged,
+        "iterations": coupled.iterations,
+        "film_solutions": coupled.film_solutions,
+        "residual_history": coupled.residual_history,
+        "force_residual": coupled.force_residual,
+        "message": coupled.message,
+        "films": [
+            {
+                "name": f.name,
+                "contact": f.contact,
+                "force_y": f.force_y,
+                "force_z": f.force_z,
+                "min_film_thickness": f.state.min_film_thickness,
+                "min_film_theta": f.state.min_film_theta,
+                "min_film_z": f.state.min_film_z,
+                "max_pressure": f.state.max_pressure,
+                "max_pressure_theta": f.state.max_pressure_theta,
+                "max_pressure_z": f.state.max_pressure_z,
+                "support_point": f.support_point,
+                "eccentricity_ratio": f.state.eccentricity_ratio,
+                "attitude_angle": f.state.attitude_angle,
+                "relative_slope": f.relative_slope,
+                "power_loss": f.state.power_loss,
+                "side_leakage": f.state.side_leakage,
+                "centre_line": {
+                    "z": f.z.tolist(),
+                    "centre_y": f.centre_y.tolist(),
+                    "centre_z": f.centre_z.tolist(),
+                    "bore_y": f.bore_y.tolist(),
+                    "bore_z": f.bore_z.tolist(),
+                },
+                "line_load": {"y": f.line_load[0].tolist(), "z": f.line_load[1].tolist()},
+            }
+            for f in coupled.films
+        ],
+        "point_supports": [
+            {
+                "name": b.name,
+                "reaction_y": b.reaction_y,
+                "reaction_z": b.reaction_z,
+                "contact": b.contact,
+                "relative_slope": b.relative_slope,
+            }
+            for b in coupled.point_supports.bearings
+        ],
+    }
+
+
+def _film_rows(coupled: CoupledResult) -> list[list[str]]:
+    rows = []
+    for f in coupled.films:
+        state = f.state
+        rows.append(
+            [
+                f.name,
+                fmt(f.force_y, 1e-3),
+                fmt(state.min_film_thickness, 1e6),
+                f"{np.degrees(state.min_film_theta):.0f} / {state.min_film_z:.3f}",
+                fmt(state.max_pressure, 1e-6),
+                fmt(f.support_point, 1e3),
+                fmt(state.eccentricity_ratio, 1.0),
+                f"{np.degrees(state.attitude_angle):.1f}",
+                fmt(f.relative_slope, 1e3),
+                fmt(state.power_loss, 1e-3),
+                "CONTACT" if f.contact else "film",
+            ]
+        )
+    return rows
+
+
+FILM_HEADERS = [
+    "bearing",
+    "force [kN]",
+    "h_min [µm]",
+    "at θ [deg] / z [m]",
+    "p_max [MPa]",
+    "support pt [mm]",
+    "ε",
+    "attitude [deg]",
+    "rel. slope [mrad]",
+    "power [kW]",
+    "state",
+]
+
+
+def _comparison_rows(coupled: CoupledResult) -> list[list[str]]:
+    rows = []
+    for point, film in zip(coupled.point_supports.bearings, coupled.condition.bearings, strict=True):
+        shift = film.reaction_y - point.reaction_y
+        share = f"{100 * shift / point.reaction_y:+.1f}" if abs(point.reaction_y) > 1e-9 else "-"
+        rows.append(
+            [
+                film.name,
+                fmt(point.reaction_y, 1e-3),
+                fmt(film.reaction_y, 1e-3),
+                fmt(shift, 1e-3),
+                share,
+                fmt(point.relative_slope, 1e3),
+                fmt(film.relative_slope, 1e3),
+            ]
+        )
+    return rows
+
+
+COMPARISON_HEADERS = [
+    "bearing",
+    "point [kN]",
+    "film [kN]",
+    "shift [kN]",
+    "shift [%]",
+    "rel. slope point [mrad]",
+    "rel. slope film [mrad]",
+]
+
+
+#: Columns of the film tables kept in the terminal summary (80 columns).
+NARROW_FILM = (0, 1, 2, 4, 5, 10)
+NARROW_COMPARISON = (0, 1, 2, 4, 6)
+
+
+def _narrowed(headers: list[str], rows: list[list[str]], title: str, keep: tuple[int, ...] | None) -> Table:
+    if keep is None:
+        return Table(headers, rows, title)
+    return Table([headers[k] for k in keep], [[row[k] for k in keep] for row in rows], title)
 
 
 class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "AlignmentResult"]):
@@ -136,6 +289,9 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             "rule_checks": [_check_json(c) for c in result.checks],
             "slope_boring_angle": result.slope_boring_angle(),
         }
+        if result.coupled is not None:
+            out["units"].update(FILM_UNITS)
+            out["film_supports"] = [_coupled_json(c) for c in result.coupled]
         if result.plan is not None:
             out["optimised_offsets"] = {
                 "offsets": result.plan.offsets,
@@ -208,8 +364,62 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             return Paragraph(f"Class-rule checks: {len(failed)} of {len(result.checks)} fail.", "warn")
         return Paragraph(f"Class-rule checks: all {len(result.checks)} pass.")
 
+    def _film_report(self, result: AlignmentResult) -> list[Block]:
+        from shaftline.film.figures import film_and_pressure_maps
+        from shaftline.shaft import figures
+
+        blocks: list[Block] = [
+            Heading("Film supports (elastohydrodynamic alignment)"),
+            Paragraph(
+                "The bearings marked hydrodynamic are supported by their film: the shaft's elastic line across the "
+                "bearing is the journal, and the film pressure acts back on the shaft as a distributed load. The "
+                "support point is the axial position of the film resultant from the bearing's mid-length, + forward. "
+                "Influence coefficients, offset optimisation, sag and gap and jack-up use the declared supports."
+            ),
+        ]
+        for k, coupled in enumerate(result.coupled or []):
+            blocks += self._film_blocks(coupled)
+            blocks.append(
+                Figure(
+                    f"alignment_point_vs_film_{k}.png",
+                    figures.point_vs_film,
+                    (coupled,),
+                    caption=f"point vs film supports, {coupled.condition.name}",
+                )
+            )
+            for j, film in enumerate(coupled.films):
+                blocks.append(
+                    Figure(
+                        f"alignment_journal_{k}_{j}.png",
+                        figures.journal_in_bore,
+                        (film,),
+                        caption=f"journal in the bore, {film.name}, {coupled.condition.name}",
+                    )
+                )
+                blocks.append(
+                    Figure(
+                        f"alignment_film_maps_{k}_{j}.png",
+                        film_and_pressure_maps,
+                        (film.state, f"{film.name}, {coupled.condition.name}"),
+                        caption=f"film and pressure maps, {film.name}, {coupled.condition.name}",
+                    )
+                )
+        return blocks
+
     def findings(self, result: AlignmentResult) -> list[Finding]:
         out = []
+        for coupled in result.coupled or []:
+            if not coupled.converged:
+                out.append(Finding(f"film-supported alignment, {coupled.condition.name}: {coupled.message}."))
+            for film in coupled.films:
+                if film.contact:
+                    out.append(
+                        Finding(
+                            f"film-supported alignment, {coupled.condition.name}: the film of {film.name} is at its "
+                            f"floor (h_min {film.state.min_film_thickness * 1e6:.2f} µm): it cannot carry its share, "
+                            "so the bearing was solved as contact at the bore (edge loading)."
+                        )
+                    )
         failed = [c for c in result.checks if not c.passed]
         if failed:
             names = sorted({f"{c.rule.id} at {c.bearing} ({c.condition})" for c in failed})
@@ -239,8 +449,28 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 )
         return out
 
+    def _film_blocks(self, coupled: CoupledResult, narrow: bool = False) -> list[Block]:
+        name = coupled.condition.name
+        state = (
+            f"converged in {coupled.iterations} iterations ({coupled.film_solutions} film solutions)"
+            if coupled.converged
+            else f"NOT CONVERGED: {coupled.message}"
+        )
+        return [
+            Paragraph(f"Film supports, {name}: {state}.", "text" if coupled.converged else "warn"),
+            _narrowed(FILM_HEADERS, _film_rows(coupled), f"Film bearings: {name}", NARROW_FILM if narrow else None),
+            _narrowed(
+                COMPARISON_HEADERS,
+                _comparison_rows(coupled),
+                f"Point supports vs film supports: {name}",
+                NARROW_COMPARISON if narrow else None,
+            ),
+        ]
+
     def summary(self, result: AlignmentResult) -> list[Block]:
         blocks: list[Block] = [self._verdict(result), *self._reactions(result)]
+        for coupled in result.coupled or []:
+            blocks += self._film_blocks(coupled, narrow=True)
         failed = [c for c in result.checks if not c.passed]
         if failed:
             blocks.append(Table(RULE_HEADERS, rule_check_rows(failed), "Failed class-rule checks"))
@@ -280,6 +510,8 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 "alignment_influence.png", figures.influence_heatmap, (result.influence,), caption="influence matrix"
             ),
         ]
+        if result.coupled is not None:
+            blocks += self._film_report(result)
         study = result.study
         if result.plan is not None and study.optimise is not None:
             blocks.append(Heading(f"Optimised offsets ({study.optimise.objective})"))

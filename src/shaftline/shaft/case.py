@@ -12,6 +12,9 @@ Layout (x runs from the aft end of the shaft model forward; offsets + up)::
     [[alignment.conditions]]          load cases solved together
     [[alignment.rules]]               rules added to the bundled class rules
     [alignment.optimise], [alignment.sag_gap], [alignment.jack_up], [alignment.measured_reactions]
+    [alignment.film]                  film of the bearings marked ``film = true``
+    [alignment.bearings.film]         a bearing's own film (elastohydrodynamic alignment)
+    [alignment.coupling]              tolerances of the coupled solution
 """
 
 from __future__ import annotations
@@ -19,9 +22,10 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import Field, StrictBool, model_validator
+from pydantic import BeforeValidator, Field, StrictBool, model_validator
 
 from shaftline.cases.types import (
+    SHAFT_SPEED,
     Angle,
     Force,
     ForcePerLength,
@@ -39,15 +43,28 @@ from shaftline.cases.types import (
     PositiveMass,
     PositivePressure,
     PositiveStiffness,
+    Pressure,
+    Quantity,
     Section,
     default_of,
     field_error,
 )
 from shaftline.errors import located
+from shaftline.film.case import (
+    _CLEARANCE,
+    EDGE_PRESSURE,
+    BoreSegmentSection,
+    LubricantSection,
+    SolverSection,
+    _rotation_alias,
+)
+from shaftline.film.geometry import BearingGeometry, BoreAnchor
+from shaftline.film.problem import OperatingPoint
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
     from shaftline.shaft.study import AlignmentStudy
+from shaftline.shaft.coupled import CouplingOptions, FilmSupport
 from shaftline.shaft.model import (
     Bearing,
     Condition,
@@ -311,6 +328,59 @@ class SupportSection(Section):
         ),
     ] = default_of(Bearing, "slope")
     """The bearing's own slope (slope boring)."""
+    film: FilmSection | StrictBool = False
+    """true: supported by the film of [alignment.film]; a table: its own film; false: the support above."""
+
+
+class FilmSection(Section):
+    """The film of a hydrodynamic bearing: it supports the shaft instead of points, and the
+    shaft's elastic line across the bearing is its journal (elastohydrodynamic alignment)."""
+
+    speed: Annotated[float, Quantity("speed", gt=0), SHAFT_SPEED]
+    """Shaft speed."""
+    lubricant: LubricantSection
+    """The lubricant (a viscosity, a preset at a temperature or a two-point oil)."""
+    radial_clearance: Annotated[PositiveLength, Plausible(1e-5, 0.02, _CLEARANCE)] | None = None
+    """Radial clearance c (default: half the bearing's vertical_clearance)."""
+    diametral_clearance: Annotated[PositiveLength, Plausible(2e-5, 0.04, _CLEARANCE)] | None = None
+    """Diametral clearance 2c (or radial_clearance)."""
+    rotation: Annotated[Literal["clockwise", "anticlockwise"], BeforeValidator(_rotation_alias)] = "clockwise"
+    """Sense of rotation seen from aft."""
+    bore: list[BoreSegmentSection] = []
+    """Slope-bored segments of the bore, aft to forward, relative to the bearing's axis (none: straight)."""
+    bore_anchor: BoreAnchor = default_of(BearingGeometry, "bore_anchor")
+    """Where a slope-bored bore keeps the bearing's axis."""
+    aft_pressure: Annotated[Pressure, EDGE_PRESSURE] = default_of(OperatingPoint, "aft_pressure")
+    """Pressure at the aft edge above ambient."""
+    fore_pressure: Annotated[Pressure, EDGE_PRESSURE] = default_of(OperatingPoint, "fore_pressure")
+    """Pressure at the forward edge above ambient."""
+    cavitation_pressure: Annotated[Pressure, EDGE_PRESSURE] = default_of(OperatingPoint, "cavitation_pressure")
+    """Pressure at which the film ruptures, above ambient."""
+    solver: SolverSection = SolverSection()
+    """Film grid and models."""
+    elements: Annotated[int, Field(ge=2, le=50)] = 10
+    """Shaft elements across the bearing (at least; seed 004 uses 10)."""
+
+    @model_validator(mode="after")
+    def _clearance(self) -> FilmSection:
+        if self.radial_clearance is not None and self.diametral_clearance is not None:
+            raise field_error("radial_clearance", self.radial_clearance, "radial_clearance or diametral_clearance")
+        return self
+
+
+class CouplingSection(Section):
+    """Tolerances of the coupled solution of the shaft and its films."""
+
+    force_tolerance: Annotated[float, Quantity("dimensionless", gt=0, lt=0.1)] = default_of(
+        CouplingOptions, "force_tolerance"
+    )
+    """Film force mismatch left, as a share of each film's force."""
+    film_tolerance: Annotated[float, Quantity("dimensionless", gt=0, lt=0.1)] = default_of(
+        CouplingOptions, "film_tolerance"
+    )
+    """Journal-line mismatch between shaft and film left, as a share of the radial clearance."""
+    max_iterations: Annotated[int, Field(ge=1, le=1000)] = default_of(CouplingOptions, "max_iterations")
+    """Newton iterations allowed."""
 
 
 class PointLoadSection(Section):
@@ -517,6 +587,41 @@ class AlignmentSection(Section):
     """Jack-up test."""
     measured_reactions: MeasuredReactionsSection | None = None
     """Offsets from measured reactions."""
+    film: FilmSection | None = None
+    """The film of every bearing marked film = true."""
+    coupling: CouplingSection = CouplingSection()
+    """Tolerances of the coupled solution (with film bearings)."""
+
+    @model_validator(mode="after")
+    def _films(self) -> AlignmentSection:
+        for k, bearing in enumerate(self.bearings):
+            if bearing.film is False:
+                continue
+            if bearing.support == "spring":
+                raise field_error(
+                    f"bearings[{k}].support",
+                    bearing.support,
+                    "point or multi_point for a hydrodynamic bearing (the film is its support)",
+                )
+            film = self.film if bearing.film is True else bearing.film
+            if film is None:
+                raise field_error(
+                    f"bearings[{k}].film",
+                    True,
+                    "a film with speed and lubricant: an [alignment.film] table, or the bearing's own "
+                    "[alignment.bearings.film] table",
+                )
+            assert isinstance(film, FilmSection)
+            given = film.radial_clearance is not None or film.diametral_clearance is not None
+            if not given and bearing.vertical_clearance is None:
+                raise field_error(
+                    f"bearings[{k}].film.radial_clearance",
+                    "missing",
+                    "the film's clearance: radial_clearance or diametral_clearance, or the bearing's "
+                    "vertical_clearance",
+                    "m",
+                )
+        return self
 
     @model_validator(mode="after")
     def _names(self) -> AlignmentSection:
@@ -711,4 +816,64 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
             _condition(line, mr.condition),
             (mr.reference[0], mr.reference[1]) if mr.reference is not None else None,
         )
-    return AlignmentStudy(line, tuple(rules), optimise, sag_gap, jack, reactions)
+    films = tuple(
+        _film_support(section, k, line) for k, bearing in enumerate(section.bearings) if bearing.film is not False
+    )
+    c = section.coupling
+    coupling = CouplingOptions(c.force_tolerance, c.film_tolerance, c.max_iterations)
+    return AlignmentStudy(line, tuple(rules), optimise, sag_gap, jack, reactions, films, coupling)
+
+
+def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSupport:
+    """The film of ``bearings[k]`` as a domain object (errors placed under its table)."""
+    from shaftline.film.case import _bore, lubricant_properties
+    from shaftline.film.problem import BearingProblem, SolverOptions
+
+    bearing = section.bearings[k]
+    own = isinstance(bearing.film, FilmSection)
+    film = bearing.film if isinstance(bearing.film, FilmSection) else section.film
+    assert film is not None  # checked by the schema
+    where = f"bearings[{k}].film" if own else "film"
+    if film.radial_clearance is not None:
+        clearance = film.radial_clearance
+    elif film.diametral_clearance is not None:
+        clearance = 0.5 * film.diametral_clearance
+    else:
+        assert bearing.vertical_clearance is not None  # checked by the schema
+        clearance = 0.5 * bearing.vertical_clearance
+    with located(where):
+        _, viscosity, density = lubricant_properties(film.lubricant)
+    with located(where, {"viscosity": "lubricant.viscosity", "density": "lubricant.density"}):
+        operating = OperatingPoint(
+            speed=film.speed,
+            viscosity=viscosity,
+            density=density,
+            aft_pressure=film.aft_pressure,
+            fore_pressure=film.fore_pressure,
+            cavitation_pressure=film.cavitation_pressure,
+        )
+    s = film.solver
+    with located(f"{where}.solver"):
+        options = SolverOptions(
+            axial_nodes=s.axial_nodes,
+            circumferential_nodes=s.circumferential_nodes,
+            cavitation=s.cavitation,
+            film_start=s.film_start,
+            cavitated_shear=s.cavitated_shear,
+            min_film_floor=s.min_film_floor,
+            tolerance=s.tolerance,
+            max_iterations=s.max_iterations,
+            memory_limit=s.memory_limit,
+        )
+    with located(where, {"length": f"bearings[{k}].length", "diameter": "shaft.segments"}):
+        geometry = BearingGeometry(
+            length=bearing.length,
+            diameter=line.outer_diameter_at(bearing.x),
+            radial_clearance=clearance,
+            bore=_bore(film.bore, bearing.length, clearance),
+            bore_anchor=film.bore_anchor,
+            rotation=1 if film.rotation == "clockwise" else -1,
+        )
+    with located(where, {"operating": "", "options": "solver"}):
+        problem = BearingProblem(geometry, operating, options)
+    return FilmSupport(bearing.name, problem, film.elements)

@@ -1,5 +1,6 @@
 """Figures of a shaft alignment: elastic line with bearings, moment and shear, reactions,
-influence matrix, jack-up curve.
+influence matrix, jack-up curve; with film bearings, the journal in its bore and the
+comparison of point and film supports.
 
 Each function draws into the axes it is given (``ax=``) and returns them; without axes it
 makes a pyplot figure of its own (see :mod:`shaftline.report.plotting`).
@@ -17,6 +18,7 @@ from shaftline.report.plotting import figure_function, plain
 
 if TYPE_CHECKING:
     from shaftline.shaft.alignment import ConditionResult, InfluenceMatrix
+    from shaftline.shaft.coupled import CoupledResult, FilmBearingResult
     from shaftline.shaft.jackup import JackUpCurve, JackUpFit
     from shaftline.shaft.model import ShaftLine
 
@@ -125,5 +127,49 @@ def jack_curve(
     ax.set_xlabel("lift at the jack [mm]")
     ax.set_ylabel("jack load [kN]")
     ax.set_title(f"Jack-up of {plain(curve.bearing)} (correction factor {curve.correction_factor:.3f})")
+    ax.legend(fontsize=8)
+    return ax
+
+
+@figure_function(layout=(2, 1), size=(9, 6), sharex=True)
+def journal_in_bore(film: FilmBearingResult, *, ax: Any) -> Any:
+    """The journal centre line inside its bore, vertical (top) and horizontal (bottom): the
+    bore's centre line (slope boring) with the clearance either side, and the journal centre,
+    in µm from the bearing's nominal axis; ``ax`` is two axes."""
+    # The film averaged round the bore is the radial clearance (cos and sin average out).
+    clearance = float(film.state.film.mean())
+    top, bottom = ax
+    z = film.z
+    for axes, centre, bore, label in (
+        (top, film.centre_y, film.bore_y, "vertical"),
+        (bottom, film.centre_z, film.bore_z, "horizontal (+ starboard)"),
+    ):
+        axes.fill_between(z, (bore - clearance) * 1e6, (bore + clearance) * 1e6, color="0.92", label="clearance")
+        axes.plot(z, bore * 1e6, color="0.5", ls="--", lw=1, label="bore centre line")
+        axes.plot(z, centre * 1e6, color="C0", lw=2, label="journal centre")
+        axes.set_ylabel(f"{label} [µm]")
+    top.axvline(0.5 * z[-1] + film.support_point, color="C3", ls=":", label="film resultant (support point)")
+    top.set_title(
+        f"{plain(film.name)}: journal in the bore; h_min {film.state.min_film_thickness * 1e6:.1f} µm, "
+        f"support point {film.support_point * 1e3:+.0f} mm from mid-length"
+    )
+    top.legend(fontsize=7, loc="best")
+    bottom.set_xlabel("z from the aft edge [m]")
+    return ax
+
+
+@figure_function(size=(11, 4))
+def point_vs_film(coupled: CoupledResult, *, ax: Any) -> Any:
+    """Vertical reactions with point supports (the bearings as declared) and with film supports."""
+    names = [plain(b.name) for b in coupled.condition.bearings]
+    positions = np.arange(len(names))
+    point = [b.reaction_y / 1e3 for b in coupled.point_supports.bearings]
+    film = [b.reaction_y / 1e3 for b in coupled.condition.bearings]
+    ax.bar(positions - 0.2, point, 0.4, label="point supports", color="0.6")
+    ax.bar(positions + 0.2, film, 0.4, label="film supports", color="C0")
+    ax.axhline(0, color="k", lw=0.8)
+    ax.set_xticks(positions, names, rotation=20, ha="right", fontsize=8)
+    ax.set_ylabel("reaction [kN]")
+    ax.set_title(f"Point supports vs film supports: {plain(coupled.condition.name)}")
     ax.legend(fontsize=8)
     return ax

@@ -14,10 +14,12 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from shaftline.shaft.coupled import CouplingOptions, FilmSupport
 from shaftline.shaft.model import Bearing, Condition, ShaftLine
 
 if TYPE_CHECKING:
     from shaftline.shaft.alignment import AlignmentModel, ConditionResult, InfluenceMatrix
+    from shaftline.shaft.coupled import CoupledResult
     from shaftline.shaft.jackup import JackUpCurve, JackUpFit
     from shaftline.shaft.offsets import OffsetPlan
     from shaftline.shaft.rules import Rule, RuleCheck
@@ -67,7 +69,12 @@ class MeasuredReactions:
 
 @dataclass(frozen=True, eq=False)
 class AlignmentStudy:
-    """An alignment problem in SI units and the procedures asked for."""
+    """An alignment problem in SI units and the procedures asked for.
+
+    ``films`` are the hydrodynamic bearings, supported by their film in every condition
+    (:mod:`shaftline.shaft.coupled`); the procedures (offsets, sag and gap, jack-up) use the
+    line's declared supports.
+    """
 
     line: ShaftLine
     rules: tuple[Rule, ...]
@@ -75,6 +82,8 @@ class AlignmentStudy:
     sag_gap: SagGapRequest | None = None
     jack_up: JackUpRequest | None = None
     measured_reactions: MeasuredReactions | None = None
+    films: tuple[FilmSupport, ...] = ()
+    coupling: CouplingOptions = CouplingOptions()
 
 
 @dataclass(frozen=True, eq=False)
@@ -86,7 +95,8 @@ class AlignmentResult:
     study : AlignmentStudy
     model : AlignmentModel
     conditions : list of ConditionResult
-        One per condition, in the order of the study.
+        One per condition, in the order of the study (with film bearings: the coupled
+        solution, whose film bearings report their film force).
     influence : InfluenceMatrix
     checks : list of RuleCheck
     plan, plan_checks :
@@ -96,6 +106,9 @@ class AlignmentResult:
         Modelled jack-up curve and the fit of the measured one (when asked).
     reverse : (dict, float) or None
         Offsets from measured reactions (m per bearing) and the RMS reaction misfit (N).
+    coupled : list of CoupledResult or None
+        With film bearings, the coupled solution of each condition (films, point-support
+        comparison, convergence).
     """
 
     study: AlignmentStudy
@@ -109,6 +122,7 @@ class AlignmentResult:
     jack: JackUpCurve | None = None
     jack_fit: JackUpFit | None = None
     reverse: tuple[dict[str, float], float] | None = None
+    coupled: list[CoupledResult] | None = None
 
     def slope_boring_angle(self) -> dict[str, float]:
         """Per condition, the bore slope that would make the aft stern-tube bearing parallel
@@ -130,6 +144,17 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
     step("alignment conditions")
     model = AlignmentModel(study.line)
     results = model.solve()
+    coupled = None
+    if study.films:
+        from shaftline.shaft.coupled import CoupledAlignment
+
+        with located("", {"films": "bearings"}):
+            solver = CoupledAlignment(study.line, study.films, study.coupling)
+        coupled = []
+        for condition in study.line.all_conditions():
+            step(f"film-supported alignment, {condition.name}")
+            coupled.append(solver.solve(condition))
+        results = [c.condition for c in coupled]
     influence = model.influence_matrix()
     rules = list(study.rules)
     checks = check_rules(model, results, rules)
@@ -157,4 +182,6 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
         mr = study.measured_reactions
         with located("measured_reactions"):
             reverse = offsets_from_reactions(model, mr.values, mr.condition, mr.reference)
-    return AlignmentResult(study, model, results, influence, checks, plan, plan_checks, sag, jack, fit, reverse)
+    return AlignmentResult(
+        study, model, results, influence, checks, plan, plan_checks, sag, jack, fit, reverse, coupled
+    )
