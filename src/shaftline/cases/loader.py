@@ -54,15 +54,16 @@ def _find_nan(data: Any, where: str = "") -> None:
         raise InputError(where, data, "", "a finite number")
 
 
-#: Parts of pydantic's error locations that name the member of a union (``float | str``),
-#: not a field; the schema's unions have no other members.
+#: Parts of pydantic's error locations that name the member of a union (``float | str``,
+#: ``FilmSection | bool``), not a field; the schema's tables are all named ``...Section``.
 _UNION_TAGS = {"float", "int", "str", "bool"}
+_TABLE_TAG = re.compile(r"[A-Z]\w*Section")
 
 
 def _path(location: Iterable[Any]) -> str:
     name = ""
     for part in location:
-        if isinstance(part, str) and part in _UNION_TAGS:
+        if isinstance(part, str) and (part in _UNION_TAGS or _TABLE_TAG.fullmatch(part)):
             continue
         if isinstance(part, int):
             name += f"[{part}]"

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -66,13 +67,13 @@ FILM_UNITS = {
     "force_y": "N",
     "force_z": "N",
     "min_film_thickness": "m",
-    "min_film_theta": "rad",
+    "min_film_theta_deg": "deg",
     "min_film_z": "m",
     "max_pressure": "Pa",
-    "max_pressure_theta": "rad",
+    "max_pressure_theta_deg": "deg",
     "max_pressure_z": "m",
     "support_point": "m",
-    "attitude_angle": "rad",
+    "attitude_angle_deg": "deg",
     "power_loss": "W",
     "side_leakage": "m^3/s",
     "centre_y": "m",
@@ -98,14 +99,14 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                 "force_y": f.force_y,
                 "force_z": f.force_z,
                 "min_film_thickness": f.state.min_film_thickness,
-                "min_film_theta": f.state.min_film_theta,
+                "min_film_theta_deg": math.degrees(f.state.min_film_theta),
                 "min_film_z": f.state.min_film_z,
                 "max_pressure": f.state.max_pressure,
-                "max_pressure_theta": f.state.max_pressure_theta,
+                "max_pressure_theta_deg": math.degrees(f.state.max_pressure_theta),
                 "max_pressure_z": f.state.max_pressure_z,
                 "support_point": f.support_point,
                 "eccentricity_ratio": f.state.eccentricity_ratio,
-                "attitude_angle": f.state.attitude_angle,
+                "attitude_angle_deg": math.degrees(f.state.attitude_angle),
                 "relative_slope": f.relative_slope,
                 "power_loss": f.state.power_loss,
                 "side_leakage": f.state.side_leakage,
@@ -379,6 +380,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         ]
         for k, coupled in enumerate(result.coupled or []):
             blocks += self._film_blocks(coupled)
+            blocks.append(self._support_moves(result, coupled))
             blocks.append(
                 Figure(
                     f"alignment_point_vs_film_{k}.png",
@@ -448,6 +450,29 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                     )
                 )
         return out
+
+    def _support_moves(self, result: AlignmentResult, coupled: CoupledResult) -> Paragraph:
+        """Where each film bearing's support point was with the declared supports, and is now."""
+        model = result.model
+        parts = []
+        for film in coupled.films:
+            index = [b.name for b in model.line.bearings].index(film.name)
+            bearing = model.line.bearings[index]
+            pick = model.supports.bearing == index
+            reactions = coupled.point_supports.bearing(film.name).point_reactions
+            total = float(reactions.sum())
+            declared = (
+                f"{(float(reactions @ model.supports.x[pick]) / total - bearing.x) * 1e3:+.0f} mm"
+                if abs(total) > 0
+                else "lifted"
+            )
+            point = coupled.point_supports.bearing(film.name)
+            parts.append(
+                f"{film.name}: support point {declared} with the declared supports, {film.support_point * 1e3:+.0f} mm "
+                f"on the film (from mid-length, + forward); relative slope {point.relative_slope * 1e3:.3f} mrad on "
+                f"points, {film.relative_slope * 1e3:.3f} mrad in the film"
+            )
+        return Paragraph("; ".join(parts) + ".")
 
     def _film_blocks(self, coupled: CoupledResult, narrow: bool = False) -> list[Block]:
         name = coupled.condition.name

@@ -361,12 +361,6 @@ class FilmSection(Section):
     elements: Annotated[int, Field(ge=2, le=50)] = 10
     """Shaft elements across the bearing (at least; seed 004 uses 10)."""
 
-    @model_validator(mode="after")
-    def _clearance(self) -> FilmSection:
-        if self.radial_clearance is not None and self.diametral_clearance is not None:
-            raise field_error("radial_clearance", self.radial_clearance, "radial_clearance or diametral_clearance")
-        return self
-
 
 class CouplingSection(Section):
     """Tolerances of the coupled solution of the shaft and its films."""
@@ -612,6 +606,11 @@ class AlignmentSection(Section):
                     "[alignment.bearings.film] table",
                 )
             assert isinstance(film, FilmSection)
+            where = f"bearings[{k}].film" if bearing.film is not True else "film"
+            if film.radial_clearance is not None and film.diametral_clearance is not None:
+                raise field_error(
+                    f"{where}.radial_clearance", film.radial_clearance, "radial_clearance or diametral_clearance"
+                )
             given = film.radial_clearance is not None or film.diametral_clearance is not None
             if not given and bearing.vertical_clearance is None:
                 raise field_error(
@@ -821,7 +820,12 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
     )
     c = section.coupling
     coupling = CouplingOptions(c.force_tolerance, c.film_tolerance, c.max_iterations)
-    return AlignmentStudy(line, tuple(rules), optimise, sag_gap, jack, reactions, films, coupling)
+    fields = tuple(
+        f"bearings[{k}].film" if isinstance(b.film, FilmSection) else "film"
+        for k, b in enumerate(section.bearings)
+        if b.film is not False
+    )
+    return AlignmentStudy(line, tuple(rules), optimise, sag_gap, jack, reactions, films, coupling, fields)
 
 
 def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSupport:

@@ -8,12 +8,14 @@ from a :class:`~shaftline.shaft.model.ShaftLine` and :func:`solve_alignment` it.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
+from shaftline.errors import InputError
 from shaftline.shaft.coupled import CouplingOptions, FilmSupport
 from shaftline.shaft.model import Bearing, Condition, ShaftLine
 
@@ -73,7 +75,8 @@ class AlignmentStudy:
 
     ``films`` are the hydrodynamic bearings, supported by their film in every condition
     (:mod:`shaftline.shaft.coupled`); the procedures (offsets, sag and gap, jack-up) use the
-    line's declared supports.
+    line's declared supports. ``film_fields`` are the case-file tables the films came from
+    (for error messages; empty from a notebook).
     """
 
     line: ShaftLine
@@ -84,6 +87,7 @@ class AlignmentStudy:
     measured_reactions: MeasuredReactions | None = None
     films: tuple[FilmSupport, ...] = ()
     coupling: CouplingOptions = CouplingOptions()
+    film_fields: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, eq=False)
@@ -131,6 +135,16 @@ class AlignmentResult:
         return {r.name: r.bearing(aft).shaft_slope for r in self.conditions}
 
 
+def _film_error(error: InputError, fields: tuple[str, ...]) -> InputError:
+    """An error of :class:`~shaftline.shaft.coupled.CoupledAlignment` (``films[k]...``) under
+    the case-file table of that film."""
+    match = re.fullmatch(r"films\[(\d+)\]\.(.*)", error.field)
+    if not match or int(match.group(1)) >= len(fields):
+        return error
+    rest = match.group(2).replace("problem.options.", "solver.").replace("problem.geometry.", "")
+    return InputError(f"{fields[int(match.group(1))]}.{rest}", error.value, error.unit, error.allowed)
+
+
 def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | None = None) -> AlignmentResult:
     """All conditions, the influence matrix, rule checks and the procedures the study asks for."""
     from shaftline.errors import located
@@ -148,12 +162,19 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
     if study.films:
         from shaftline.shaft.coupled import CoupledAlignment
 
-        with located("", {"films": "bearings"}):
+        try:
             solver = CoupledAlignment(study.line, study.films, study.coupling)
+        except InputError as error:
+            raise _film_error(error, study.film_fields) from None
         coupled = []
         for condition in study.line.all_conditions():
-            step(f"film-supported alignment, {condition.name}")
-            coupled.append(solver.solve(condition))
+            name = condition.name
+            step(f"film-supported alignment, {name}")
+
+            def iteration(k: int, mismatch: float, name: str = name) -> None:
+                step(f"film-supported alignment, {name}: iteration {k}, mismatch {mismatch:.2g} of the clearance")
+
+            coupled.append(solver.solve(condition, iteration))
         results = [c.condition for c in coupled]
     influence = model.influence_matrix()
     rules = list(study.rules)
