@@ -1,0 +1,166 @@
+"""Film-supported alignment through the case file and the command line: tables, JSON, report,
+the contact fall-back's exit status and the bad inputs issue 11 lists.
+
+The line is a 14 m shaft of the NTUA stern-tube diameter with the seed 004 bearing (L = 1.05 m,
+D = 0.52 m, c = 0.45 mm, 90 rpm, 0.07 Pa s) as its aft film bearing, on a coarse film grid so
+that each solve takes a fraction of a second; the physics checks are in test_coupled.py.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import invoke
+
+LINE = """
+[case]
+name = "film line"
+
+[alignment.shaft]
+element_length = "0.25 m"
+
+[[alignment.shaft.segments]]
+length = "14 m"
+outer_diameter = "0.52 m"
+
+[[alignment.loads]]
+name = "propeller"
+x = "0 m"
+force_y = "-202598.2 N"
+moment_vertical = "MOMENT"
+
+[[alignment.bearings]]
+name = "aft stern tube"
+x = "0.932 m"
+length = "1.05 m"
+support = "multi_point"
+points = 6
+vertical_clearance = "0.9 mm"
+FILM
+
+[[alignment.bearings]]
+name = "fwd stern tube"
+x = "6 m"
+length = "0.6 m"
+
+[[alignment.bearings]]
+name = "intermediate"
+x = "13 m"
+length = "0.5 m"
+offset_y = "-0.5 mm"
+"""
+
+OWN_FILM = """
+  [alignment.bearings.film]
+  speed = "90 rpm"
+  lubricant = { viscosity = "0.07 Pa*s", density = "890 kg/m^3" }
+  solver = { axial_nodes = 41, circumferential_nodes = 36 }
+"""
+
+
+def write(tmp_path: Path, film: str = OWN_FILM, moment: str = "-409948 N*m", name: str = "line.toml") -> Path:
+    path = tmp_path / name
+    path.write_text(LINE.replace("FILM", film).replace("MOMENT", moment))
+    return path
+
+
+@pytest.fixture(scope="module")
+def solved(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("film_line")
+    out = folder / "out"
+    result = invoke("align", str(write(folder)), "--out", str(out))
+    assert result.exit_code == 0, result.stderr
+    return result, out
+
+
+def test_tables_json_and_report(solved):
+    result, out = solved
+    assert "Film bearings" in result.stdout and "Point supports vs film supports" in result.stdout
+    alignment = json.loads((out / "results.json").read_text())["alignment"]
+    bearings = {b["name"]: b for b in alignment["conditions"][0]["bearings"]}
+    assert bearings["aft stern tube"]["contact"] == "film"
+    (coupled,) = alignment["film_supports"]
+    assert coupled["converged"] and coupled["message"] == ""
+    (film,) = coupled["films"]
+    # the film bearing's reaction is its film force, and the film is open (not at its floor)
+    assert film["force_y"] == pytest.approx(bearings["aft stern tube"]["reaction_y"], rel=1e-12)
+    assert not film["contact"] and film["min_film_thickness"] > 1e-5
+    assert alignment["units"]["support_point"] == "m" and alignment["units"]["min_film_theta_deg"] == "deg"
+    assert len(film["centre_line"]["z"]) == 41 and len(film["line_load"]["y"]) == 41
+    assert [b["name"] for b in coupled["point_supports"]] == list(bearings)
+    html = (out / "report.html").read_text()
+    assert "Film supports (elastohydrodynamic alignment)" in html and "with the declared supports" in html
+    for name in ("point_vs_film_0", "journal_0_0", "film_maps_0_0"):
+        assert (out / "figures" / f"alignment_{name}.png").stat().st_size > 10_000
+
+
+def test_line_film_table_serves_film_true(tmp_path):
+    """``film = true`` takes [alignment.film]; the clearance defaults to half the bearing's vertical one."""
+    shared = """
+[alignment.film]
+speed = "90 rpm"
+lubricant = { viscosity = "0.07 Pa*s", density = "890 kg/m^3" }
+solver = { axial_nodes = 41, circumferential_nodes = 36 }
+"""
+    path = tmp_path / "line.toml"
+    path.write_text(LINE.replace("FILM", "film = true").replace("MOMENT", "-409948 N*m") + shared)
+    own = invoke("align", str(write(tmp_path, name="own.toml")), "--json", "-")
+    result = invoke("align", str(path), "--json", "-")
+    assert result.exit_code == 0 and own.exit_code == 0, result.stderr
+    films = [json.loads(r.stdout)["alignment"]["film_supports"][0]["films"][0] for r in (result, own)]
+    assert films[0]["min_film_thickness"] == pytest.approx(films[1]["min_film_thickness"], rel=1e-12)
+
+
+def test_film_at_its_floor_is_reported_with_exit_status_3(tmp_path):
+    """With the propeller moment the other way the shaft crosses the clearance of the aft bearing:
+    the film cannot carry it, the bearing falls back to contact at the bore, and the result is
+    flagged (exit 3) with the reason first."""
+    result = invoke("align", str(write(tmp_path, moment="409948 N*m")), "--json", "-")
+    assert result.exit_code == 3, result.stderr
+    document = json.loads(result.stdout)
+    (coupled,) = document["alignment"]["film_supports"]
+    assert coupled["films"][0]["contact"] and "floor" in coupled["message"]
+    bearing = document["alignment"]["conditions"][0]["bearings"][0]
+    assert bearing["contact"] in ("bottom", "partial", "top")
+    assert any("cannot carry its share" in f["text"] for f in document["findings"])
+
+
+@pytest.mark.parametrize(
+    ("film", "field"),
+    [
+        ("film = true", "alignment.bearings[0].film"),  # no [alignment.film] to take it from
+        (OWN_FILM.replace('speed = "90 rpm"', ""), "alignment.bearings[0].film.speed"),
+        (
+            OWN_FILM.replace('  lubricant = { viscosity = "0.07 Pa*s", density = "890 kg/m^3" }', ""),
+            "alignment.bearings[0].film.lubricant",
+        ),
+        (OWN_FILM.replace("axial_nodes = 41", "axial_nodes = 6"), "alignment.bearings[0].film.solver.axial_nodes"),
+        (
+            OWN_FILM + 'radial_clearance = "0.45 mm"\ndiametral_clearance = "0.9 mm"\n',
+            "alignment.bearings[0].film.radial_clearance",
+        ),
+    ],
+)
+def test_bad_film_input_is_one_line(tmp_path, film, field):
+    out = tmp_path / "out"
+    result = invoke("align", str(write(tmp_path, film=film)), "--out", str(out))
+    assert result.exit_code == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"error: {field}"), result.stderr
+    assert not out.exists()
+
+
+def test_film_needs_a_clearance_and_no_spring(tmp_path):
+    path = write(tmp_path, film=OWN_FILM)
+    text = path.read_text()
+    no_clearance = text.replace('vertical_clearance = "0.9 mm"\n', "", 1)
+    path.write_text(no_clearance)
+    result = invoke("align", str(path))
+    assert result.exit_code == 2 and "film.radial_clearance" in result.stderr
+    spring = text.replace('support = "multi_point"\npoints = 6', 'support = "spring"\nstiffness = "1e9 N/m"', 1)
+    path.write_text(spring)
+    result = invoke("align", str(path))
+    assert result.exit_code == 2 and "bearings[0].support" in result.stderr
