@@ -281,6 +281,8 @@ class FilmLoad:
     derivative : ndarray (2, nz, k)
         ``d row_force / d parameter`` for the requested centre-line directions, N per unit,
         with the cavitated set frozen.
+    velocity_derivative : ndarray (2, nz, q)
+        ``d row_force / d parameter`` for the requested centre-line velocities, N s per unit.
 
     Equality is identity: the fields hold arrays, which have no single truth value.
     """
@@ -288,6 +290,7 @@ class FilmLoad:
     state: BearingState
     row_force: np.ndarray = field(repr=False)
     derivative: np.ndarray = field(repr=False)
+    velocity_derivative: np.ndarray = field(repr=False, default_factory=lambda: np.zeros((2, 0, 0)))
 
 
 @dataclass(eq=False)
@@ -665,6 +668,7 @@ class JournalBearing:
         directions: np.ndarray | None = None,
         warm_start: bool = True,
         initial_cavitated: np.ndarray | None = None,
+        velocity_directions: np.ndarray | None = None,
     ) -> FilmLoad:
         """Film solution and its load along the bearing for a journal centre line of any shape.
 
@@ -685,6 +689,9 @@ class JournalBearing:
             Start the cavitation set from this bearing's previous solution (nearby shapes).
         initial_cavitated : ndarray of bool (nz, nt), optional
             Start set instead (it wins over ``warm_start``); the result does not depend on it.
+        velocity_directions : ndarray (q, 2, nz), optional
+            Velocities of the centre line (m/s per unit of q parameters), for damping: the
+            journal at this line moving so.
 
         Returns
         -------
@@ -708,22 +715,35 @@ class JournalBearing:
             ) from None
         state = self._state(evaluation)
         row_force = self._row_forces(evaluation.grid, evaluation.relative_pressure, gauge=True)
-        if directions is None:
-            derivative = np.zeros((2, z.size, 0))
+        theta = evaluation.grid.theta
+        c = self.geometry.radial_clearance
+
+        def film_change(lines: np.ndarray) -> np.ndarray:
+            """dH (k, nz, nt) of centre-line changes (k, 2, nz), m per unit."""
+            steps = np.asarray(lines, dtype=float)
+            cos, sin = np.cos(theta)[None, None, :], np.sin(theta)[None, None, :]
+            return -(steps[:, 0, :, None] * cos + self.geometry.rotation * steps[:, 1, :, None] * sin) / c
+
+        requests: list[tuple[np.ndarray, np.ndarray | None]] = []
+        if directions is not None:
+            requests += [(d, None) for d in film_change(directions)]
+        moving = 0
+        if velocity_directions is not None:
+            # A velocity changes the squeeze term (2/omega) dH/dt, not the film (as linearise).
+            rate = 2.0 / self.operating.speed
+            zero = np.zeros(evaluation.film.shape)
+            changes = film_change(velocity_directions)
+            requests += [(zero, rate * d) for d in changes]
+            moving = len(changes)
+        if requests:
+            _, d_pressure = self._pressure_derivatives(evaluation, requests)
+            rows = np.stack([self._row_forces(evaluation.grid, dp, gauge=False) for dp in d_pressure], axis=-1)
         else:
-            steps = np.asarray(directions, dtype=float)
-            theta = evaluation.grid.theta
-            c = self.geometry.radial_clearance
-            d_film = (
-                -(
-                    steps[:, 0, :, None] * np.cos(theta)[None, None, :]
-                    + self.geometry.rotation * steps[:, 1, :, None] * np.sin(theta)[None, None, :]
-                )
-                / c
-            )
-            _, d_pressure = self._pressure_derivatives(evaluation, [(d, None) for d in d_film])
-            derivative = np.stack([self._row_forces(evaluation.grid, dp, gauge=False) for dp in d_pressure], axis=-1)
-        return FilmLoad(state=state, row_force=row_force, derivative=derivative)
+            rows = np.zeros((2, z.size, 0))
+        split = rows.shape[-1] - moving
+        return FilmLoad(
+            state=state, row_force=row_force, derivative=rows[..., :split], velocity_derivative=rows[..., split:]
+        )
 
     def _centre_line(self, centre_y: np.ndarray, centre_z: np.ndarray) -> tuple[JournalPosition, BearingGeometry]:
         """The mid-plane position and chord tilt of a centre line, and the geometry whose bent

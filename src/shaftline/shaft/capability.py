@@ -13,7 +13,7 @@ from shaftline.report.blocks import Block, Details, Figure, Heading, Paragraph, 
 
 if TYPE_CHECKING:
     from shaftline.shaft.case import AlignmentSection
-    from shaftline.shaft.coupled import CoupledResult
+    from shaftline.shaft.coupled import CoupledResult, FilmBearingResult
     from shaftline.shaft.rules import RuleCheck
     from shaftline.shaft.study import AlignmentResult, AlignmentStudy
 
@@ -79,6 +79,8 @@ FILM_UNITS = {
     "centre_y": "m",
     "centre_z": "m",
     "line_load": "N/m",
+    "stiffness": "rows F_y, F_z [N], M_y, M_z [N m]; columns y, z [m], tilt_y, tilt_z [rad]",
+    "damping": "rows F_y, F_z [N], M_y, M_z [N m]; columns vy, vz [m/s], tilt rates [rad/s]",
 }
 
 
@@ -118,6 +120,8 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                     "bore_z": f.bore_z.tolist(),
                 },
                 "line_load": {"y": f.line_load[0].tolist(), "z": f.line_load[1].tolist()},
+                "stiffness": f.stiffness.tolist(),
+                "damping": f.damping.tolist(),
             }
             for f in coupled.films
         ],
@@ -481,7 +485,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             if coupled.converged
             else f"NOT CONVERGED: {coupled.message}"
         )
-        return [
+        blocks: list[Block] = [
             Paragraph(f"Film supports, {name}: {state}.", "text" if coupled.converged else "warn"),
             _narrowed(FILM_HEADERS, _film_rows(coupled), f"Film bearings: {name}", NARROW_FILM if narrow else None),
             _narrowed(
@@ -491,6 +495,27 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 NARROW_COMPARISON if narrow else None,
             ),
         ]
+        if not narrow:
+            blocks += [self._coefficients(film, name) for film in coupled.films]
+        return blocks
+
+    def _coefficients(self, film: FilmBearingResult, condition: str) -> Table:
+        """The 4 x 4 film stiffness and damping, in units a rotor-dynamics model takes."""
+        labels = ["y", "z", "tilt_y", "tilt_z"]
+        scales = np.array([1e-6, 1e-6, 1e-6, 1e-6])  # MN/m, MN/rad, MN m/m, MN m/rad
+        rows = []
+        for i, row in enumerate(("F_y", "F_z", "M_y", "M_z")):
+            rows.append(
+                [row]
+                + [f"{film.stiffness[i, j] * scales[j]:.4g}" for j in range(4)]
+                + [f"{film.damping[i, j] * 1e-6:.4g}" for j in range(4)]
+            )
+        headers = ["", *(f"K {c}" for c in labels), *(f"C {c}" for c in labels)]
+        return Table(
+            headers,
+            rows,
+            f"Film stiffness K (MN/m, MN/rad; MN m/m, MN m/rad) and damping C (MN s/m ...), {film.name}, {condition}",
+        )
 
     def summary(self, result: AlignmentResult) -> list[Block]:
         blocks: list[Block] = [self._verdict(result), *self._reactions(result)]

@@ -45,6 +45,7 @@ __all__ = [
     "CoupledResult",
     "FilmBearingResult",
     "FilmSupport",
+    "film_coefficients",
     "hermite_shape",
 ]
 
@@ -132,6 +133,10 @@ class FilmBearingResult:
         True when the film could not carry its share above the film floor: the bearing was
         then solved as contact at the bore (multi-point, edge loading) and ``state`` is the
         film at the last journal line reached.
+    stiffness, damping : ndarray (4, 4)
+        Film stiffness ``-dF/dq`` and damping ``-dF/dv`` at the coupled journal line
+        (:func:`film_coefficients`): rows ``(F_y, F_z, M_y, M_z)``, columns
+        ``(y, z, tilt_y, tilt_z)``; N/m, N/rad, N m/m, N m/rad (and N s/m ... for damping).
     """
 
     name: str
@@ -147,6 +152,8 @@ class FilmBearingResult:
     support_point: float
     relative_slope: float
     contact: bool
+    stiffness: np.ndarray = field(repr=False, default_factory=lambda: np.full((4, 4), np.nan))
+    damping: np.ndarray = field(repr=False, default_factory=lambda: np.full((4, 4), np.nan))
 
 
 @dataclass(frozen=True, eq=False)
@@ -191,6 +198,35 @@ class CoupledResult:
             if result.name == name:
                 return result
         raise KeyError(name)
+
+
+def film_coefficients(
+    bearing: JournalBearing, centre_y: np.ndarray, centre_z: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Film stiffness and damping of a journal at a given centre line, with tilt.
+
+    The journal moves as a rigid body from the given (possibly bent) line: offsets ``y, z`` of
+    the mid-plane centre and tilts about it. Forces ``F_y, F_z`` and their moments about the
+    mid-plane ``M_y = sum((z - L/2) dF_y)``, ``M_z`` likewise (as ``BearingState.moment_y``),
+    with the cavitated set frozen (:meth:`JournalBearing.film_load`).
+
+    Returns
+    -------
+    stiffness, damping : ndarray (4, 4)
+        ``-dF/dq`` and ``-dF/dv``; rows ``(F_y, F_z, M_y, M_z)``, columns ``(y, z, tilt_y, tilt_z)``
+        (their rates for the damping).
+    """
+    z = bearing.axial_stations
+    arm = z - 0.5 * bearing.geometry.length
+    ones, zeros = np.ones_like(z), np.zeros_like(z)
+    motions = np.array([[ones, zeros], [zeros, ones], [arm, zeros], [zeros, arm]])
+    load = bearing.film_load(centre_y, centre_z, motions, velocity_directions=motions)
+    matrices = []
+    for rows in (load.derivative, load.velocity_derivative):
+        forces = rows.sum(axis=1)  # (2, 4)
+        moments = np.einsum("i,pik->pk", arm, rows)
+        matrices.append(-np.vstack([forces, moments]))
+    return matrices[0], matrices[1]
 
 
 def hermite_shape(nodes: np.ndarray, stations: np.ndarray) -> np.ndarray:
@@ -736,6 +772,7 @@ class CoupledAlignment:
             weights[[0, -1]] *= 0.5
             fy, fz = (float(v) for v in load.row_force.sum(axis=1))
             contact = bool(state.contact)
+            stiffness, damping = film_coefficients(film.bearing, cy, cz)
             films.append(
                 FilmBearingResult(
                     name=self.line.bearings[film.index].name,
@@ -751,6 +788,8 @@ class CoupledAlignment:
                     support_point=state.load_centre_offset,
                     relative_slope=float((cy[-1] - cy[0]) / geometry.length),
                     contact=contact,
+                    stiffness=stiffness,
+                    damping=damping,
                 )
             )
             old = bearings[film.index]
