@@ -14,6 +14,7 @@ a bearing carries only the problem; the solver state is rebuilt on first use.
 
 from __future__ import annotations
 
+import copy
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field, replace
@@ -408,6 +409,34 @@ class JournalBearing:
         bearing = cls.__new__(cls)
         bearing.__setstate__({"problem": problem})
         return bearing
+
+    def with_geometry(self, geometry: BearingGeometry) -> JournalBearing:
+        """This bearing with another bore or journal shape, sharing the solver it has built.
+
+        For a design search over bores: the grid, the fixed nodes and the Reynolds solver
+        with its kept factorisations depend on the length, diameter, clearance, sense of
+        rotation, operating point and options, not on the bore profile, the bent journal or a
+        film profile, so a bearing that differs only in those reuses them (the coarse bearing
+        of the grid continuation is built again: it carries the geometry).
+
+        Raises
+        ------
+        InputError
+            ``"geometry.length"`` (or ``diameter``, ``radial_clearance``, ``rotation``) when it
+            differs from this bearing's.
+        """
+        for name in ("length", "diameter", "radial_clearance", "rotation"):
+            if getattr(geometry, name) != getattr(self.geometry, name):
+                raise InputError(
+                    f"geometry.{name}", getattr(geometry, name), "", f"{getattr(self.geometry, name)}, as the bearing's"
+                )
+        other = JournalBearing.from_problem(replace(self._problem, geometry=geometry))
+        if self._cache is not None:
+            shared = copy.copy(self._cache)
+            shared.coarse_bearing = None
+            shared.last_cavitated = None
+            other._cache = shared
+        return other
 
     # -- the problem: read-only, since the solver state is built from it ------------------
     @property

@@ -1,0 +1,137 @@
+"""Slope-boring design: the bore of a design, one evaluation, the search (issue 12).
+
+The NTUA stern-tube bearing of seed 004 (L = 1.05 m, D = 0.52 m, c = 0.45 mm, 90 rpm,
+0.07 Pa s, W = 309.86 kN) at psi_x = 0.3 with a linear shaft, on a coarse 41 x 36 grid so that
+a search of a few generations takes seconds; the trends checked do not depend on the grid.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from shaftline.design import SlopeDesignProblem, SlopeParametrisation, evaluate_design
+from shaftline.design.problem import Constraint
+from shaftline.design.search import knee_point, non_dominated, search
+from shaftline.errors import InputError
+from shaftline.film import BearingProblem, OperatingPoint, SolverOptions
+from shaftline.film.geometry import BearingGeometry
+
+C, L, LOAD, PSI = 0.45e-3, 1.05, 309859.9, 0.3
+
+
+def ntua(axial: int = 41, circumferential: int = 36, **kwargs) -> SlopeDesignProblem:
+    film = BearingProblem(
+        BearingGeometry(L, 0.52, C),
+        OperatingPoint(speed=9.4248, viscosity=0.07),
+        SolverOptions(axial_nodes=axial, circumferential_nodes=circumferential),
+    )
+    return SlopeDesignProblem(film, -LOAD, tilt_y=PSI * 2 * C / L, **kwargs)
+
+
+def test_bore_of_a_design():
+    """Slopes as shares of 2c/L, knuckles as shares of L, in any order; fractions sum to 1."""
+    bores = SlopeParametrisation(3)
+    assert bores.names == ["slope_1", "slope_2", "slope_3", "knuckle_1", "knuckle_2"]
+    segments = bores.bore(np.array([0.3, 0.2, 0.1, 0.7, 0.4]), L, C)
+    assert [s.length_fraction for s in segments] == pytest.approx([0.4, 0.3, 0.3])
+    assert sum(s.length_fraction for s in segments) == 1.0
+    assert segments[0].slope == pytest.approx(0.3 * 2 * C / L)
+    # seed 004 Table 4-8 for a double slope; the knuckle bound widened (module docstring)
+    double = SlopeParametrisation()
+    assert double.lower.tolist() == [0.0, 0.0, 0.1] and double.upper.tolist() == [0.6, 0.3, 0.9]
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        ({"segments": 0}, "segments"),
+        ({"segments": 2, "slope_bounds": ((0.5, 0.1), (0.0, 0.3))}, "slope_bounds[0]"),
+        ({"segments": 2, "knuckle_bounds": ((0.0, 0.5),)}, "knuckle_bounds[0]"),
+        ({"segments": 2, "knuckle_bounds": ((0.2, 1.2),)}, "knuckle_bounds[0]"),
+        ({"segments": 3, "knuckle_bounds": ((0.2, 0.5),)}, "knuckle_bounds"),
+    ],
+)
+def test_bad_bounds(kwargs, field):
+    with pytest.raises(InputError) as error:
+        SlopeParametrisation(**kwargs)
+    assert error.value.field == field
+
+
+def test_single_slope_equal_to_the_misalignment_centres_the_support():
+    """Seed 004 Sect. 5.1.2: on the linear shaft, a single slope equal to psi_x makes the bore
+    parallel to the journal, which puts the film resultant at L/2 (to round-off: the problem is
+    then symmetric about the mid-plane) and raises h_min far above the unbored bearing's."""
+    problem = ntua(parametrisation=SlopeParametrisation(1))
+    single = evaluate_design(problem, np.array([PSI]))
+    none = evaluate_design(problem, np.array([0.0]))
+    assert single.ok and none.ok
+    assert abs(single.values["load_centre_offset"]) < 1e-9 * L
+    assert single.values["min_film_thickness"] > 1.5 * none.values["min_film_thickness"]
+
+
+def test_failed_design_is_infeasible_not_fatal():
+    """A bore that the tilted journal cuts is reported, not raised, and ranks as infeasible."""
+    problem = ntua(parametrisation=SlopeParametrisation(1, slope_bounds=((-3.0, 3.0),)))
+    result = evaluate_design(problem, np.array([-2.0]))
+    assert result.status.startswith("failed") and problem.violations(result)[0] > 0
+
+
+def test_front_and_knee_helpers():
+    points = np.array([[0.0, 1.0], [0.1, 0.3], [0.5, 0.1], [1.0, 0.0], [0.6, 0.6]])
+    assert sorted(non_dominated(points).tolist()) == [0, 1, 2, 3]
+    assert knee_point(points[[0, 1, 2, 3]]) == 1  # farthest below the line through the extremes
+    assert knee_point(points[:2]) is None
+
+
+@pytest.fixture(scope="module")
+def searched(tmp_path_factory):
+    store = tmp_path_factory.mktemp("search") / "store"
+    problem = ntua()
+    return problem, store, search(problem, population=8, generations=3, seed=3, backend="serial", store=store)
+
+
+def test_search_keeps_every_design_and_finds_a_front(searched):
+    """The seed's two objectives conflict (Sect. 5.1.4): the front has more than one design; every
+    evaluation is in the table and the store, the knee is on the front."""
+    _, store, result = searched
+    table = result.table()
+    assert len(table) == 24 and result.completed
+    assert table["pareto"].sum() == len(result.pareto) >= 2
+    assert result.knee in result.pareto
+    import pandas as pd
+
+    stored = pd.read_parquet(store / "evaluations.parquet")
+    assert stored["min_film_thickness"].tolist() == table["min_film_thickness"].tolist()
+    assert (store / "evaluations.csv").exists()
+
+
+def test_search_is_the_same_on_a_process_pool_and_resumes_from_its_store(searched):
+    """The same seed gives the same designs and values on the pool; a search started again on its
+    store takes the designs it has (bit-identical) and carries on."""
+    problem, store, first = searched
+    pool = search(problem, population=8, generations=3, seed=3, backend="process", workers=2)
+    assert [e.x.tolist() for e in pool.evaluations] == [e.x.tolist() for e in first.evaluations]
+    assert [e.values for e in pool.evaluations] == [e.values for e in first.evaluations]
+    longer = search(problem, population=8, generations=4, seed=3, backend="serial", store=store)
+    assert len(longer.evaluations) == 32
+    assert [e.values for e in longer.evaluations[:24]] == [e.values for e in first.evaluations]
+
+
+def test_store_of_another_search_is_refused(searched):
+    _, store, _ = searched
+    with pytest.raises(InputError) as error:
+        search(ntua(), population=8, generations=1, seed=4, backend="serial", store=store)
+    assert error.value.field == "store" and "seed" in error.value.allowed
+
+
+def test_constraint_and_problem_inputs():
+    with pytest.raises(InputError) as error:
+        Constraint("hmin", ">=", 30e-6)
+    assert error.value.field == "quantity"
+    with pytest.raises(InputError) as error:
+        ntua(objectives=("min_film_thickness", "min_film_thickness"))
+    assert error.value.field == "objectives[1]"
+    with pytest.raises(InputError) as error:
+        search(ntua(), algorithm="simplex")
+    assert error.value.field == "algorithm"
