@@ -23,6 +23,7 @@ import numpy as np
 
 from shaftline.errors import InputError, require_finite
 from shaftline.film.analytic import eccentricity_guess
+from shaftline.film.extremes import local_extreme
 from shaftline.film.geometry import (
     BearingGeometry,
     Grid,
@@ -105,9 +106,13 @@ class BearingState:
         Angle from the load line (opposite to the film force) to the line of
         centres, positive in the direction of rotation, rad.
     min_film_thickness : float
-        Smallest film h_min, m, and where: ``min_film_theta`` (rad), ``min_film_z`` (m).
+        Smallest film h_min, m, and where: ``min_film_theta`` (rad), ``min_film_z`` (m);
+        located between nodes by a local quadratic fit around the thinnest node
+        (:func:`shaftline.film.extremes.local_extreme`, docs/theory.md).
     max_pressure : float
-        Largest pressure p_max, Pa, and where: ``max_pressure_theta`` (rad), ``max_pressure_z`` (m).
+        Largest pressure p_max, Pa, and where: ``max_pressure_theta`` (rad), ``max_pressure_z``
+        (m); located likewise from the free (neither fixed nor cavitated) nodes around the
+        largest nodal pressure, never below it.
     mean_pressure : float
         Load capacity over projected area L*D, Pa.
     moment_y, moment_z : float
@@ -883,8 +888,11 @@ class JournalBearing:
         else:
             load_angle = float(np.arctan2(g.rotation * load[1], load[0]))
         attitude = float((angle - load_angle + np.pi) % (2 * np.pi) - np.pi) if e > 0 else 0.0
-        j_min, i_min = np.unravel_index(np.argmin(film), film.shape)
-        j_max, i_max = np.unravel_index(np.argmax(pressure), pressure.shape)
+        # Extremes between nodes (docs/theory.md): the film is smooth everywhere; the pressure
+        # only on free nodes (fixed-pressure and cavitated values are not samples of it).
+        thinnest = local_extreme(film)
+        free = ~(self._solver_state().reynolds.fixed | evaluation.solution.cavitated)
+        peak = local_extreme(pressure, usable=free, maximum=True)
         arm = z - 0.5 * g.length
         dfy = -pressure * weights * np.cos(theta)[None, :]
         dfz = -g.rotation * pressure * weights * np.sin(theta)[None, :]
@@ -923,7 +931,7 @@ class JournalBearing:
             if mean_pressure > 0
             else math.inf
         )
-        hmin = float(film[j_min, i_min])
+        hmin = thinnest.value
         return BearingState(
             position=evaluation.position,
             eccentricity_ratio=e / g.radial_clearance,
@@ -938,11 +946,11 @@ class JournalBearing:
             load_capacity=capacity,
             attitude_angle=attitude,
             min_film_thickness=hmin,
-            min_film_theta=float(theta[i_min] % (2 * np.pi)),
-            min_film_z=float(z[j_min]),
-            max_pressure=float(pressure[j_max, i_max]),
-            max_pressure_theta=float(theta[i_max] % (2 * np.pi)),
-            max_pressure_z=float(z[j_max]),
+            min_film_theta=float((theta[0] + thinnest.column * grid.d_theta) % (2 * np.pi)),
+            min_film_z=float(thinnest.row * grid.dz),
+            max_pressure=peak.value,
+            max_pressure_theta=float((theta[0] + peak.column * grid.d_theta) % (2 * np.pi)),
+            max_pressure_z=float(peak.row * grid.dz),
             mean_pressure=mean_pressure,
             moment_y=moment_y,
             moment_z=moment_z,
