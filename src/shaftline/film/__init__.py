@@ -12,7 +12,7 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from shaftline.film.bearing import BearingState, Equilibrium, FilmLinearisation, JournalBearing
+    from shaftline.film.bearing import BearingState, Equilibrium, FilmLinearisation, JournalBearing, TiltLinearisation
     from shaftline.film.dynamics import DynamicCoefficients, dynamic_coefficients
     from shaftline.film.geometry import (
         BearingGeometry,
@@ -54,6 +54,7 @@ _WHERE = {
     "Equilibrium": "bearing",
     "FilmLinearisation": "bearing",
     "JournalBearing": "bearing",
+    "TiltLinearisation": "bearing",
     "DynamicCoefficients": "dynamics",
     "dynamic_coefficients": "dynamics",
     "sweep": "sweeps",
@@ -78,6 +79,7 @@ __all__ = [
     "OperatingPoint",
     "SolverOptions",
     "SupplyGroove",
+    "TiltLinearisation",
     "dynamic_coefficients",
     "film_thickness",
     "sweep",
