@@ -115,7 +115,8 @@ def test_bearing_min_film_is_the_analytic_minimum():
 def test_bearing_peak_pressure_closer_to_the_fine_grid():
     """At a fixed journal position the fitted p_max on a 21 x 48 grid is closer to the fitted
     value on 81 x 192 than the node value is (the Reynolds solution itself differs between
-    the grids; the fit only removes the error of where the nodes sit)."""
+    the grids; the fit only removes the error of where the nodes sit). Seen: fit -0.39 %,
+    node -0.98 %; held to half the node's error."""
     position = JournalPosition.from_polar(0.8 * CLEARANCE, 3.0, tilt_y=0.2 * CLEARANCE / 0.1)
     coarse = make_bearing(1.0, axial_nodes=21, circumferential_nodes=48).solve_at(position, warm_start=False)
     fine = make_bearing(1.0, axial_nodes=81, circumferential_nodes=192).solve_at(position, warm_start=False)
