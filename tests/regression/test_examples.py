@@ -54,6 +54,11 @@ ADDED = (
     "cpp.study.revolutions_integrated",
     "cpp.study.periodic",
     "cpp.study.period",
+    # issue 11: the film's 4 x 4 stiffness and damping with the tilt terms, in every bearing case
+    "bearing.cases.stiffness_4x4",
+    "bearing.cases.damping_4x4",
+    "bearing.units.stiffness_4x4",
+    "bearing.units.damping_4x4",
 )
 RTOL = 1e-7
 RTOL_CARRIER = 1e-6
@@ -79,14 +84,16 @@ def new_layout(old: dict[str, Any]) -> dict[str, Any]:
 
 
 def without_added(document: dict[str, Any]) -> dict[str, Any]:
-    """``document`` without the entries of :data:`ADDED`."""
+    """``document`` without the entries of :data:`ADDED` (a list on the path: from each item)."""
     for dotted in ADDED:
         *parents, last = dotted.split(".")
-        node: Any = document
+        nodes: list[Any] = [document]
         for part in parents:
-            node = node.get(part, {}) if isinstance(node, dict) else {}
-        if isinstance(node, dict):
-            node.pop(last, None)
+            nodes = [node.get(part, {}) for node in nodes if isinstance(node, dict)]
+            nodes = [item for node in nodes for item in (node if isinstance(node, list) else [node])]
+        for node in nodes:
+            if isinstance(node, dict):
+                node.pop(last, None)
     return document
 
 

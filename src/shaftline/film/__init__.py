@@ -12,7 +12,14 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from shaftline.film.bearing import BearingState, Equilibrium, FilmLinearisation, FilmLoad, JournalBearing
+    from shaftline.film.bearing import (
+        BearingState,
+        Equilibrium,
+        FilmLinearisation,
+        FilmLoad,
+        JournalBearing,
+        TiltLinearisation,
+    )
     from shaftline.film.dynamics import DynamicCoefficients, dynamic_coefficients
     from shaftline.film.geometry import (
         BearingGeometry,
@@ -55,6 +62,7 @@ _WHERE = {
     "FilmLinearisation": "bearing",
     "FilmLoad": "bearing",
     "JournalBearing": "bearing",
+    "TiltLinearisation": "bearing",
     "DynamicCoefficients": "dynamics",
     "dynamic_coefficients": "dynamics",
     "sweep": "sweeps",
@@ -80,6 +88,7 @@ __all__ = [
     "OperatingPoint",
     "SolverOptions",
     "SupplyGroove",
+    "TiltLinearisation",
     "dynamic_coefficients",
     "film_thickness",
     "sweep",

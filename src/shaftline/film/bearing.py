@@ -24,6 +24,7 @@ import numpy as np
 
 from shaftline.errors import InputError, require_finite
 from shaftline.film.analytic import eccentricity_guess
+from shaftline.film.extremes import local_extreme
 from shaftline.film.geometry import (
     BearingGeometry,
     BentJournal,
@@ -66,6 +67,7 @@ __all__ = [
     "FilmLinearisation",
     "FilmLoad",
     "JournalBearing",
+    "TiltLinearisation",
 ]
 
 #: Grids with at least this many nodes start the equilibrium from the equilibrium on the grid
@@ -108,9 +110,13 @@ class BearingState:
         Angle from the load line (opposite to the film force) to the line of
         centres, positive in the direction of rotation, rad.
     min_film_thickness : float
-        Smallest film h_min, m, and where: ``min_film_theta`` (rad), ``min_film_z`` (m).
+        Smallest film h_min, m, and where: ``min_film_theta`` (rad), ``min_film_z`` (m);
+        located between nodes by a local quadratic fit around the thinnest node
+        (:func:`shaftline.film.extremes.local_extreme`, docs/theory.md).
     max_pressure : float
-        Largest pressure p_max, Pa, and where: ``max_pressure_theta`` (rad), ``max_pressure_z`` (m).
+        Largest pressure p_max, Pa, and where: ``max_pressure_theta`` (rad), ``max_pressure_z``
+        (m); located likewise from the free (neither fixed nor cavitated) nodes around the
+        largest nodal pressure, never below it.
     mean_pressure : float
         Load capacity over projected area L*D, Pa.
     moment_y, moment_z : float
@@ -292,6 +298,55 @@ class FilmLoad:
     row_force: np.ndarray = field(repr=False)
     derivative: np.ndarray = field(repr=False)
     velocity_derivative: np.ndarray = field(repr=False, default_factory=lambda: np.zeros((2, 0, 0)))
+
+
+@dataclass(frozen=True, eq=False)
+class TiltLinearisation:
+    """Film force and moment at one journal position and their first derivatives by journal
+    offset, tilt and their rates: the 4 x 4 stiffness and damping of a film that resists
+    rotation as well as translation (a long stern-tube bearing).
+
+    Same frozen cavitated set and the same exactness as :class:`FilmLinearisation`, whose
+    2 x 2 matrices are the top-left blocks of these. Axes are the shaft axes (y up, z
+    starboard). Rows are ``(F_y, F_z, M_y, M_z)``, the film force on the journal (N) and its
+    first moments about the mid-plane ``sum((z - L/2) dF)`` (N*m, as
+    ``BearingState.moment_y``, ``moment_z``). Columns are ``q = (ey, ez, tilt_y, tilt_z)``,
+    the journal centre offsets at the mid-plane (m) and the journal tilts (rad, dy/dx and
+    dz/dx), for :attr:`offset_derivative`, and their rates ``(vy, vz, tilt rate y, tilt
+    rate z)`` (m/s, rad/s) for :attr:`velocity_derivative`.
+
+    Attributes
+    ----------
+    position : JournalPosition
+        Where the film was linearised.
+    force : ndarray (2,)
+        ``(F_y, F_z)``, N.
+    moment : ndarray (2,)
+        ``(M_y, M_z)``, N*m.
+    offset_derivative : ndarray (4, 4)
+        ``[i, j] = d(F_y, F_z, M_y, M_z)_i / dq_j``: N/m and N/rad in the force rows
+        (offset, tilt columns), N*m/m and N*m/rad in the moment rows.
+    velocity_derivative : ndarray (4, 4)
+        The same for the rates: N*s/m and N*s/rad, N*m*s/m and N*m*s/rad.
+
+    Equality is identity: the fields hold arrays, which have no single truth value.
+    """
+
+    position: JournalPosition
+    force: np.ndarray = field(repr=False)
+    moment: np.ndarray = field(repr=False)
+    offset_derivative: np.ndarray
+    velocity_derivative: np.ndarray
+
+    @property
+    def stiffness(self) -> np.ndarray:
+        """``K = -offset_derivative`` (4 x 4): rows (F_y, F_z, M_y, M_z), columns (ey, ez, tilt_y, tilt_z)."""
+        return -self.offset_derivative
+
+    @property
+    def damping(self) -> np.ndarray:
+        """``C = -velocity_derivative`` (4 x 4), columns the rates of (ey, ez, tilt_y, tilt_z)."""
+        return -self.velocity_derivative
 
 
 @dataclass(eq=False)
@@ -520,7 +575,12 @@ class JournalBearing:
         warm: bool = True,
         start: np.ndarray | None = None,
         geometry: BearingGeometry | None = None,
+        tilt_rates: tuple[float, float] = (0.0, 0.0),
     ) -> _Evaluation:
+        """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
+        bent journal of :meth:`film_load`); ``tilt_rates`` (rad/s, dy/dx and dz/dx per second)
+        add the squeeze of a tilting journal, ``dh/dt = -(z - L/2)(w_y cos + s w_z sin)``
+        (the position carries only the centre's velocities)."""
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(geometry or self.geometry, grid, position)
@@ -529,8 +589,13 @@ class JournalBearing:
         c = self.geometry.radial_clearance
         film_nd = film / c
         rate = None
-        if position.vy or position.vz:
-            rate = (2.0 / self.operating.speed) * squeeze_velocity(self.geometry, grid, position) / c
+        if position.vy or position.vz or tilt_rates[0] or tilt_rates[1]:
+            tilting = replace(position, vy=tilt_rates[0], vz=tilt_rates[1])
+            arm = (grid.z - 0.5 * self.geometry.length)[:, None]
+            dh_dt = squeeze_velocity(self.geometry, grid, position) + arm * squeeze_velocity(
+                self.geometry, grid, tilting
+            )
+            rate = (2.0 / self.operating.speed) * dh_dt / c
         stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate)
         solver = cache.reynolds
         if start is None and warm:
@@ -565,6 +630,17 @@ class JournalBearing:
         fy = -np.sum(weighted * np.cos(theta)[None, :])
         fz = -self.geometry.rotation * np.sum(weighted * np.sin(theta)[None, :])
         return np.array([fy, fz])
+
+    def _integrate_moment(self, grid: Grid, relative: np.ndarray, gauge: bool = True) -> np.ndarray:
+        """First moments ``(M_y, M_z) = sum((z - L/2) dF)`` of the film force about the
+        mid-plane, N*m, from dimensionless pressures (as :meth:`_integrate_force`)."""
+        pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
+        arm = grid.z - 0.5 * self.geometry.length
+        weighted = pressure * self._solver_state().area_weights * arm[:, None]
+        theta = grid.theta
+        my = -np.sum(weighted * np.cos(theta)[None, :])
+        mz = -self.geometry.rotation * np.sum(weighted * np.sin(theta)[None, :])
+        return np.array([my, mz])
 
     def _force_derivatives(
         self, evaluation: _Evaluation, directions: list[tuple[np.ndarray, np.ndarray | None]]
@@ -683,6 +759,61 @@ class JournalBearing:
             force=evaluation.force,
             offset_derivative=np.column_stack([dfy, dfz]),
             velocity_derivative=np.column_stack([dfvy, dfvz]),
+        )
+
+    def linearise_with_tilt(
+        self, position: JournalPosition, initial_cavitated: np.ndarray | None = None
+    ) -> TiltLinearisation:
+        """Film force and moment at ``position`` and their derivatives by journal offset,
+        tilt and their rates: the 4 x 4 stiffness and damping (docs/theory.md §7.1).
+
+        Solved as :meth:`linearise` (from the coarse-grid guess or ``initial_cavitated``,
+        never from an earlier call); the eight derivatives reuse the factorisation of the
+        converged active set, one triangular solve each. A tilt changes the film by
+        ``dh = -(z - L/2)(d tilt_y cos(theta) + s d tilt_z sin(theta))``, a tilt rate gives
+        that as a squeeze ``dh/dt`` varying along the bearing. The top-left 2 x 2 blocks are
+        :meth:`linearise`'s.
+
+        Parameters
+        ----------
+        position : JournalPosition
+            Journal offsets (m), tilts (rad) and velocities (m/s); the tilt rates are zero.
+        initial_cavitated : ndarray of bool (nz, nt), optional
+            Cavitated set to start the film solution from.
+
+        Returns
+        -------
+        TiltLinearisation
+            Force (N), moment (N*m) and their derivatives with the cavitated set frozen.
+
+        Raises
+        ------
+        InputError
+            ``"position"`` when the journal at that position would cut into the bore (h <= 0).
+        """
+        evaluation = self._evaluate_inside(position, warm=False, start=self._start_set(initial_cavitated))
+        d_ey, d_ez = self._offset_directions(evaluation)
+        arm = (evaluation.grid.z - 0.5 * self.geometry.length)[:, None]
+        # dH per radian of tilt: the offset direction times the lever arm from the mid-plane.
+        shapes = [d_ey, d_ez, arm * d_ey, arm * d_ez]
+        rate = 2.0 / self.operating.speed
+        zero = np.zeros(evaluation.film.shape)
+        directions: list[tuple[np.ndarray, np.ndarray | None]] = [(d, None) for d in shapes]
+        directions += [(zero, rate * d) for d in shapes]
+        _, d_pressure = self._pressure_derivatives(evaluation, directions)
+        grid = evaluation.grid
+        columns = [
+            np.concatenate(
+                [self._integrate_force(grid, dp, gauge=False), self._integrate_moment(grid, dp, gauge=False)]
+            )
+            for dp in d_pressure
+        ]
+        return TiltLinearisation(
+            position=evaluation.position,
+            force=evaluation.force,
+            moment=self._integrate_moment(grid, evaluation.relative_pressure),
+            offset_derivative=np.column_stack(columns[:4]),
+            velocity_derivative=np.column_stack(columns[4:]),
         )
 
     @property
@@ -1064,8 +1195,11 @@ class JournalBearing:
         else:
             load_angle = float(np.arctan2(g.rotation * load[1], load[0]))
         attitude = float((angle - load_angle + np.pi) % (2 * np.pi) - np.pi) if e > 0 else 0.0
-        j_min, i_min = np.unravel_index(np.argmin(film), film.shape)
-        j_max, i_max = np.unravel_index(np.argmax(pressure), pressure.shape)
+        # Extremes between nodes (docs/theory.md): the film is smooth everywhere; the pressure
+        # only on free nodes (fixed-pressure and cavitated values are not samples of it).
+        thinnest = local_extreme(film)
+        free = ~(self._solver_state().reynolds.fixed | evaluation.solution.cavitated)
+        peak = local_extreme(pressure, usable=free, maximum=True)
         arm = z - 0.5 * g.length
         dfy = -pressure * weights * np.cos(theta)[None, :]
         dfz = -g.rotation * pressure * weights * np.sin(theta)[None, :]
@@ -1104,7 +1238,7 @@ class JournalBearing:
             if mean_pressure > 0
             else math.inf
         )
-        hmin = float(film[j_min, i_min])
+        hmin = thinnest.value
         return BearingState(
             position=evaluation.position,
             eccentricity_ratio=e / g.radial_clearance,
@@ -1119,11 +1253,11 @@ class JournalBearing:
             load_capacity=capacity,
             attitude_angle=attitude,
             min_film_thickness=hmin,
-            min_film_theta=float(theta[i_min] % (2 * np.pi)),
-            min_film_z=float(z[j_min]),
-            max_pressure=float(pressure[j_max, i_max]),
-            max_pressure_theta=float(theta[i_max] % (2 * np.pi)),
-            max_pressure_z=float(z[j_max]),
+            min_film_theta=float((theta[0] + thinnest.column * grid.d_theta) % (2 * np.pi)),
+            min_film_z=float(thinnest.row * grid.dz),
+            max_pressure=peak.value,
+            max_pressure_theta=float((theta[0] + peak.column * grid.d_theta) % (2 * np.pi)),
+            max_pressure_z=float(peak.row * grid.dz),
             mean_pressure=mean_pressure,
             moment_y=moment_y,
             moment_z=moment_z,

@@ -154,6 +154,7 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
             self._table(result),
         ]
         coefficient_rows = []
+        tilt_rows = []
         for run in result.cases:
             if run.coefficients is None:
                 continue
@@ -163,12 +164,29 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 + [fmt(v, 1e-9) for v in (k[0, 0], k[0, 1], k[1, 0], k[1, 1])]
                 + [fmt(v, 1e-9) for v in (c[0, 0], c[0, 1], c[1, 0], c[1, 1])]
             )
+            k4, c4 = run.coefficients.stiffness_4x4, run.coefficients.damping_4x4
+            if k4 is not None and c4 is not None:
+                # The moment-by-tilt block; the whole 4 x 4 is in the JSON.
+                tilt_rows.append(
+                    [run.case.name]
+                    + [fmt(v, 1e-9) for v in (k4[2, 2], k4[2, 3], k4[3, 2], k4[3, 3])]
+                    + [fmt(v, 1e-9) for v in (c4[2, 2], c4[2, 3], c4[3, 2], c4[3, 3])]
+                )
         if coefficient_rows:
             blocks.append(
                 Table(
                     ["case", "Kyy", "Kyz", "Kzy", "Kzz", "Cyy", "Cyz", "Czy", "Czz"],
                     coefficient_rows,
                     "Film stiffness [kN/µm] and damping [kN·s/µm]",
+                )
+            )
+        if tilt_rows:
+            blocks.append(
+                Table(
+                    ["case", "K My,ty", "K My,tz", "K Mz,ty", "K Mz,tz", "C My,ty", "C My,tz", "C Mz,ty", "C Mz,tz"],
+                    tilt_rows,
+                    "Film tilt stiffness [kN·m/µrad] and damping [kN·m·s/µrad]: moments about mid-length by "
+                    "journal tilt (the full 4 × 4 with the force and offset terms is in the JSON)",
                 )
             )
         if len(result.cases) > 1:

@@ -109,6 +109,9 @@ def equilibrium_summary(equilibrium: Equilibrium, coefficients: DynamicCoefficie
     # Present but null where the film does not carry the load (no linearisation there).
     out["stiffness"] = coefficients.stiffness.tolist() if coefficients is not None else None
     out["damping"] = coefficients.damping.tolist() if coefficients is not None else None
+    for key in ("stiffness_4x4", "damping_4x4"):
+        matrix = getattr(coefficients, key) if coefficients is not None else None
+        out[key] = matrix.tolist() if matrix is not None else None
     return {k: _clean(v) for k, v in out.items()}
 
 
@@ -121,6 +124,19 @@ EXTRA_FIELDS: list[tuple[str, str, str]] = [
     ("force_residual", "N", "magnitude of film force + load at the end"),
     ("stiffness", "N/m, [[Kyy, Kyz], [Kzy, Kzz]]", "film stiffness matrix in (y, z); null where the film fails"),
     ("damping", "N s/m, [[Cyy, Cyz], [Czy, Czz]]", "film damping matrix in (y, z); null where the film fails"),
+    (
+        "stiffness_4x4",
+        "rows (Fy, Fz) in N, (My, Mz) in N m; columns (ey, ez) per m, (tilt_y, tilt_z) per rad",
+        "-d(Fy, Fz, My, Mz)/d(ey, ez, tilt_y, tilt_z): film stiffness with the tilt (moment) terms, "
+        "M the first moments about mid-plane as moment_y, moment_z; `stiffness` is its top-left block; "
+        "null where the film fails",
+    ),
+    (
+        "damping_4x4",
+        "as stiffness_4x4, per m/s and per rad/s",
+        "-d(Fy, Fz, My, Mz)/d(vy, vz, tilt rates): film damping with the tilt terms; `damping` is "
+        "its top-left block; null where the film fails",
+    ),
 ]
 EXTRA_UNITS = {key: unit for key, unit, _ in EXTRA_FIELDS}
 
