@@ -40,7 +40,7 @@ from typing import Any, TypeVar
 
 from shaftline.errors import InputError
 
-__all__ = ["BACKENDS", "Backend", "available_workers", "backend_name", "check_scheduler", "map"]
+__all__ = ["BACKENDS", "Backend", "Pool", "available_workers", "backend_name", "check_scheduler", "map"]
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -122,6 +122,31 @@ def _stop(executor: ProcessPoolExecutor) -> None:
             process.join(timeout=5.0)
 
 
+def _new_executor(function: Callable[[Any], Any], count: int) -> ProcessPoolExecutor:
+    return ProcessPoolExecutor(max_workers=count, mp_context=_context(function), initializer=_ignore_sigint)
+
+
+def _gather_process(
+    executor: ProcessPoolExecutor,
+    function: Callable[[Any], Any],
+    batches: list[list[Any]],
+    on_batch: Callable[[int], None],
+) -> list[list[Any]]:
+    """Run the batches on a pool and collect them in order (the pool is the caller's to stop)."""
+    futures: dict[Future[list[Any]], int] = {
+        executor.submit(_run_batch, function, batch): index for index, batch in enumerate(batches)
+    }
+    results: list[list[Any]] = [[] for _ in batches]
+    pending = set(futures)
+    while pending:
+        finished, pending = wait(pending, return_when=FIRST_EXCEPTION)
+        # Deliver in a fixed order within one wake-up: the caller's progress then reads the same.
+        for future in sorted(finished, key=futures.__getitem__):
+            results[futures[future]] = future.result()  # re-raises the worker's exception
+            on_batch(futures[future])
+    return results
+
+
 def _process(
     function: Callable[[Any], Any],
     batches: list[list[Any]],
@@ -129,20 +154,9 @@ def _process(
     scheduler: str | None,
     on_batch: Callable[[int], None],
 ) -> list[list[Any]]:
-    count = min(workers or available_workers(), len(batches))
-    executor = ProcessPoolExecutor(max_workers=count, mp_context=_context(function), initializer=_ignore_sigint)
+    executor = _new_executor(function, min(workers or available_workers(), len(batches)))
     try:
-        futures: dict[Future[list[Any]], int] = {
-            executor.submit(_run_batch, function, batch): index for index, batch in enumerate(batches)
-        }
-        results: list[list[Any]] = [[] for _ in batches]
-        pending = set(futures)
-        while pending:
-            finished, pending = wait(pending, return_when=FIRST_EXCEPTION)
-            # Deliver in a fixed order within one wake-up: the caller's progress then reads the same.
-            for future in sorted(finished, key=futures.__getitem__):
-                results[futures[future]] = future.result()  # re-raises the worker's exception
-                on_batch(futures[future])
+        results = _gather_process(executor, function, batches, on_batch)
     except BaseException:
         _stop(executor)
         raise
@@ -157,34 +171,53 @@ def _dask(
     scheduler: str | None,
     on_batch: Callable[[int], None],
 ) -> list[list[Any]]:
+    client, cluster = _dask_client(min(workers or available_workers(), len(batches)), scheduler)
     try:
-        from dask.distributed import Client, LocalCluster, as_completed
+        return _gather_dask(client, function, batches, on_batch)
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+def _dask_client(workers: int, scheduler: str | None) -> tuple[Any, Any]:
+    """A client of the scheduler at ``scheduler`` (checked to have a worker), or of a
+    ``LocalCluster`` of ``workers`` processes started for it; and that cluster (or None)."""
+    try:
+        from dask.distributed import Client, LocalCluster
     except ImportError:
         raise InputError(
             "backend", "dask", "", "an installed dask.distributed (pip install 'shaftline[parallel]')"
         ) from None
-    cluster = None
-    if scheduler is None:
-        # One single-threaded worker process per core: the film solver is single-threaded
-        # and holds the GIL in Python, so threads would only queue behind each other.
-        cluster = LocalCluster(
-            n_workers=min(workers or available_workers(), len(batches)),
-            threads_per_worker=1,
-            processes=True,
-            # A free port: None does not turn the dashboard off (dask/distributed#8136), and
-            # the default 8787 warns when another cluster holds it.
-            dashboard_address=":0",
-        )
-    if cluster is not None:
-        client = Client(cluster, timeout=_CONNECT_TIMEOUT)
-    else:
-        assert scheduler is not None
+    if scheduler is not None:
         client = _connect(scheduler, "scheduler")
+        try:
+            # Jobs sent to a scheduler without workers would wait for ever, silently.
+            _wait_for_workers(client, scheduler, "scheduler", _WORKER_TIMEOUT)
+        except BaseException:
+            client.close()
+            raise
+        return client, None
+    # One single-threaded worker process per core: the film solver is single-threaded
+    # and holds the GIL in Python, so threads would only queue behind each other.
+    cluster = LocalCluster(
+        n_workers=workers,
+        threads_per_worker=1,
+        processes=True,
+        # A free port: None does not turn the dashboard off (dask/distributed#8136), and
+        # the default 8787 warns when another cluster holds it.
+        dashboard_address=":0",
+    )
+    return Client(cluster, timeout=_CONNECT_TIMEOUT), cluster
+
+
+def _gather_dask(
+    client: Any, function: Callable[[Any], Any], batches: list[list[Any]], on_batch: Callable[[int], None]
+) -> list[list[Any]]:
+    from dask.distributed import as_completed
+
     futures: list[Any] = []
     try:
-        if cluster is None:
-            # Jobs sent to a scheduler without workers would wait for ever, silently.
-            _wait_for_workers(client, str(scheduler), "scheduler", _WORKER_TIMEOUT)
         futures = [client.submit(_run_batch, function, batch, pure=False) for batch in batches]
         where = {future.key: index for index, future in enumerate(futures)}
         results: list[list[Any]] = [[] for _ in batches]
@@ -196,9 +229,6 @@ def _dask(
     finally:
         if futures:
             client.cancel(futures)
-        client.close()
-        if cluster is not None:
-            cluster.close()
 
 
 #: The backends by name (``backend=`` of :func:`map`).
@@ -267,6 +297,97 @@ def _wait_for_workers(client: Any, scheduler: str, field: str, timeout: float) -
         raise InputError(
             field, scheduler, "", f"a Dask scheduler with at least one worker (none joined within {timeout:g} s)"
         ) from None
+
+
+class Pool:
+    """Workers kept for several :meth:`map` calls: the generations of a search, the rounds of
+    a sweep. Each call of :func:`map` starts its workers and ends them; a pool starts them at
+    its first call and keeps them (and whatever they have built, e.g. a film solver's
+    factorisations) until :meth:`close` or the end of a ``with`` block.
+
+    Parameters
+    ----------
+    backend, workers, scheduler
+        As for :func:`map`; ``workers`` (default one per core) is the pool's size.
+
+    Examples
+    --------
+    >>> from shaftline import parallel
+    >>> with parallel.Pool(backend="serial") as pool:
+    ...     pool.map(abs, [-1, 2]), pool.map(abs, [-3])
+    ([1, 2], [3])
+    """
+
+    def __init__(self, backend: str | None = None, workers: int | None = None, scheduler: str | None = None) -> None:
+        self.backend = backend_name(backend, workers, scheduler)
+        if self.backend == "process" and workers == 1:
+            self.backend = "serial"
+        self.workers = workers
+        self.scheduler = scheduler
+        self._executor: ProcessPoolExecutor | None = None
+        self._client: Any = None
+        self._cluster: Any = None
+
+    def __enter__(self) -> Pool:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def map(
+        self,
+        function: Callable[[T], R],
+        items: Sequence[T],
+        *,
+        chunksize: int = 1,
+        progress: ProgressCallback | None = None,
+    ) -> list[R]:
+        """``[function(item) for item in items]`` on the pool's workers, in order (as :func:`map`).
+
+        An error or Ctrl-C ends the workers (the next call starts new ones) and is raised."""
+        if isinstance(chunksize, bool) or not isinstance(chunksize, int) or chunksize < 1:
+            raise InputError("chunksize", chunksize, "", "an integer >= 1")
+        items = list(items)
+        total = len(items)
+        if total == 0:
+            return []
+        batches = [items[start : start + chunksize] for start in range(0, total, chunksize)]
+        done = 0
+
+        def on_batch(index: int) -> None:
+            nonlocal done
+            done += len(batches[index])
+            if progress is not None:
+                progress(done, total)
+
+        if self.backend == "serial":
+            results = _serial(function, batches, None, None, on_batch)
+        elif self.backend == "process":
+            if self._executor is None:
+                self._executor = _new_executor(function, self.workers or available_workers())
+            try:
+                results = _gather_process(self._executor, function, batches, on_batch)
+            except BaseException:
+                _stop(self._executor)
+                self._executor = None
+                raise
+        else:
+            if self._client is None:
+                self._client, self._cluster = _dask_client(self.workers or available_workers(), self.scheduler)
+            results = _gather_dask(self._client, function, batches, on_batch)
+        return [result for batch in results for result in batch]
+
+    def close(self) -> None:
+        """End the workers (a local cluster too; a remote scheduler's workers stay)."""
+        if self._executor is not None:
+            self._executor.shutdown(wait=True)
+            self._executor = None
+        if self._client is not None:
+            self._client.close()
+            self._client = None
+        if self._cluster is not None:
+            self._cluster.close()
+            self._cluster = None
 
 
 def map(
