@@ -222,3 +222,18 @@ def test_ctrl_c_in_a_run_on_the_pool_exits_130_and_leaves_no_process(tmp_path):
     assert result.stderr.strip().splitlines()[-1] == "interrupted: nothing was written"
     assert not out.exists()
     _assert_all_gone(before)
+
+
+def test_pool_keeps_its_workers_between_calls():
+    """A Pool's second map runs on the processes of its first (what they built stays)."""
+    with parallel.Pool(workers=2) as pool:
+        first = set(pool.map(_pid, range(6)))
+        second = set(pool.map(_pid, range(6)))
+    assert second <= first and os.getpid() not in first
+    with parallel.Pool(backend="serial") as pool:
+        assert pool.map(abs, [-1, -2], chunksize=2) == [1, 2]
+
+
+def _pid(_: int) -> int:
+    time.sleep(0.05)
+    return os.getpid()

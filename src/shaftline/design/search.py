@@ -302,6 +302,8 @@ def search(
     evaluate = partial(evaluate_design, problem)
     completed = False
     generation = 0
+    # One pool for the whole search: the workers keep their bearings and factorisations.
+    pool = parallel.Pool(backend=backend, workers=workers, scheduler=scheduler)
     try:
         while engine.has_next():
             offspring = engine.ask()
@@ -309,9 +311,7 @@ def search(
             known = saved.known if saved is not None else {}
             todo = [x for x in designs if x.tobytes() not in known]
             chunk = max(1, math.ceil(len(todo) / (2 * parallel.available_workers()))) if todo else 1
-            fresh = iter(
-                parallel.map(evaluate, todo, backend=backend, workers=workers, scheduler=scheduler, chunksize=chunk)
-            )
+            fresh = iter(pool.map(evaluate, todo, chunksize=chunk))
             batch = [known[x.tobytes()] if x.tobytes() in known else next(fresh) for x in designs]
             objectives = np.array([problem.minimised(e) for e in batch])
             # pymoo needs finite objectives: a failed design gets the worst seen, and is infeasible.
@@ -339,6 +339,7 @@ def search(
                 )
         completed = True
     finally:
+        pool.close()
         result = _result(problem, evaluations, generation_of, algorithm, seed, completed)
         if saved is not None and evaluations:
             saved.write(result)
