@@ -12,7 +12,7 @@ against speed per bearing, is the "lift-off" curve class-society tools draw
 The limit (:class:`FilmLimit`) is the larger of a film parameter (3 by default) times the
 composite roughness ``sqrt(Rq_journal^2 + Rq_bore^2)`` (the film parameter of Hamrock &
 Dowson, "Ball Bearing Lubrication", 1981, and Hamrock, Schmid & Jacobson, "Fundamentals of
-Fluid Film Lubrication", 2nd ed. 2004, Sect. 1.4: full film above 3, partial lubrication
+Fluid Film Lubrication", 2nd ed. 2004, Ch. 1: full film above 3, partial lubrication
 below) and a class value (e.g. the Bureau Veritas 30 um that seed 004 quotes). Ra is
 turned into Rq with Rq = sqrt(pi/2) Ra = 1.25 Ra, the ratio of a Gaussian profile (ISO 4287).
 """

@@ -18,7 +18,7 @@ What the line reproduces (docs/validation.md, "The seed 004 shaft line"):
   Sommerfeld number), and the chord slope of the shaft across it, ``psi_x * 2c/L``;
 * not: the seed's fore-end rotation, +0.465 mrad at x = 1.9982 m. With the propeller's
   force and hogging moment and a reaction of 309.86 kN, statics fixes the bending moment
-  from the propeller to that station (about -600 kN m, hogging, throughout), so the
+  from the propeller to that station (-410 to -606 kN m, hogging throughout), so the
   rotation there is the chord slope less about 0.8 mrad: -0.55 mrad for psi_x = 0.3 with
   the support at mid-length. The seed's local model reaches +0.465 mrad only through its
   forward edge support pulling the shaft down (-746 kN at psi_x = 0): a line on real
