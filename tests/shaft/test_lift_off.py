@@ -78,8 +78,10 @@ def test_roughness_limit_gives_a_lower_speed(line_and_film, sweep):
 
 def test_messages_at_the_ends(line_and_film):
     line, film = line_and_film
-    above = minimum_speed(line, [film], 200e-6, points=2)
+    calls = []
+    above = minimum_speed(line, [film], 200e-6, points=2, progress=lambda *args: calls.append(args))
     assert math.isnan(above.speed) and "operating speed" in above.message
+    assert [c[0] for c in calls] == [1] and calls[0][1] == film.problem.operating.speed
     low = minimum_speed(line, [film], 1e-6, lowest=0.8, points=2)
     assert low.bracket[0] == 0.0 and "lowest speed" in low.message and low.governing == ""
 

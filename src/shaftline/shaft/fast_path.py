@@ -50,7 +50,8 @@ class FastPathResult:
     name : str
         The film bearing.
     state : BearingState
-        The film at its equilibrium (hmin, pmax and their places, support point, friction).
+        The film at its equilibrium (hmin, pmax and their places, support point, friction);
+        ``state.contact`` is True when the film cannot carry the reaction above its floor.
     reaction : float
         Point-support reaction the film carries, N (+ up, on the shaft).
     relative_slope : float
