@@ -1238,7 +1238,7 @@ class JournalBearing:
             if mean_pressure > 0
             else math.inf
         )
-        hmin = thinnest.value
+        hmin = float(thinnest.value)
         return BearingState(
             position=evaluation.position,
             eccentricity_ratio=e / g.radial_clearance,
@@ -1255,7 +1255,7 @@ class JournalBearing:
             min_film_thickness=hmin,
             min_film_theta=float((theta[0] + thinnest.column * grid.d_theta) % (2 * np.pi)),
             min_film_z=float(thinnest.row * grid.dz),
-            max_pressure=peak.value,
+            max_pressure=float(peak.value),
             max_pressure_theta=float((theta[0] + peak.column * grid.d_theta) % (2 * np.pi)),
             max_pressure_z=float(peak.row * grid.dz),
             mean_pressure=mean_pressure,

@@ -89,7 +89,7 @@ def local_extreme(values: np.ndarray, usable: np.ndarray | None = None, maximum:
                 d_z = -(h_theta * g_z - h_cross * g_theta) / determinant
                 if abs(d_theta) <= 1.0 and abs(d_z) <= 1.0:
                     value = min(f0 + 0.5 * (g_theta * d_theta + g_z * d_z), f0)
-                    return Extreme(sign * value, j + d_z, i + d_theta, "2d")
+                    return Extreme(float(sign * value), float(j + d_z), float(i + d_theta), "2d")
     # 1-D fits: through three nodes with the middle one smallest the vertex lies within half a
     # step of it and below it, so these neither extrapolate nor pass the node value.
     value, d_theta, d_z, fitted = f0, 0.0, 0.0, False
@@ -101,4 +101,4 @@ def local_extreme(values: np.ndarray, usable: np.ndarray | None = None, maximum:
         d_z = -g_z / h_z
         value -= 0.5 * g_z * g_z / h_z
         fitted = True
-    return Extreme(sign * min(value, f0), j + d_z, i + d_theta, "1d" if fitted else "node")
+    return Extreme(float(sign * min(value, f0)), float(j + d_z), float(i + d_theta), "1d" if fitted else "node")

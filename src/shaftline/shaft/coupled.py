@@ -128,7 +128,9 @@ class FilmBearingResult:
         (towards the bow); seed 004's "contact point" is ``L/2 + support_point`` from the
         aft edge.
     relative_slope : float
-        Chord slope of the journal across the bearing relative to the bore axis, rad.
+        Chord slope of the journal across the bearing relative to the chord of its machined
+        bore (the bearing's axis plus any slope boring), rad: zero when a single slope follows
+        the journal exactly.
     contact : bool
         True when the film could not carry its share above the film floor: the bearing was
         then solved as contact at the bore (multi-point, edge loading) and ``state`` is the
@@ -180,7 +182,14 @@ class CoupledResult:
     force_residual : float
         Final force mismatch, share of the film force.
     message : str
-        Empty when converged; otherwise what happened and what to try.
+        Empty when converged with every film open; otherwise what happened and what to try.
+    dofs : ndarray (2, m)
+        The shaft's deflections and rotations across the film bearings (vertical, horizontal):
+        the start of a nearby solve (``solve(..., initial=result)``); empty after a fall-back.
+
+    ``converged`` is about the solution found: after the fall-back to contact it is that of
+    the line with the grounded bearings in contact; :attr:`contact` says whether any film
+    reached its floor.
     """
 
     condition: ConditionResult
@@ -192,6 +201,12 @@ class CoupledResult:
     residual_history: list[float]
     force_residual: float
     message: str = ""
+    dofs: np.ndarray = field(repr=False, default_factory=lambda: np.zeros((2, 0)))
+
+    @property
+    def contact(self) -> bool:
+        """True when a film bearing could not carry its share (solved as contact at its bore)."""
+        return any(f.contact for f in self.films)
 
     def film(self, name: str) -> FilmBearingResult:
         for result in self.films:
@@ -558,7 +573,10 @@ class CoupledAlignment:
 
     # -- solution --------------------------------------------------------------------------
     def solve(
-        self, condition: Condition | None = None, progress: Callable[[int, float], None] | None = None
+        self,
+        condition: Condition | None = None,
+        progress: Callable[[int, float], None] | None = None,
+        initial: CoupledResult | None = None,
     ) -> CoupledResult:
         """Solve one condition (default: the line's first) with the film bearings coupled.
 
@@ -568,10 +586,17 @@ class CoupledAlignment:
         progress : callable, optional
             Called after each Newton iteration with its number and the film mismatch (share
             of the clearance).
+        initial : CoupledResult, optional
+            A solution of this model to start from (a nearby speed, load or condition);
+            otherwise each film starts from its own equilibrium under its point-support
+            reaction. The solution does not depend on the start, only the iterations do.
         """
         condition = condition or self.line.all_conditions()[0]
         points = self.point_model.solve_condition(condition)
-        s = self._start(condition, points)
+        if initial is not None and initial.dofs.shape == (2, int(self._offsets[0][-1])):
+            s = initial.dofs.copy()
+        else:
+            s = self._start(condition, points)
         if self._min_film_share(s, condition) <= 0.0:
             s = self._pulled_inside(s, condition)
         current = self._evaluate(s, condition)
@@ -773,6 +798,8 @@ class CoupledAlignment:
             fy, fz = (float(v) for v in load.row_force.sum(axis=1))
             contact = bool(state.contact)
             stiffness, damping = film_coefficients(film.bearing, cy, cz)
+            bore_chord = float(bore_y[-1] - bore_y[0]) / geometry.length
+            bore_relative = float((cy[-1] - cy[0]) / geometry.length) - bore_chord
             films.append(
                 FilmBearingResult(
                     name=self.line.bearings[film.index].name,
@@ -786,7 +813,7 @@ class CoupledAlignment:
                     force_z=fz,
                     line_load=load.row_force / weights[None, :],
                     support_point=state.load_centre_offset,
-                    relative_slope=float((cy[-1] - cy[0]) / geometry.length),
+                    relative_slope=bore_relative,
                     contact=contact,
                     stiffness=stiffness,
                     damping=damping,
@@ -801,7 +828,7 @@ class CoupledAlignment:
                 reaction_z=fz,
                 mean_pressure=abs(fy) / (bearing.length * diameter),
                 contact="film",
-                relative_slope=float(old.shaft_slope - bearing.slope),
+                relative_slope=float(old.shaft_slope - bearing.slope - bore_chord),
                 point_reactions=(film.shape.T @ load.row_force[0])[0::2],
                 point_contact=np.full(film.dofs.size // 2, "film", dtype=object),
             )
@@ -816,4 +843,5 @@ class CoupledAlignment:
             residual_history=history,
             force_residual=force_residual,
             message=message,
+            dofs=current.s.copy(),
         )

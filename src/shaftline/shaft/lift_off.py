@@ -28,7 +28,7 @@ import numpy as np
 
 from shaftline.errors import InputError, require_finite, require_positive
 from shaftline.report.plotting import figure_function, plain
-from shaftline.shaft.coupled import CoupledAlignment, CouplingOptions, FilmSupport
+from shaftline.shaft.coupled import CoupledAlignment, CoupledResult, CouplingOptions, FilmSupport
 from shaftline.shaft.model import Condition, ShaftLine
 
 __all__ = ["FilmLimit", "LiftOffResult", "lift_off_curve", "minimum_speed"]
@@ -221,10 +221,15 @@ def minimum_speed(
     top = films[0].problem.operating.speed
     names = [b.name for b in line.bearings if b.name in {f.bearing for f in films}]
     solved: dict[float, tuple[np.ndarray, np.ndarray, bool]] = {}
+    nearest: dict[float, CoupledResult] = {}
 
     def smallest(speed: float) -> float:
-        """Smallest film of all bearings at ``speed`` (minus infinity where one is in contact)."""
-        result = CoupledAlignment(line, _at_speed(films, speed), options).solve(condition)
+        """Smallest film of all bearings at ``speed`` (minus infinity where one is in contact),
+        started from the solved speed nearest to it."""
+        start = nearest[min(nearest, key=lambda s: abs(math.log(s / speed)))] if nearest else None
+        result = CoupledAlignment(line, _at_speed(films, speed), options).solve(condition, initial=start)
+        if not result.contact:
+            nearest[speed] = result
         hmin = np.array([result.film(n).state.min_film_thickness for n in names])
         contact = np.array([result.film(n).contact for n in names])
         solved[speed] = (hmin, contact, result.converged)
