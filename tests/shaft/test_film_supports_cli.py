@@ -164,3 +164,30 @@ def test_film_needs_a_clearance_and_no_spring(tmp_path):
     path.write_text(spring)
     result = invoke("align", str(path))
     assert result.exit_code == 2 and "bearings[0].support" in result.stderr
+
+
+def test_ntua_shaft_line_example(tmp_path):
+    """``shaftline run examples/ntua_shaft_line.toml``: the alignment with the film-supported stern
+    tube, the point-vs-film comparison and the minimum speed in one run and one report. The case
+    file is the line of ``shaftline.shaft.ntua.ntua_shaft_line(0.3)`` (offsets rounded to 1 µm in
+    the file, so the film agrees to 0.5 %, about 0.4 µm in h_min); the minimum speed is about
+    61.5 rpm (docs/validation.md)."""
+    from shaftline.shaft.coupled import CoupledAlignment
+    from shaftline.shaft.ntua import ntua_shaft_line
+
+    out = tmp_path / "out"
+    example = Path(__file__).resolve().parents[2] / "examples" / "ntua_shaft_line.toml"
+    result = invoke("run", str(example), "--out", str(out), "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    alignment = json.loads(result.stdout)["alignment"]
+    (film,) = alignment["film_supports"][0]["films"]
+    line, support = ntua_shaft_line(0.3)
+    reference = CoupledAlignment(line, [support]).solve().films[0]
+    assert film["min_film_thickness"] == pytest.approx(reference.state.min_film_thickness, rel=5e-3)
+    assert film["support_point"] == pytest.approx(reference.support_point, rel=5e-3)
+    speed = alignment["minimum_speed"]
+    assert 55.0 < speed["speed_rpm"] < 70.0 and speed["governing"] == "aft stern tube"
+    assert speed["limit"] == pytest.approx(30e-6)
+    html = (out / "report.html").read_text()
+    assert "Minimum speed for hydrodynamic operation" in html and "Point supports vs film supports" in html
+    assert (out / "figures" / "alignment_lift_off.png").stat().st_size > 10_000

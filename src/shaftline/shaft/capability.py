@@ -297,6 +297,22 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         if result.coupled is not None:
             out["units"].update(FILM_UNITS)
             out["film_supports"] = [_coupled_json(c) for c in result.coupled]
+        if result.lift_off is not None:
+            lift = result.lift_off
+            out["minimum_speed"] = {
+                "speed": lift.speed,
+                "speed_rpm": lift.speed * 30.0 / math.pi,
+                "bracket": list(lift.bracket),
+                "limit": lift.limit,
+                "governing": lift.governing,
+                "message": lift.message,
+                "curve": {
+                    "speeds": lift.speeds.tolist(),
+                    "bearings": lift.names,
+                    "min_film": lift.min_film.tolist(),
+                    "contact": lift.contact.tolist(),
+                },
+            }
         if result.plan is not None:
             out["optimised_offsets"] = {
                 "offsets": result.plan.offsets,
@@ -412,8 +428,30 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 )
         return blocks
 
+    def _lift_off_text(self, result: AlignmentResult) -> Paragraph:
+        lift = result.lift_off
+        assert lift is not None
+        limit = f"{lift.limit * 1e6:.2f} µm"
+        if lift.message:
+            return Paragraph(f"Minimum speed (film limit {limit}): {lift.message}.", "warn")
+        return Paragraph(
+            f"Minimum speed for a film of at least {limit} in every film bearing: {lift.speed * 30 / math.pi:.1f} rpm "
+            f"(between {lift.bracket[0] * 30 / math.pi:.1f} and {lift.bracket[1] * 30 / math.pi:.1f} rpm; governed by "
+            f"{lift.governing}; {lift.solutions} coupled solutions). The limit is the larger of the film parameter "
+            "times the composite roughness and the class value."
+        )
+
     def findings(self, result: AlignmentResult) -> list[Finding]:
         out = []
+        lift = result.lift_off
+        if lift is not None and np.isnan(lift.speed):
+            out.append(
+                Finding(
+                    f"a film bearing is below the film limit of {lift.limit * 1e6:.2f} µm at the operating speed: "
+                    f"{lift.message}.",
+                    criterion=True,
+                )
+            )
         for coupled in result.coupled or []:
             if not coupled.converged:
                 out.append(Finding(f"film-supported alignment, {coupled.condition.name}: {coupled.message}."))
@@ -521,6 +559,8 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         blocks: list[Block] = [self._verdict(result), *self._reactions(result)]
         for coupled in result.coupled or []:
             blocks += self._film_blocks(coupled, narrow=True)
+        if result.lift_off is not None:
+            blocks.append(self._lift_off_text(result))
         failed = [c for c in result.checks if not c.passed]
         if failed:
             blocks.append(Table(RULE_HEADERS, rule_check_rows(failed), "Failed class-rule checks"))
@@ -562,6 +602,14 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         ]
         if result.coupled is not None:
             blocks += self._film_report(result)
+        if result.lift_off is not None:
+            from shaftline.shaft.lift_off import lift_off_curve
+
+            blocks += [
+                Heading("Minimum speed for hydrodynamic operation"),
+                self._lift_off_text(result),
+                Figure("alignment_lift_off.png", lift_off_curve, (result.lift_off,), caption="lift-off curve"),
+            ]
         study = result.study
         if result.plan is not None and study.optimise is not None:
             blocks.append(Heading(f"Optimised offsets ({study.optimise.objective})"))

@@ -65,6 +65,7 @@ from shaftline.registry import BuildContext
 if TYPE_CHECKING:
     from shaftline.shaft.study import AlignmentStudy
 from shaftline.shaft.coupled import CouplingOptions, FilmSupport
+from shaftline.shaft.lift_off import FilmLimit
 from shaftline.shaft.model import (
     Bearing,
     Condition,
@@ -139,6 +140,14 @@ LINE_MOMENT = Plausible(
     1e8,
     f"eccentric-thrust moments of the largest propellers are a few MN m ({_EXAMPLE}: 0.35 MN m); 100 MN m is "
     "ten times beyond (engineering judgement)",
+)
+_FILM_LIMIT = (
+    "class values of the smallest film are some tens of µm (seed 004 quotes Bureau Veritas' 30 µm); 0.5 mm is "
+    "beyond any stern-tube clearance, a limit in µm written as m is far above (engineering judgement)"
+)
+_ROUGHNESS = (
+    "ground journals and bored liners are Ra 0.2-3.2 µm (seed 001: 0.8 µm sleeve, 1.6 µm liner); 20 µm is a "
+    "rough casting, µm written as m is far above (engineering judgement)"
 )
 #: Density of shaft steel, kg/m^3: the scale of the propeller-mass check (not the model's density).
 STEEL = 7850.0
@@ -360,6 +369,34 @@ class FilmSection(Section):
     """Film grid and models."""
     elements: Annotated[int, Field(ge=2, le=50)] = 10
     """Shaft elements across the bearing (at least; seed 004 uses 10)."""
+
+
+class MinimumSpeedSection(Section):
+    """The lowest speed at which every film bearing keeps a film above a limit: the lift-off
+    curve h_min against speed (needs film bearings)."""
+
+    class_value: Annotated[NonNegativeLength, Plausible(0.0, 5e-4, _FILM_LIMIT)] = default_of(FilmLimit, "class_value")
+    """Smallest film a class rule or the designer asks for (seed 004 quotes Bureau Veritas' 30 µm; 0: none)."""
+    journal_roughness: Annotated[NonNegativeLength, Plausible(0.0, 2e-5, _ROUGHNESS)] = default_of(
+        FilmLimit, "journal_roughness"
+    )
+    """Roughness of the journal (sleeve)."""
+    bore_roughness: Annotated[NonNegativeLength, Plausible(0.0, 2e-5, _ROUGHNESS)] = default_of(
+        FilmLimit, "bore_roughness"
+    )
+    """Roughness of the bore (liner)."""
+    roughness_parameter: Literal["Rq", "Ra"] = default_of(FilmLimit, "roughness_parameter")
+    """Rq (root mean square) or Ra (arithmetic mean; Rq = 1.25 Ra)."""
+    film_parameter: Annotated[float, Quantity("dimensionless", gt=0, le=20)] = default_of(FilmLimit, "film_parameter")
+    """The limit is at least this many composite roughnesses (3: full film)."""
+    lowest: Annotated[float, Quantity("dimensionless", gt=0, lt=1)] = 0.05
+    """Lowest speed tried, share of the operating speed."""
+    points: Annotated[int, Field(ge=2, le=200)] = 8
+    """Speeds of the sweep before the bisection."""
+    tolerance: Annotated[float, Quantity("dimensionless", gt=1e-6, lt=0.5)] = 0.01
+    """Relative width of the final speed bracket."""
+    condition: str | None = None
+    """Condition (default: the first)."""
 
 
 class CouplingSection(Section):
@@ -585,9 +622,23 @@ class AlignmentSection(Section):
     """The film of every bearing marked film = true."""
     coupling: CouplingSection = CouplingSection()
     """Tolerances of the coupled solution (with film bearings)."""
+    minimum_speed: MinimumSpeedSection | None = None
+    """Minimum speed for hydrodynamic operation of the film bearings (lift-off curve)."""
 
     @model_validator(mode="after")
     def _films(self) -> AlignmentSection:
+        if self.minimum_speed is not None and all(b.film is False for b in self.bearings):
+            raise field_error(
+                "minimum_speed", "given", "a line with a film bearing (film = true or a bearings.film table)"
+            )
+        if self.minimum_speed is not None and self.minimum_speed.condition is not None:
+            names = [c.name for c in self.conditions] or ["base"]
+            if self.minimum_speed.condition not in names:
+                raise field_error(
+                    "minimum_speed.condition",
+                    self.minimum_speed.condition,
+                    "the name of a condition: " + ", ".join(names),
+                )
         for k, bearing in enumerate(self.bearings):
             if bearing.film is False:
                 continue
@@ -776,6 +827,7 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
         AlignmentStudy,
         JackUpRequest,
         MeasuredReactions,
+        MinimumSpeedRequest,
         OffsetOptimisation,
         SagGapRequest,
     )
@@ -825,7 +877,19 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
         for k, b in enumerate(section.bearings)
         if b.film is not False
     )
-    return AlignmentStudy(line, tuple(rules), optimise, sag_gap, jack, reactions, films, coupling, fields)
+    lift_off = None
+    if section.minimum_speed is not None:
+        ms = section.minimum_speed
+        with located("minimum_speed"):
+            limit = FilmLimit(
+                journal_roughness=ms.journal_roughness,
+                bore_roughness=ms.bore_roughness,
+                roughness_parameter=ms.roughness_parameter,
+                film_parameter=ms.film_parameter,
+                class_value=ms.class_value,
+            )
+        lift_off = MinimumSpeedRequest(limit, _condition(line, ms.condition), ms.lowest, ms.points, ms.tolerance)
+    return AlignmentStudy(line, tuple(rules), optimise, sag_gap, jack, reactions, films, coupling, fields, lift_off)
 
 
 def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSupport:

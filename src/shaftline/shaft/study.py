@@ -8,6 +8,7 @@ from a :class:`~shaftline.shaft.model.ShaftLine` and :func:`solve_alignment` it.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -17,12 +18,14 @@ import numpy as np
 
 from shaftline.errors import InputError
 from shaftline.shaft.coupled import CouplingOptions, FilmSupport
+from shaftline.shaft.lift_off import FilmLimit
 from shaftline.shaft.model import Bearing, Condition, ShaftLine
 
 if TYPE_CHECKING:
     from shaftline.shaft.alignment import AlignmentModel, ConditionResult, InfluenceMatrix
     from shaftline.shaft.coupled import CoupledResult
     from shaftline.shaft.jackup import JackUpCurve, JackUpFit
+    from shaftline.shaft.lift_off import LiftOffResult
     from shaftline.shaft.offsets import OffsetPlan
     from shaftline.shaft.rules import Rule, RuleCheck
     from shaftline.shaft.sag_gap import SagGap
@@ -70,6 +73,18 @@ class MeasuredReactions:
 
 
 @dataclass(frozen=True, eq=False)
+class MinimumSpeedRequest:
+    """The minimum speed of the film bearings for ``limit`` in ``condition``
+    (:func:`shaftline.shaft.lift_off.minimum_speed` with these settings)."""
+
+    limit: FilmLimit
+    condition: Condition
+    lowest: float = 0.05
+    points: int = 8
+    tolerance: float = 0.01
+
+
+@dataclass(frozen=True, eq=False)
 class AlignmentStudy:
     """An alignment problem in SI units and the procedures asked for.
 
@@ -88,6 +103,7 @@ class AlignmentStudy:
     films: tuple[FilmSupport, ...] = ()
     coupling: CouplingOptions = CouplingOptions()
     film_fields: tuple[str, ...] = ()
+    minimum_speed: MinimumSpeedRequest | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -113,6 +129,8 @@ class AlignmentResult:
     coupled : list of CoupledResult or None
         With film bearings, the coupled solution of each condition (films, point-support
         comparison, convergence).
+    lift_off : LiftOffResult or None
+        The minimum speed and lift-off curve (when asked).
     """
 
     study: AlignmentStudy
@@ -127,6 +145,7 @@ class AlignmentResult:
     jack_fit: JackUpFit | None = None
     reverse: tuple[dict[str, float], float] | None = None
     coupled: list[CoupledResult] | None = None
+    lift_off: LiftOffResult | None = None
 
     def slope_boring_angle(self) -> dict[str, float]:
         """Per condition, the bore slope that would make the aft stern-tube bearing parallel
@@ -176,6 +195,27 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
 
             coupled.append(solver.solve(condition, iteration))
         results = [c.condition for c in coupled]
+    lift_off = None
+    if study.minimum_speed is not None and study.films:
+        from shaftline.shaft.lift_off import minimum_speed
+
+        request = study.minimum_speed
+
+        def speed_step(k: int, speed: float, smallest: float) -> None:
+            step(f"minimum speed: solution {k}, {speed * 30 / math.pi:.1f} rpm, h_min {smallest * 1e6:.1f} µm")
+
+        with located("minimum_speed"):
+            lift_off = minimum_speed(
+                study.line,
+                study.films,
+                request.limit,
+                condition=request.condition,
+                options=study.coupling,
+                lowest=request.lowest,
+                points=request.points,
+                tolerance=request.tolerance,
+                progress=speed_step,
+            )
     influence = model.influence_matrix()
     rules = list(study.rules)
     checks = check_rules(model, results, rules)
@@ -204,5 +244,5 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
         with located("measured_reactions"):
             reverse = offsets_from_reactions(model, mr.values, mr.condition, mr.reference)
     return AlignmentResult(
-        study, model, results, influence, checks, plan, plan_checks, sag, jack, fit, reverse, coupled
+        study, model, results, influence, checks, plan, plan_checks, sag, jack, fit, reverse, coupled, lift_off
     )
