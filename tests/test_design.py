@@ -135,3 +135,46 @@ def test_constraint_and_problem_inputs():
     with pytest.raises(InputError) as error:
         search(ntua(), algorithm="simplex")
     assert error.value.field == "algorithm"
+
+
+def test_robustness_scenarios():
+    """The seed's scenarios on one design (coarse grid): a heavier load, a lower speed and a hotter
+    oil thin the film, a higher speed and a lighter load thicken it (Reynolds scaling with the
+    Sommerfeld number); the verdict follows h_min against the limit; deviations in % of the
+    operating point as seed 004 Tables 5-14/5-15."""
+    from shaftline.design.robustness import SEED_SCENARIOS, robustness
+    from shaftline.lubricants import Lubricant
+
+    oil = Lubricant.from_two_points("seed SAE 30", 40.0, 0.07 / 890, 60.0, 0.026 / 890, 890.0)
+    result = robustness(
+        ntua(), np.array([[0.31, 0.11, 0.61]]), lubricant=oil, temperature=40.0, limit=100e-6, backend="serial"
+    )
+    change = dict(zip([s.name for s in SEED_SCENARIOS], result.deviation("min_film_thickness")[0], strict=True))
+    assert change["+20 % speed"] > 0 and change["-50 % load"] > 0
+    for thinner in ("-30 % speed", "+50 % load", "+20 % load", "+10 degC", "+20 degC"):
+        assert change[thinner] < 0, thinner
+    assert change["+20 degC"] < change["+10 degC"] and change["+50 % load"] < change["+20 % load"]
+    hmin = np.array([e.values["min_film_thickness"] for e in result.evaluations[0]])
+    assert result.passes()[0].tolist() == (hmin >= 100e-6).tolist()
+    assert result.robust()[0] == bool(
+        np.all(hmin >= 100e-6) and result.reference[0].values["min_film_thickness"] >= 1e-4
+    )
+    assert len(result.table()) == 1 + len(SEED_SCENARIOS)
+
+
+def test_robustness_bad_inputs():
+    from shaftline.design.robustness import Scenario, robustness
+    from shaftline.lubricants import Lubricant
+
+    hot = (Scenario("+200 degC", temperature_change=200.0),)
+    with pytest.raises(InputError) as error:
+        robustness(ntua(), np.array([[0.3, 0.1, 0.5]]), scenarios=hot, backend="serial")
+    assert error.value.field == "lubricant"
+    with pytest.raises(InputError) as error:
+        robustness(
+            ntua(), np.array([[0.3, 0.1, 0.5]]), scenarios=hot, lubricant=Lubricant.preset("SAE 30"), temperature=40.0
+        )
+    assert error.value.field == "temperature_change"
+    with pytest.raises(InputError) as error:
+        robustness(ntua(), np.array([[0.3, 0.1]]), backend="serial")
+    assert error.value.field == "designs"
