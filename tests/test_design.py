@@ -178,3 +178,35 @@ def test_robustness_bad_inputs():
     with pytest.raises(InputError) as error:
         robustness(ntua(), np.array([[0.3, 0.1]]), backend="serial")
     assert error.value.field == "designs"
+
+
+def test_bent_shaft_trends_of_seed004():
+    """Seed 004 Table 5-3 / 5-16 trends with the local shaft model's bent journal (the thesis's
+    bent-shaft numbers themselves are not reproducible from its own elastic line, see
+    ../shared/reference/seed004-chapter5.md): the bent shaft lowers h_min against the linear
+    one with no slope and with the single slope at psi_x = 0.3, and with no slope at psi_x = 0.6
+    the film collapses towards contact (a few µm) while a single slope keeps it."""
+    from shaftline.design.shaft_models import bent_shaft, linear_shaft, seed004_local_model
+
+    base = ntua(60, 48, parametrisation=SlopeParametrisation(1))
+    bent, linear = bent_shaft(base, seed004_local_model()), linear_shaft(base)
+
+    def hmin(at, psi, slope):
+        evaluation = evaluate_design(at(psi), np.array([slope]))
+        assert evaluation.ok
+        return evaluation.values["min_film_thickness"]
+
+    assert hmin(bent, 0.3, 0.0) < hmin(linear, 0.3, 0.0)
+    assert hmin(bent, 0.3, 0.3) < hmin(linear, 0.3, 0.3)
+    assert hmin(bent, 0.6, 0.0) < 0.1 * hmin(bent, 0.3, 0.0)
+    assert hmin(bent, 0.6, 0.6) > 100e-6
+
+
+def test_misalignment_sweep_gives_a_front_per_ratio():
+    from shaftline.design.sweep import misalignment_sweep
+
+    sweep = misalignment_sweep(ntua(), (0.2, 0.5), population=6, generations=2, seed=2, backend="serial")
+    table = sweep.dominant()
+    assert sorted(set(table["psi_x"])) == [0.2, 0.5]
+    assert all(len(s.pareto) >= 1 for s in sweep.searches)
+    assert sweep.searches[0].problem.tilt_y == pytest.approx(0.2 * 2 * C / L)
