@@ -88,7 +88,8 @@ def test_tables_json_and_report(solved):
     # the film bearing's reaction is its film force, and the film is open (not at its floor)
     assert film["force_y"] == pytest.approx(bearings["aft stern tube"]["reaction_y"], rel=1e-12)
     assert not film["contact"] and film["min_film_thickness"] > 1e-5
-    assert alignment["units"]["support_point"] == "m" and alignment["units"]["min_film_theta_deg"] == "deg"
+    assert alignment["units"]["support_point"].startswith("m, from the bearing's mid-length, + forward")
+    assert alignment["units"]["min_film_theta_deg"] == "deg"
     assert len(film["centre_line"]["z"]) == 41 and len(film["line_load"]["y"]) == 41
     assert [b["name"] for b in coupled["point_supports"]] == list(bearings)
     html = (out / "report.html").read_text()
@@ -191,3 +192,17 @@ def test_ntua_shaft_line_example(tmp_path):
     html = (out / "report.html").read_text()
     assert "Minimum speed for hydrodynamic operation" in html and "Point supports vs film supports" in html
     assert (out / "figures" / "alignment_lift_off.png").stat().st_size > 10_000
+
+
+def test_coupled_solve_that_does_not_converge_is_flagged(tmp_path):
+    """One Newton iteration allowed: the result is written, flagged not converged with its last
+    residual and what to try, and the exit status is 3 (not an input error)."""
+    path = write(tmp_path)
+    path.write_text(path.read_text() + "\n[alignment.coupling]\nmax_iterations = 1\n")
+    out = tmp_path / "out"
+    result = invoke("align", str(path), "--out", str(out))
+    assert result.exit_code == 3, result.stderr
+    coupled = json.loads((out / "results.json").read_text())["alignment"]["film_supports"][0]
+    assert not coupled["converged"] and "not converged in 1 iterations" in coupled["message"]
+    assert "max_iterations" in coupled["message"]
+    assert "NOT CONVERGED" in (out / "report.html").read_text()

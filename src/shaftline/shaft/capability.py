@@ -72,7 +72,7 @@ FILM_UNITS = {
     "max_pressure": "Pa",
     "max_pressure_theta_deg": "deg",
     "max_pressure_z": "m",
-    "support_point": "m",
+    "support_point": "m, from the bearing's mid-length, + forward (towards the bow)",
     "attitude_angle_deg": "deg",
     "power_loss": "W",
     "side_leakage": "m^3/s",
