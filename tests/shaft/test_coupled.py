@@ -23,7 +23,7 @@ import pytest
 from shaftline.errors import InputError
 from shaftline.film import BearingProblem, JournalBearing, OperatingPoint, SolverOptions
 from shaftline.film.geometry import BearingGeometry, BentJournal, JournalPosition
-from shaftline.shaft import AlignmentModel, Bearing, ShaftLine, ShaftSegment
+from shaftline.shaft import AlignmentModel, Bearing, Condition, ShaftLine, ShaftSegment
 from shaftline.shaft.coupled import CoupledAlignment, CouplingOptions, FilmSupport
 from shaftline.shaft.model import PointLoad
 
@@ -157,6 +157,52 @@ def test_the_film_journal_line_is_the_shafts_elastic_line():
     assert film.relative_slope == pytest.approx(
         result.condition.bearing("aft").relative_slope, abs=1e-3 * 2 * CLEARANCE
     )
+
+
+def test_condition_offsets_act_as_the_bearings_own_offsets():
+    """The bore centre line (offset + condition offset + c + slope) enters the film, the
+    auxiliary springs and the start separately (docs/theory.md (H2)); a condition's offsets
+    must give exactly what the same offsets written into the bearings give (the same
+    arithmetic: identical to round-off, 1e-9). A slope-bored bearing's relative slope is the
+    journal's less the bore's, in the film result and the bearing result alike."""
+    line = ntua_line(
+        conditions=(Condition("hot", offsets_y={"aft": 0.2e-3, "int": -0.1e-3}, offsets_z={"aft": 0.1e-3}),)
+    )
+    by_condition = CoupledAlignment(line, [FilmSupport("aft", ntua_film())]).solve(line.conditions[0])
+    aft, fwd, intermediate = line.bearings
+    moved = ntua_line(
+        bearings=(
+            replace(aft, offset_y=0.2e-3, offset_z=0.1e-3),
+            fwd,
+            replace(intermediate, offset_y=intermediate.offset_y - 0.1e-3),
+        )
+    )
+    by_line = CoupledAlignment(moved, [FilmSupport("aft", ntua_film())]).solve()
+    assert by_condition.converged and by_line.converged
+    for a, b in zip(by_condition.condition.bearings, by_line.condition.bearings, strict=True):
+        assert (a.reaction_y, a.reaction_z) == pytest.approx((b.reaction_y, b.reaction_z), rel=1e-9, abs=1e-6)
+    assert by_condition.film("aft").centre_y == pytest.approx(by_line.film("aft").centre_y, abs=1e-9 * CLEARANCE)
+    # ... and they do move the film: without them the aft film carries 1 % less.
+    unmoved = CoupledAlignment(ntua_line(), [FilmSupport("aft", ntua_film())]).solve()
+    assert by_condition.film("aft").force_y != pytest.approx(unmoved.film("aft").force_y, rel=1e-3)
+
+    sloped = ntua_line(bearings=(replace(aft, slope=-0.2e-3), fwd, intermediate))
+    result = CoupledAlignment(sloped, [FilmSupport("aft", ntua_film())]).solve()
+    assert result.converged, result.message
+    film, bearing = result.film("aft"), result.condition.bearing("aft")
+    assert film.relative_slope == pytest.approx(bearing.relative_slope, abs=1e-3 * 2 * CLEARANCE / 1.05)
+    assert bearing.shaft_slope - (-0.2e-3) == pytest.approx(bearing.relative_slope, abs=1e-12)
+
+
+def test_progress_reports_every_newton_iteration():
+    """The progress callback (long runs) sees each iteration's number and film mismatch: the
+    residual history after the start."""
+    seen = []
+    result = CoupledAlignment(ntua_line(), [FilmSupport("aft", ntua_film())]).solve(
+        progress=lambda k, r: seen.append((k, r))
+    )
+    assert [k for k, _ in seen] == list(range(1, result.iterations + 1))
+    assert [r for _, r in seen] == result.residual_history[1:]
 
 
 # -- 3. limits -------------------------------------------------------------------------------
