@@ -1,21 +1,24 @@
 """Elastohydrodynamic alignment timing (issue 11 targets) against seed 004's fast path.
 
-Run: ``.venv/bin/python benchmarks/bench_coupled.py [--repeat N]``. Prints medians and ratios.
+Run: ``PYTHONPATH=src .venv/bin/python benchmarks/bench_coupled.py [--repeat N]``. Prints
+medians and ratios.
 
-Coupled: a 14 m line on seed 004's aft stern-tube bearing as a film (L = 1.05 m, D = 0.52 m,
-c = 0.45 mm, 90 rpm, 0.07 Pa s; Table 5-1) on a 100 x 60 grid, a forward stern-tube and an
-intermediate bearing as points, the propeller end force of Table 4-5 and its end moment
-nose-down (with the seed's nose-up sign this line's film reaches its floor and the solver
-falls back to contact); ``CoupledAlignment(line, films).solve()`` from scratch (model built,
-film solver state cold) <= 1 s median on the 2-core machine.
+Coupled: the seed 004 shaft line (``shaftline.shaft.ntua.ntua_shaft_line``, psi_x = 0.3: the
+aft stern-tube bearing of Table 5-1 as a film on the seed's 100 x 60 grid, L = 1.05 m,
+D = 0.52 m, c = 0.45 mm, 90 rpm, 0.07 Pa s; the propeller force and moment of Table 4-5);
+``CoupledAlignment(line, [film]).solve()`` from scratch (model built, film solver state
+cold) <= 1 s median on the 2-core machine.
 
-Fast path (seed 004 Sect. 4.5.2-4.5.4): the local shaft model (``shaftline.shaft.local``,
-Table 4-5, psi_x = 0.3) gives the bent journal, then one film load equilibrium with that
-journal and the chord tilt, same bearing and grid: <= 0.2 s median.
+Fast path (seed 004 Sect. 4.5.2-4.5.4, ``shaftline.shaft.fast_path.fast_path``): the
+point-support alignment, the local shaft model (``shaftline.shaft.local``) with its end
+conditions, and one film load equilibrium with that bent journal, same line and grid:
+<= 0.2 s median.
 
-Also printed: Newton iterations and film solutions of the coupled solve, and where its time
-goes (film solutions with their frozen-set derivatives, the inner alignment solves, the
-alignment's response to unit loads, the set-up), from instrumented runs (means).
+Also printed: Newton iterations and film solutions of the coupled solve, where its time goes
+(film solutions with their frozen-set derivatives, the start's uncoupled film equilibrium,
+the inner alignment solves, the alignment's response to unit loads, the set-up) from
+instrumented runs (means), and the same coupled solve on the 14 m test line of
+``tests/shaft/test_coupled.py`` (nose-down end moment) for comparison.
 """
 
 from __future__ import annotations
@@ -32,12 +35,16 @@ from shaftline.film import BearingProblem, JournalBearing, OperatingPoint, Solve
 from shaftline.film.geometry import BearingGeometry
 from shaftline.shaft import AlignmentModel, Bearing, ShaftLine, ShaftSegment
 from shaftline.shaft.coupled import CoupledAlignment, CoupledResult, FilmSupport
-from shaftline.shaft.local import LocalShaftModel, solve_local_model
+from shaftline.shaft.fast_path import FastPathResult, fast_path
 from shaftline.shaft.model import PointLoad
+from shaftline.shaft.ntua import ntua_shaft_line
 
 CLEARANCE = 0.45e-3
 TARGET_COUPLED = 1.0  # s
 TARGET_FAST = 0.2  # s
+
+
+SEED_LINE, SEED_FILM = ntua_shaft_line(0.3)
 
 
 def film_problem() -> BearingProblem:
@@ -48,7 +55,8 @@ def film_problem() -> BearingProblem:
     )
 
 
-def line() -> ShaftLine:
+def test_line() -> ShaftLine:
+    """The 14 m line of tests/shaft/test_coupled.py (its end moment nose-down)."""
     return ShaftLine(
         segments=(ShaftSegment(length=14.0, outer_diameter=0.52),),
         bearings=(
@@ -62,31 +70,17 @@ def line() -> ShaftLine:
 
 
 def coupled() -> CoupledResult:
-    return CoupledAlignment(line(), [FilmSupport("aft", film_problem())]).solve()
+    return CoupledAlignment(SEED_LINE, [SEED_FILM]).solve()
 
 
-def fast_path():
-    """Seed 004's bypass: local shaft model, bent journal, one film equilibrium."""
-    local = LocalShaftModel.from_misalignment(
-        0.3,
-        radial_clearance=CLEARANCE,
-        bearing_length=1.05,
-        shaft_diameter=0.52,
-        aft_overhang=0.407,
-        fore_length=0.5412,
-        aft_force=-202598.2,
-        aft_moment=409948.0,
-        fore_force=-107261.7,
-        fore_rotation=0.000465,
-        weight_per_length=16343.0,
-        shear_area_factor=1.0,
-    )
-    shaft = solve_local_model(local)
-    slope, bent = shaft.bent_journal()
-    problem = film_problem()
-    geometry = problem.geometry.__class__(**{**problem.geometry.__dict__, "bent_journal": bent})
-    bearing = JournalBearing(geometry, problem.operating, problem.options)
-    return bearing.equilibrium(load_y=-float(shaft.edge_reactions.sum()), tilt_y=slope)
+def coupled_test_line() -> CoupledResult:
+    return CoupledAlignment(test_line(), [FilmSupport("aft", film_problem())]).solve()
+
+
+def seed_fast_path() -> FastPathResult:
+    """Seed 004's bypass on the same line: point-support alignment, local shaft model, bent
+    journal, one film equilibrium."""
+    return fast_path(SEED_LINE, SEED_FILM)
 
 
 def instrumented(repeat: int) -> dict[str, float]:
@@ -129,30 +123,29 @@ def instrumented(repeat: int) -> dict[str, float]:
 def main() -> None:
     repeat = int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 7
     coupled()  # imports, numba caches
-    fast_path()
-    # Pairs in one process, alternating, so that load from other jobs hits both alike.
+    seed_fast_path()
     t_coupled, result = median_time(coupled, repeat)
-    t_fast, fast = median_time(fast_path, repeat)
-    film = result.film("aft")
-    print(f"Coupled alignment, NTUA-like 14 m line, aft stern tube as a 100 x 60 film ({repeat} repeats)")
+    t_fast, fast = median_time(seed_fast_path, repeat)
+    film = result.film(SEED_FILM.bearing)
+    print(f"Coupled alignment, seed 004 shaft line (psi_x = 0.3), aft stern tube as a 100 x 60 film ({repeat} repeats)")
     print(
         f"  converged {result.converged} in {result.iterations} Newton iterations, "
         f"{result.film_solutions} film solutions; residuals " + ", ".join(f"{r:.2g}" for r in result.residual_history)
     )
+    state = fast.state
     print(
-        f"  hmin {film.state.min_film_thickness * 1e6:.1f} um, pmax {film.state.max_pressure / 1e6:.2f} MPa, "
-        f"support point {film.support_point * 1e3:+.1f} mm from L/2 (+ forward), e {film.state.eccentricity_ratio:.3f}"
+        f"  coupled: hmin {film.state.min_film_thickness * 1e6:.1f} um, pmax {film.state.max_pressure / 1e6:.2f} MPa, "
+        f"support point {film.support_point * 1e3:+.1f} mm from L/2 (+ forward); fast path: hmin "
+        f"{state.min_film_thickness * 1e6:.1f} um, pmax {state.max_pressure / 1e6:.2f} MPa, "
+        f"support point {fast.support_point * 1e3:+.1f} mm"
     )
     print(
         f"  coupled solve (model built, cold film): {t_coupled:.3f} s median "
         f"(target <= {TARGET_COUPLED} s, ratio {t_coupled / TARGET_COUPLED:.2f})"
     )
-    state = fast.state
     print(
-        f"  fast path (local model + one film equilibrium): {t_fast:.3f} s median "
-        f"(target <= {TARGET_FAST} s, ratio {t_fast / TARGET_FAST:.2f}); "
-        f"hmin {state.min_film_thickness * 1e6:.1f} um, pmax {state.max_pressure / 1e6:.2f} MPa "
-        "(Table 4-5's loading and psi_x = 0.3, not the coupled line's)"
+        f"  fast path (alignment, local model, one film equilibrium): {t_fast:.3f} s median "
+        f"(target <= {TARGET_FAST} s, ratio {t_fast / TARGET_FAST:.2f})"
     )
     print(f"  coupled / fast path: {t_coupled / t_fast:.1f}")
     spent = instrumented(repeat)
@@ -160,6 +153,11 @@ def main() -> None:
     print(f"  instrumented coupled solve, mean of {repeat}: {total:.3f} s")
     for label, seconds in sorted(spent.items(), key=lambda item: -item[1]):
         print(f"    {label:36s} {seconds:.3f} s ({seconds / total:.0%})")
+    t_test, other = median_time(coupled_test_line, repeat)
+    print(
+        f"  the 14 m test line (nose-down end moment), same film: {t_test:.3f} s median, "
+        f"{other.iterations} iterations, {other.film_solutions} film solutions"
+    )
 
 
 if __name__ == "__main__":
