@@ -299,6 +299,26 @@ def _wait_for_workers(client: Any, scheduler: str, field: str, timeout: float) -
         ) from None
 
 
+def _batched(
+    items: Sequence[T], chunksize: int, progress: ProgressCallback | None
+) -> tuple[list[list[T]], Callable[[int], None]]:
+    """The items in jobs of ``chunksize`` (checked) and the callback that counts them done."""
+    if isinstance(chunksize, bool) or not isinstance(chunksize, int) or chunksize < 1:
+        raise InputError("chunksize", chunksize, "", "an integer >= 1")
+    listed = list(items)
+    total = len(listed)
+    batches = [listed[start : start + chunksize] for start in range(0, total, chunksize)]
+    done = 0
+
+    def on_batch(index: int) -> None:
+        nonlocal done
+        done += len(batches[index])
+        if progress is not None:
+            progress(done, total)
+
+    return batches, on_batch
+
+
 class Pool:
     """Workers kept for several :meth:`map` calls: the generations of a search, the rounds of
     a sweep. Each call of :func:`map` starts its workers and ends them; a pool starts them at
@@ -345,21 +365,9 @@ class Pool:
         """``[function(item) for item in items]`` on the pool's workers, in order (as :func:`map`).
 
         An error or Ctrl-C ends the workers (the next call starts new ones) and is raised."""
-        if isinstance(chunksize, bool) or not isinstance(chunksize, int) or chunksize < 1:
-            raise InputError("chunksize", chunksize, "", "an integer >= 1")
-        items = list(items)
-        total = len(items)
-        if total == 0:
+        batches, on_batch = _batched(items, chunksize, progress)
+        if not batches:
             return []
-        batches = [items[start : start + chunksize] for start in range(0, total, chunksize)]
-        done = 0
-
-        def on_batch(index: int) -> None:
-            nonlocal done
-            done += len(batches[index])
-            if progress is not None:
-                progress(done, total)
-
         if self.backend == "serial":
             results = _serial(function, batches, None, None, on_batch)
         elif self.backend == "process":
@@ -443,22 +451,10 @@ def map(
     [2, 3, 5]
     """
     name = backend_name(backend, workers, scheduler)
-    if isinstance(chunksize, bool) or not isinstance(chunksize, int) or chunksize < 1:
-        raise InputError("chunksize", chunksize, "", "an integer >= 1")
-    items = list(items)
-    total = len(items)
-    if total == 0:
+    batches, on_batch = _batched(items, chunksize, progress)
+    if not batches:
         return []
     if name == "process" and workers == 1:
         name = "serial"
-    batches = [items[start : start + chunksize] for start in range(0, total, chunksize)]
-    done = 0
-
-    def on_batch(index: int) -> None:
-        nonlocal done
-        done += len(batches[index])
-        if progress is not None:
-            progress(done, total)
-
     results = BACKENDS[name](function, batches, workers, scheduler, on_batch)
     return [result for batch in results for result in batch]

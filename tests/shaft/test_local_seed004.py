@@ -12,10 +12,12 @@ psi = 0, 0.3 and 1.0.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
-from shaftline.shaft.local import LocalShaftModel, solve_local_model
+from shaftline.shaft.local import LocalShaftModel, seed004_local_model, solve_local_model
 
 X = [0.000, 0.407, 0.512, 0.617, 0.722, 0.827, 0.932, 1.037, 1.142, 1.247, 1.352, 1.457, 1.998]
 TABLE_5_29 = {
@@ -115,24 +117,11 @@ TABLE_5_30 = {
 
 
 def seed_model(ratio: float) -> LocalShaftModel:
-    # Table 4-5 / 5-1: L = 1.05, D = 0.52, diametral clearance 0.9 mm, overhangs 0.407 and
-    # 0.5412 m, M_aft = 409948 N m (hogging: nose-up in shaftline's sign), F_aft = -202598.2 N,
-    # F_fore = -107261.7 N, fore slope 0.465 mrad, weight 16343 N/m, E = 206 GPa.
-    return LocalShaftModel.from_misalignment(
-        ratio,
-        radial_clearance=0.45e-3,
-        bearing_length=1.05,
-        shaft_diameter=0.52,
-        aft_overhang=0.407,
-        fore_length=0.5412,
-        aft_force=-202598.2,
-        aft_moment=409948.0,
-        fore_force=-107261.7,
-        fore_rotation=0.000465,
-        weight_per_length=16343.0,
-        beam_theory="timoshenko",
-        shear_area_factor=1.0,
-    )
+    # Table 4-5 / 5-1 (seed004_local_model): L = 1.05, D = 0.52, diametral clearance 0.9 mm,
+    # overhangs 0.407 and 0.5412 m, M_aft = 409948 N m (hogging: nose-up in shaftline's sign),
+    # F_aft = -202598.2 N, F_fore = -107261.7 N, fore slope 0.465 mrad, weight 16343 N/m, E = 206 GPa.
+    rise = ratio * 2.0 * 0.45e-3
+    return replace(seed004_local_model(), aft_edge_offset=-0.25 * rise, fore_edge_offset=0.75 * rise)
 
 
 @pytest.mark.parametrize("ratio", [0.0, 0.3, 1.0])

@@ -11,30 +11,9 @@ from dataclasses import replace
 from shaftline.design.problem import SlopeDesignProblem
 from shaftline.design.sweep import linear_shaft
 from shaftline.errors import InputError
-from shaftline.shaft.local import LocalShaftModel, solve_local_model
+from shaftline.shaft.local import LocalShaftModel, seed004_local_model, solve_local_model
 
 __all__ = ["bent_shaft", "linear_shaft", "seed004_local_model"]
-
-
-def seed004_local_model() -> LocalShaftModel:
-    """The local shaft model of seed 004 Table 4-5 / 5-1 (its edge offsets set per psi_x by
-    :func:`bent_shaft`): L = 1.05 m, D = 0.52 m, overhangs 0.407 and 0.5412 m, M_aft = 409948 N m
-    (nose-up in shaftline's sign), F_aft = -202598.2 N, F_fore = -107261.7 N, fore slope
-    0.465 mrad, 16343 N/m, E = 206 GPa, shear area = section area (the seed's tables are
-    reproduced so, tests/shaft/test_local_seed004.py)."""
-    return LocalShaftModel(
-        bearing_length=1.05,
-        shaft_diameter=0.52,
-        aft_overhang=0.407,
-        fore_length=0.5412,
-        aft_force=-202598.2,
-        aft_moment=409948.0,
-        fore_force=-107261.7,
-        fore_rotation=0.000465,
-        weight_per_length=16343.0,
-        beam_theory="timoshenko",
-        shear_area_factor=1.0,
-    )
 
 
 def bent_shaft(

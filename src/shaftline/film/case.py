@@ -574,6 +574,21 @@ def lubricant_properties(lube: LubricantSection) -> tuple[Lubricant, float, floa
     return lubricant, viscosity, density
 
 
+def solver_options(s: SolverSection) -> SolverOptions:
+    """The film's :class:`SolverOptions` of a ``solver`` table."""
+    return SolverOptions(
+        axial_nodes=s.axial_nodes,
+        circumferential_nodes=s.circumferential_nodes,
+        cavitation=s.cavitation,
+        film_start=s.film_start,
+        cavitated_shear=s.cavitated_shear,
+        min_film_floor=s.min_film_floor,
+        tolerance=s.tolerance,
+        max_iterations=s.max_iterations,
+        memory_limit=s.memory_limit,
+    )
+
+
 def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
     """The base case and its variants in SI domain objects (raises :class:`InputError` with
     the field's path inside ``[bearing]``)."""
@@ -624,19 +639,8 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             cavitation_pressure=op.cavitation_pressure,
             grooves=tuple(SupplyGroove(g.angle, g.pressure, g.length_fraction) for g in op.grooves),
         )
-    s = section.solver
     with located("solver"):
-        options = SolverOptions(
-            axial_nodes=s.axial_nodes,
-            circumferential_nodes=s.circumferential_nodes,
-            cavitation=s.cavitation,
-            film_start=s.film_start,
-            cavitated_shear=s.cavitated_shear,
-            min_film_floor=s.min_film_floor,
-            tolerance=s.tolerance,
-            max_iterations=s.max_iterations,
-            memory_limit=s.memory_limit,
-        )
+        options = solver_options(section.solver)
     with located("", {"operating": "operation", "options": "solver"}):
         BearingProblem(base_geometry, operating, options)
     tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)

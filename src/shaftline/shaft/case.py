@@ -894,8 +894,8 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
 
 def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSupport:
     """The film of ``bearings[k]`` as a domain object (errors placed under its table)."""
-    from shaftline.film.case import _bore, lubricant_properties
-    from shaftline.film.problem import BearingProblem, SolverOptions
+    from shaftline.film.case import _bore, lubricant_properties, solver_options
+    from shaftline.film.problem import BearingProblem
 
     bearing = section.bearings[k]
     own = isinstance(bearing.film, FilmSection)
@@ -920,19 +920,8 @@ def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSup
             fore_pressure=film.fore_pressure,
             cavitation_pressure=film.cavitation_pressure,
         )
-    s = film.solver
     with located(f"{where}.solver"):
-        options = SolverOptions(
-            axial_nodes=s.axial_nodes,
-            circumferential_nodes=s.circumferential_nodes,
-            cavitation=s.cavitation,
-            film_start=s.film_start,
-            cavitated_shear=s.cavitated_shear,
-            min_film_floor=s.min_film_floor,
-            tolerance=s.tolerance,
-            max_iterations=s.max_iterations,
-            memory_limit=s.memory_limit,
-        )
+        options = solver_options(film.solver)
     with located(where, {"length": f"bearings[{k}].length", "diameter": "shaft.segments"}):
         geometry = BearingGeometry(
             length=bearing.length,
