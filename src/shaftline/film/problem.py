@@ -81,7 +81,10 @@ def _one_of(choices: tuple[str, ...]) -> str:
 
 #: Bytes per node of a grid level for the dense arrays (film, stencil, pressures, masks, the
 #: slot maps of the sparsity pattern, right-hand sides of the Jacobian, the result's fields).
-_DENSE_BYTES = 500.0
+#: Issue 11 raised it from 500: the 4 x 4 film coefficients with tilt take eight directions'
+#: film, residual and pressure changes where the 2 x 2 took four (measured peaks rose from
+#: 0.84-1.00 to 1.00-1.16 of the old estimate on 161 x 120 and 81 x 240).
+_DENSE_BYTES = 700.0
 #: Bytes per nonzero of the qdldl LDL^T factor (int64 row index, float64 value, workspace):
 #: measured 20.4-22.2.
 _FACTOR_BYTES = 22.0
@@ -132,8 +135,9 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
     (about ``n log n``), so a grid twice as fine each way takes more than four times the memory.
     Calibrated against the measured peak (docs/validation.md): from 5 000 to 300 000 nodes the
     estimate is 3 % below to 27 % above it, on the high side by design. Since issue 10 only
-    the free sub-matrix is factorised (:data:`_FREE_FACTOR_SHARE`): the measured peaks lie at
-    0.84-1.00 of the estimate from 5 000 to 300 000 nodes.
+    the free sub-matrix is factorised (:data:`_FREE_FACTOR_SHARE`), and since issue 11 the
+    stiffness and damping include the tilt terms (:data:`_DENSE_BYTES`): the measured peaks lie
+    at 0.82-0.89 of the estimate from 5 000 to 300 000 nodes (JFO 0.77-0.87).
 
     Parameters
     ----------
@@ -149,10 +153,10 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
 
     Examples
     --------
-    >>> round(estimated_memory(41, 120) / 2**20, 1)  # the default grid, MiB (measured peak 5.1)
-    5.1
-    >>> round(estimated_memory(2561, 120) / 2**20)  # measured peak 345 MiB
-    360
+    >>> round(estimated_memory(41, 120) / 2**20, 1)  # the default grid, MiB (measured peak 5.6)
+    6.4
+    >>> round(estimated_memory(2561, 120) / 2**20)  # measured peak 391 MiB
+    438
     """
     total = 0.0
     shape: tuple[int, int] | None = (int(axial_nodes), int(circumferential_nodes))
