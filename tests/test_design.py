@@ -210,3 +210,16 @@ def test_misalignment_sweep_gives_a_front_per_ratio():
     assert sorted(set(table["psi_x"])) == [0.2, 0.5]
     assert all(len(s.pareto) >= 1 for s in sweep.searches)
     assert sweep.searches[0].problem.tilt_y == pytest.approx(0.2 * 2 * C / L)
+
+
+def test_search_on_a_dask_cluster_gives_the_same_designs():
+    """A real dask.distributed LocalCluster (the project's rule: no mock): the same seed gives the
+    same designs and values as in this process."""
+    from dask.distributed import LocalCluster
+
+    problem = ntua(21, 24)
+    serial = search(problem, population=6, generations=2, seed=5, backend="serial")
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster:
+        remote = search(problem, population=6, generations=2, seed=5, scheduler=cluster.scheduler_address)
+    assert [e.x.tolist() for e in remote.evaluations] == [e.x.tolist() for e in serial.evaluations]
+    assert [e.values for e in remote.evaluations] == [e.values for e in serial.evaluations]

@@ -237,3 +237,16 @@ def test_pool_keeps_its_workers_between_calls():
 def _pid(_: int) -> int:
     time.sleep(0.05)
     return os.getpid()
+
+
+def test_pool_workers_run_blas_single_threaded():
+    """Workers get one BLAS/OpenMP thread each (one worker per core), the caller keeps its own."""
+    before = {name: os.environ.get(name) for name in parallel.SINGLE_THREADED}
+    with parallel.Pool(workers=2) as pool:
+        seen = pool.map(_thread_settings, range(2))
+    assert all(s == parallel.SINGLE_THREADED for s in seen)
+    assert {name: os.environ.get(name) for name in parallel.SINGLE_THREADED} == before
+
+
+def _thread_settings(_: int) -> dict[str, str | None]:
+    return {name: os.environ.get(name) for name in parallel.SINGLE_THREADED}

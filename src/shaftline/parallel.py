@@ -90,12 +90,18 @@ def _ignore_sigint() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
+#: Thread pools of BLAS and OpenMP set to one thread in the workers: one worker per core, so
+#: threads of their own would only compete for the cores (Dask's nanny sets the same).
+SINGLE_THREADED = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
+
+
 def _context(function: Callable[[Any], Any]) -> Any:
     """``forkserver`` where available (fast start, no inherited threads), else ``spawn``.
 
     The fork server imports the module of ``function`` before it forks the first worker
     (the solver modules take about half a second to import), so each worker starts with it
-    loaded. The server is started once per process; later calls reuse it as it is.
+    loaded. The server is started once per process, with :data:`SINGLE_THREADED` in its
+    environment (and so in every worker's); later calls reuse it as it is.
     """
     if "forkserver" not in multiprocessing.get_all_start_methods():
         return multiprocessing.get_context("spawn")
@@ -103,6 +109,18 @@ def _context(function: Callable[[Any], Any]) -> Any:
     module = getattr(getattr(function, "func", function), "__module__", None)
     if module and module != "__main__":
         context.set_forkserver_preload([module])
+    from multiprocessing import forkserver
+
+    saved = {name: os.environ.get(name) for name in SINGLE_THREADED}
+    os.environ.update(SINGLE_THREADED)
+    try:
+        forkserver.ensure_running()  # started here, it keeps this environment
+    finally:
+        for name, value in saved.items():
+            if value is None:
+                os.environ.pop(name, None)
+            else:
+                os.environ[name] = value
     return context
 
 
