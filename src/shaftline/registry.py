@@ -31,6 +31,8 @@ CAPABILITY_MODULES: tuple[str, ...] = (
     "shaftline.shaft.capability",
     "shaftline.wear.capability",
     "shaftline.cpp.capability",
+    # after film: [design] builds on [bearing] (Capability.needs)
+    "shaftline.design.capability",
 )
 
 #: A callback that reports what is being solved (the command line shows it).
@@ -86,11 +88,15 @@ class BuildContext:
     inputs : list of Path
         The data files named by the case so far (:meth:`path` adds them), so that no output
         of the run can replace one.
+    studies : dict
+        The studies built so far, by capability key: those a capability :attr:`~Capability.needs`
+        are built before it (e.g. ``[design]`` takes its film from ``[bearing]``).
     """
 
     case: CaseInfo
     base_dir: Path
     inputs: list[Path] = field(default_factory=list)
+    studies: dict[str, Any] = field(default_factory=dict)
 
     def path(self, name: str) -> Path:
         """A data file named in the case, relative to the case file unless absolute; the
@@ -150,6 +156,10 @@ class Capability(Generic[SectionT, StudyT, ResultT]):
     moved_tables : mapping
         Top-level tables of an older case-file layout and where they live now, so that an
         old file gets a message saying where to move them.
+    needs : tuple of str
+        Keys of other capabilities whose tables this one builds on (in ``context.studies``
+        when :meth:`build` runs); they are built first, also for a verb of this capability
+        alone, but solved only when asked for themselves.
     parallel : bool
         :meth:`solve` spreads its work with :func:`shaftline.parallel.map` and takes its
         ``workers`` and ``scheduler`` keyword options (the command line's ``--workers`` and
@@ -159,6 +169,7 @@ class Capability(Generic[SectionT, StudyT, ResultT]):
     key: ClassVar[str]
     title: ClassVar[str]
     verbs: ClassVar[tuple[Verb, ...]] = ()
+    needs: ClassVar[tuple[str, ...]] = ()
     moved_tables: ClassVar[Mapping[str, str]] = {}
     parallel: ClassVar[bool] = False
 

@@ -39,6 +39,9 @@ SI_UNITS: dict[str, str] = {
     "viscosity": "Pa*s",
     "kinematic_viscosity": "m**2/s",
     "temperature": "degC",
+    # a change of temperature: "10 K" or "10 delta_degC" (a bare number is K; "10 degC" is a
+    # temperature, 283.15 K, and fails the range of a change)
+    "temperature_difference": "K",
     "density": "kg/m**3",
     "dimensionless": "",
     "percent": "percent",

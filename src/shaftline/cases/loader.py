@@ -251,11 +251,18 @@ def parse_case(
             "one of the tables " + ", ".join(f"[{k}]" for k in capabilities),
         )
     wanted = present if only is None else [key for key in present if key in set(only)]
+    needed = {need for key in wanted for need in capabilities[key].needs}
+    for key in wanted:
+        for need in capabilities[key].needs:
+            if need not in document:
+                raise InputError(
+                    "case file", str(source) if source else "{...}", "", f"a [{need}] table for [{key}] to build on"
+                )
     unusual = _unusual(info.unusual, present)
     context = BuildContext(case=info, base_dir=base_dir or Path.cwd())
     studies = {}
     tables: dict[str, Any] = {"case": info.model_dump(mode="json")}
-    for key in wanted:
+    for key in [k for k in present if k in wanted or k in needed]:
         capability = capabilities[key]
         section = _validate(capability.schema(), document[key], key)
         tables[key] = section.model_dump(mode="json")
@@ -263,7 +270,9 @@ def parse_case(
         # line has; the entries of [case] unusual of tables not wanted are not checked here
         check_table(section, document[key], key, unusual.get(key, ()))
         with located(key):
-            studies[key] = capability.build(section, context)
+            context.studies[key] = capability.build(section, context)
+        if key in wanted:
+            studies[key] = context.studies[key]
     inputs = tuple(dict.fromkeys([*([source] if source is not None else []), *context.inputs]))
     lowered = tuple(dict.fromkeys(path for entries in unusual.values() for _, path in entries))
     return Case(

@@ -1,0 +1,330 @@
+"""Slope-boring design as a capability: ``[design]`` in a case file (on the case's ``[bearing]``),
+``shaftline design slopes | robustness | sweep``, ``design`` in results.json, a section of the
+report."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+
+from shaftline.commandline import (
+    CaseArgument,
+    JsonOption,
+    OutOption,
+    SchedulerOption,
+    StrictOption,
+    WorkersOption,
+)
+from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, Verb, no_progress
+from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
+
+if TYPE_CHECKING:
+    from shaftline.design.case import DesignSection
+    from shaftline.design.robustness import RobustnessResult
+    from shaftline.design.search import SearchResult
+    from shaftline.design.study import DesignResult, DesignStudy
+
+#: Units of the quantities of a design in results.json.
+UNITS = {
+    "min_film_thickness": "m",
+    "max_pressure": "Pa",
+    "power_loss": "W",
+    "side_leakage": "m^3/s",
+    "support_offset": "m (|distance of the film resultant from L/2|)",
+    "load_centre_offset": "m from L/2, + forward",
+    "eccentricity_ratio": "-",
+    "attitude_angle": "rad",
+    "slope_k": "share of 2c/L (bore slope of segment k, aft first)",
+    "knuckle_k": "share of L from the aft edge",
+}
+
+
+def _design_rows(result: SearchResult, indices: Sequence[int] | Any) -> list[dict[str, Any]]:
+    names = result.problem.parametrisation.names
+    rows = []
+    for i in indices:
+        evaluation = result.evaluations[int(i)]
+        rows.append(
+            {
+                "index": int(i),
+                **{name: float(v) for name, v in zip(names, evaluation.x, strict=True)},
+                **evaluation.values,
+                "status": evaluation.status,
+            }
+        )
+    return rows
+
+
+def _robustness_json(result: RobustnessResult) -> dict[str, Any]:
+    return {
+        "limit": result.limit,
+        "scenarios": [
+            {
+                "name": s.name,
+                "speed_factor": s.speed_factor,
+                "load_factor": s.load_factor,
+                "temperature_change": s.temperature_change,
+            }
+            for s in result.scenarios
+        ],
+        "designs": [
+            {
+                "name": name,
+                "x": result.designs[k].tolist(),
+                "robust": bool(result.robust()[k]),
+                "reference": result.reference[k].values,
+                "scenarios": [
+                    {"scenario": s.name, **e.values, "status": e.status, "passes": bool(p)}
+                    for s, e, p in zip(result.scenarios, result.evaluations[k], result.passes()[k], strict=True)
+                ],
+                "deviation_min_film_thickness_percent": result.deviation("min_film_thickness")[k].tolist(),
+                "deviation_max_pressure_percent": result.deviation("max_pressure")[k].tolist(),
+            }
+            for k, name in enumerate(result.names)
+        ],
+    }
+
+
+def _front_table(result: SearchResult) -> Table:
+    names = result.problem.parametrisation.names
+    rows, marks = [], []
+    for i in result.pareto:
+        e = result.evaluations[int(i)]
+        rows.append(
+            [
+                *(f"{v:.3f}" for v in e.x),
+                fmt(e.values["min_film_thickness"], 1e6),
+                fmt(e.values["max_pressure"], 1e-6),
+                fmt(e.values["power_loss"], 1e-3),
+                fmt(e.values["load_centre_offset"], 1e3),
+                "knee" if int(i) == result.knee else "",
+            ]
+        )
+        marks.append(["pass" if int(i) == result.knee else ""] * (len(names) + 5))
+    headers = [*names, "h_min [µm]", "p_max [MPa]", "power [kW]", "support pt [mm]", ""]
+    return Table(headers, rows, f"Non-dominated designs ({len(result.pareto)} of {len(result.evaluations)})", marks)
+
+
+def _robustness_table(result: RobustnessResult) -> Table:
+    headers = ["design", "operating point", *(s.name for s in result.scenarios), "verdict"]
+    rows, marks = [], []
+    passes, robust = result.passes(), result.robust()
+    for k, name in enumerate(result.names):
+        rows.append(
+            [
+                name,
+                fmt(result.reference[k].values["min_film_thickness"], 1e6),
+                *(fmt(e.values["min_film_thickness"], 1e6) for e in result.evaluations[k]),
+                "robust" if robust[k] else "FAILS",
+            ]
+        )
+        marks.append(["", "", *("pass" if p else "fail" for p in passes[k]), "pass" if robust[k] else "fail"])
+    return Table(headers, rows, f"h_min [µm] in each scenario (limit {result.limit * 1e6:.0f} µm)", marks)
+
+
+class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
+    key = "design"
+    title = "Slope-boring design"
+    needs = ("bearing",)
+    parallel = True
+    verbs = (
+        Verb(
+            ("design", "robustness"),
+            "The search's chosen designs (knee or front) under the speed, load and temperature scenarios.",
+            options={"task": "robustness"},
+        ),
+        Verb(("design", "sweep"), "One search per misalignment ratio of [design.sweep].", options={"task": "sweep"}),
+    )
+
+    def schema(self) -> type[DesignSection]:
+        from shaftline.design.case import DesignSection
+
+        return DesignSection
+
+    def build(self, section: DesignSection, context: BuildContext) -> DesignStudy:
+        from shaftline.design.case import build_study
+
+        return build_study(section, context)
+
+    def solve(self, study: DesignStudy, progress: Progress = no_progress, **options: Any) -> DesignResult:
+        from shaftline.design.study import solve_design
+
+        return solve_design(
+            study,
+            progress,
+            task=options.get("task", "all"),
+            workers=options.get("workers"),
+            scheduler=options.get("scheduler"),
+        )
+
+    def commands(self) -> Sequence[Command]:
+        return (Command(("design", "slopes"), slopes),)
+
+    def to_json(self, result: DesignResult) -> dict[str, Any]:
+        study = result.study
+        out: dict[str, Any] = {
+            "units": UNITS,
+            "shaft": study.shaft,
+            "misalignment_ratio": study.misalignment_ratio,
+            "variables": result.problem.parametrisation.names,
+            "lower": result.problem.parametrisation.lower.tolist(),
+            "upper": result.problem.parametrisation.upper.tolist(),
+            "objectives": list(result.problem.objectives),
+        }
+        found = result.search
+        if found is not None:
+            out["search"] = {
+                "algorithm": found.algorithm,
+                "seed": found.seed,
+                "evaluations": len(found.evaluations),
+                "completed": found.completed,
+                "pareto": _design_rows(found, found.pareto),
+                "knee": _design_rows(found, [found.knee])[0] if found.knee is not None else None,
+            }
+        if result.robustness is not None:
+            out["robustness"] = _robustness_json(result.robustness)
+        if result.sweep is not None:
+            out["sweep"] = [
+                {"psi_x": ratio, "pareto": _design_rows(s, s.pareto)}
+                for ratio, s in zip(result.sweep.ratios, result.sweep.searches, strict=True)
+            ]
+        return out
+
+    def findings(self, result: DesignResult) -> list[Finding]:
+        out = []
+        found = result.search
+        if found is not None and not found.pareto.size:
+            out.append(
+                Finding("the design search found no acceptable design (every one failed or broke a constraint).")
+            )
+        if result.robustness is not None and not result.robustness.robust().any():
+            out.append(
+                Finding(
+                    f"no chosen design keeps h_min >= {result.robustness.limit * 1e6:.0f} µm in every robustness "
+                    "scenario.",
+                    criterion=True,
+                )
+            )
+        return out
+
+    def _knee_text(self, result: DesignResult) -> Paragraph:
+        found = result.search
+        assert found is not None
+        if found.knee is None:
+            return Paragraph(f"{len(found.evaluations)} designs evaluated; {len(found.pareto)} non-dominated.")
+        e = found.evaluations[found.knee]
+        names = result.problem.parametrisation.names
+        design = ", ".join(f"{n} {v:.3f}" for n, v in zip(names, e.x, strict=True))
+        return Paragraph(
+            f"{len(found.evaluations)} designs evaluated ({found.algorithm}, seed {found.seed}); "
+            f"{len(found.pareto)} non-dominated. Knee: {design} — h_min {e.values['min_film_thickness'] * 1e6:.1f} µm, "
+            f"p_max {e.values['max_pressure'] / 1e6:.3f} MPa, power {e.values['power_loss'] / 1e3:.3f} kW."
+        )
+
+    def summary(self, result: DesignResult) -> list[Block]:
+        blocks: list[Block] = []
+        if result.search is not None:
+            blocks.append(self._knee_text(result))
+        if result.robustness is not None:
+            robust = result.robustness.robust()
+            blocks.append(
+                Paragraph(
+                    f"Robustness: {int(robust.sum())} of {robust.size} chosen design(s) keep h_min >= "
+                    f"{result.robustness.limit * 1e6:.0f} µm in all {len(result.robustness.scenarios)} scenarios.",
+                    "text" if robust.any() else "warn",
+                )
+            )
+        if result.sweep is not None:
+            blocks.append(
+                Paragraph(
+                    "Misalignment sweep: "
+                    + "; ".join(
+                        f"psi_x {r:g}: {len(s.pareto)} non-dominated"
+                        for r, s in zip(result.sweep.ratios, result.sweep.searches, strict=True)
+                    )
+                    + "."
+                )
+            )
+        return blocks
+
+    def report(self, result: DesignResult) -> list[Block]:
+        from shaftline.design import figures
+
+        study = result.study
+        blocks: list[Block] = [
+            Paragraph(
+                f"Bore of {result.problem.parametrisation.segments} slope segment(s) searched for "
+                + ", ".join(result.problem.objectives)
+                + f" at the operating point of [bearing], {study.shaft} shaft, psi_x = {study.misalignment_ratio:.3g} "
+                "(slopes as shares of 2c/L, knuckles as shares of L from the aft edge)."
+            )
+        ]
+        found = result.search
+        if found is not None:
+            blocks += [
+                self._knee_text(result),
+                _front_table(found),
+                Figure("design_pareto.png", figures.pareto_front, (found,), caption="Pareto front"),
+                Figure(
+                    "design_maps.png",
+                    figures.design_maps(result.problem.parametrisation.variables),
+                    (found,),
+                    caption="design maps",
+                ),
+            ]
+        if result.robustness is not None:
+            blocks += [
+                Heading("Robustness"),
+                _robustness_table(result.robustness),
+                Figure(
+                    "design_robustness.png",
+                    figures.robustness_heatmap,
+                    (result.robustness,),
+                    caption="robustness",
+                ),
+            ]
+        if result.sweep is not None:
+            blocks.append(Heading("Misalignment sweep"))
+            for ratio, s in zip(result.sweep.ratios, result.sweep.searches, strict=True):
+                table = _front_table(s)
+                title = f"psi_x = {ratio:g}: " + (table.title or "")
+                blocks.append(Table(table.headers, table.rows, title, table.marks))
+        return blocks
+
+
+def slopes(
+    case_file: CaseArgument,
+    generations: Annotated[int | None, typer.Option("--generations", help="Generations of the search.")] = None,
+    population: Annotated[int | None, typer.Option("--population", help="Designs per generation.")] = None,
+    algorithm: Annotated[str | None, typer.Option("--algorithm", help="nsga2, spea2, smsemoa or agemoea.")] = None,
+    seed: Annotated[int | None, typer.Option("--seed", help="Random seed of the search.")] = None,
+    json_path: JsonOption = None,
+    out: OutOption = None,
+    strict: StrictOption = False,
+    workers: WorkersOption = None,
+    scheduler: SchedulerOption = None,
+) -> None:
+    """Search the slope-bored bore of the case's bearing (pymoo): every design, the non-dominated set and
+    its knee (the robustness of the knee: `design robustness` or `run`)."""
+    from shaftline.commandline import input_errors, parallel_options, run_cases
+
+    overrides = {
+        f"design.search.{name}": value
+        for name, value in (
+            ("generations", generations),
+            ("population", population),
+            ("algorithm", algorithm),
+            ("seed", seed),
+        )
+        if value is not None
+    }
+    with input_errors():
+        options = parallel_options(["design"], workers, scheduler)
+    options.setdefault("design", {})["task"] = "slopes"
+    run_cases(Path(case_file), json_path, out, only=["design"], options=options, overrides=overrides, strict=strict)
+
+
+CAPABILITY = SlopeDesign()

@@ -1,0 +1,209 @@
+"""The ``[design]`` table of a case file: the search for a slope-bored bore of the case's
+``[bearing]`` (its base case is the operating point held during the search), its robustness
+scenarios and the misalignment sweep.
+
+Layout::
+
+    [design]                          segments, bounds, objectives, shaft model
+    [[design.constraints]]            quantity, comparison, limit
+    [design.search]                   algorithm, population, generations, seed
+    [design.robustness]               which designs, h_min limit, scenarios
+    [[design.robustness.scenarios]]   name, speed_factor, load_factor, temperature_change
+    [design.sweep]                    misalignment ratios
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Annotated, Literal
+
+from pydantic import Field, model_validator
+
+from shaftline.cases.types import (
+    Number,
+    Plausible,
+    PositiveNumber,
+    Quantity,
+    Section,
+    field_error,
+)
+from shaftline.errors import InputError, located
+from shaftline.registry import BuildContext
+
+if TYPE_CHECKING:
+    from shaftline.design.study import DesignStudy
+
+ObjectiveName = Literal["min_film_thickness", "max_pressure", "power_loss", "side_leakage", "support_offset"]
+ShaftModel = Literal["linear", "bent"]
+RobustDesigns = Literal["knee", "pareto", "none"]
+SLOPE_SHARE = Plausible(
+    -3.0,
+    3.0,
+    "seed 004 bounds slopes to 0-0.6 of 2c/L (Table 4-8); 1 is a bore rising a full clearance over the "
+    "bearing, 3 three times that (engineering judgement); a share written in % (30 for 0.3) is far outside",
+)
+_FILM_LIMIT = (
+    "class values of the smallest film are some tens of µm (seed 004 quotes Bureau Veritas' 30 µm); 0.5 mm is "
+    "beyond any stern-tube clearance, a limit in µm written as m is far above (engineering judgement)"
+)
+
+
+class ConstraintSection(Section):
+    """A limit a design must meet to count (e.g. h_min >= 30 µm)."""
+
+    quantity: ObjectiveName
+    """The quantity: min_film_thickness (m), max_pressure (Pa), power_loss (W), side_leakage (m^3/s) or
+    support_offset (m)."""
+    comparison: Literal[">=", "<="]
+    """value <comparison> limit is met."""
+    limit: Number
+    """Limit in SI units (m, Pa, W, m^3/s)."""
+
+
+class SearchSection(Section):
+    """The multi-objective search (pymoo)."""
+
+    algorithm: Literal["nsga2", "spea2", "smsemoa", "agemoea"] = "nsga2"
+    """pymoo algorithm (seed 004: MATLAB's gamultiobj, a controlled-elitist NSGA-II)."""
+    population: Annotated[int, Field(ge=4, le=10000)] = 40
+    """Designs per generation (seed 004: 40)."""
+    generations: Annotated[int, Field(ge=1, le=10000)] = 40
+    """Generations (seed 004: 40)."""
+    seed: Annotated[int, Field(ge=0)] = 1
+    """Random seed: the same seed gives the same designs."""
+
+
+class ScenarioSection(Section):
+    """A deviation from the operating point."""
+
+    name: str
+    """Label."""
+    speed_factor: PositiveNumber = 1.0
+    """Multiplier of the shaft speed."""
+    load_factor: PositiveNumber = 1.0
+    """Multiplier of the load."""
+    temperature_change: Annotated[float, Quantity("temperature_difference", ge=-100, le=100)] = 0.0
+    """Change of the oil's effective temperature (viscosity from the lubricant)."""
+
+
+class RobustnessSection(Section):
+    """The chosen designs under speed, load and oil-temperature deviations."""
+
+    designs: RobustDesigns = "knee"
+    """Which designs: the knee of the front, the whole front, or none."""
+    min_film: Annotated[float, Quantity("length", gt=0), Plausible(1e-7, 5e-4, _FILM_LIMIT)] = 30e-6
+    """Smallest film a design must keep in every scenario (Bureau Veritas' 30 µm, quoted by seed 004)."""
+    scenarios: list[ScenarioSection] | None = None
+    """Scenarios (default: seed 004's, +20 %/-30 % speed, +50 %/-50 %/+20 % load, +10/+20 degC)."""
+
+
+class SweepSection(Section):
+    """One search per misalignment ratio (seed 004 Sect. 5.2)."""
+
+    ratios: Annotated[list[Annotated[Number, Plausible(-3.0, 3.0, "psi_x of seed 004: 0.1-0.6")]], Field(min_length=1)]
+    """psi_x values (journal tilt over 2c/L), e.g. [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]."""
+
+
+class DesignSection(Section):
+    """A slope-bored bore for the case's bearing, searched for the best film (seed 004 Sect. 4.4-4.5)."""
+
+    segments: Annotated[int, Field(ge=1, le=10)] = 2
+    """Slope segments of the bore (1: a single slope, 2: the seed's double slope)."""
+    slope_bounds: list[tuple[Annotated[Number, SLOPE_SHARE], Annotated[Number, SLOPE_SHARE]]] | None = None
+    """[lower, upper] slope of each segment aft to forward, shares of 2c/L (default: seed 004 Table 4-8 for two
+    segments, [0, 0.6] otherwise)."""
+    knuckle_bounds: list[tuple[Number, Number]] | None = None
+    """[lower, upper] position of each knuckle aft to forward, shares of L (default [0.1, 0.9]; the seed's 0-0.5
+    is broken by its own optima)."""
+    objectives: Annotated[list[ObjectiveName], Field(min_length=1)] = ["min_film_thickness", "max_pressure"]
+    """What to rank by: h_min is maximised, the others minimised (seed 004: h_min and p_max)."""
+    shaft: ShaftModel = "linear"
+    """The journal held during the search: linear (tilted by the bearing's misalignment) or bent (seed 004's local
+    shaft model, Table 4-5, with the same chord)."""
+    constraints: list[ConstraintSection] = []
+    """Limits a design must meet."""
+    search: SearchSection = SearchSection()
+    """The search."""
+    robustness: RobustnessSection = RobustnessSection()
+    """Robustness of the chosen designs."""
+    sweep: SweepSection | None = None
+    """A search per misalignment ratio."""
+
+    @model_validator(mode="after")
+    def _bounds(self) -> DesignSection:
+        if self.slope_bounds is not None and len(self.slope_bounds) != self.segments:
+            raise field_error("slope_bounds", len(self.slope_bounds), f"{self.segments} [lower, upper] pairs")
+        if self.knuckle_bounds is not None and len(self.knuckle_bounds) != self.segments - 1:
+            raise field_error("knuckle_bounds", len(self.knuckle_bounds), f"{self.segments - 1} [lower, upper] pairs")
+        names = [s.name for s in self.robustness.scenarios or []]
+        for k, name in enumerate(names):
+            if name in names[:k]:
+                raise field_error(f"robustness.scenarios[{k}].name", name, "a name not used by another scenario")
+        for k, name in enumerate(self.objectives):
+            if name in self.objectives[:k]:
+                raise field_error(f"objectives[{k}]", name, "an objective not given twice")
+        return self
+
+
+def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
+    """The design study in SI domain objects, on the base case of the case's ``[bearing]``."""
+    from shaftline.design.bore import SlopeParametrisation
+    from shaftline.design.problem import Constraint, SlopeDesignProblem
+    from shaftline.design.robustness import SEED_SCENARIOS, Scenario
+    from shaftline.design.study import DesignStudy
+    from shaftline.film.problem import BearingProblem
+
+    bearing = context.studies["bearing"].cases[0]  # [bearing] is built first (needs)
+    if bearing.geometry.bore:
+        raise InputError("bearing.bore", "given", "", "no bore in [bearing]: [design] searches the bore", in_file=True)
+    with located(""):
+        parametrisation = SlopeParametrisation(
+            section.segments,
+            tuple(tuple(b) for b in section.slope_bounds) if section.slope_bounds is not None else None,  # type: ignore[misc]
+            tuple(tuple(b) for b in section.knuckle_bounds) if section.knuckle_bounds is not None else None,  # type: ignore[misc]
+        )
+    constraints = []
+    for k, c in enumerate(section.constraints):
+        with located(f"constraints[{k}]"):
+            constraints.append(Constraint(c.quantity, c.comparison, c.limit))
+    problem = SlopeDesignProblem(
+        BearingProblem(bearing.geometry, bearing.operating, bearing.options),
+        load_y=bearing.load_y,
+        load_z=bearing.load_z,
+        tilt_y=bearing.tilt_y,
+        tilt_z=bearing.tilt_z,
+        parametrisation=parametrisation,
+        objectives=tuple(section.objectives),
+        constraints=tuple(constraints),
+    )
+    scenarios = (
+        SEED_SCENARIOS
+        if section.robustness.scenarios is None
+        else tuple(
+            Scenario(s.name, s.speed_factor, s.load_factor, s.temperature_change) for s in section.robustness.scenarios
+        )
+    )
+    uses_temperature = section.robustness.designs != "none" and any(s.temperature_change for s in scenarios)
+    if uses_temperature and (bearing.lubricant is None or bearing.temperature is None):
+        raise InputError(
+            "design.robustness.scenarios",
+            "a temperature change",
+            "",
+            "a [bearing.lubricant] with a preset or two-point oil and its temperature (its viscosity must follow "
+            "temperature), or scenarios without temperature_change",
+            in_file=True,
+        )
+    search = section.search
+    return DesignStudy(
+        problem=problem,
+        shaft=section.shaft,
+        algorithm=search.algorithm,
+        population=search.population,
+        generations=search.generations,
+        seed=search.seed,
+        robust_designs=section.robustness.designs,
+        min_film=section.robustness.min_film,
+        scenarios=scenarios,
+        lubricant=bearing.lubricant,
+        temperature=bearing.temperature,
+        ratios=tuple(section.sweep.ratios) if section.sweep is not None else (),
+    )

@@ -1,0 +1,97 @@
+"""Figures of a slope-boring design study: the Pareto front coloured by power loss with the
+knee, the design maps (each variable against h_min, seed 004 Fig. 5-41 ff.) and the robustness
+table as a heat map.
+
+Each function draws into the axes it is given (``ax=``) and returns them; without axes it
+makes a pyplot figure of its own (see :mod:`shaftline.report.plotting`).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from shaftline.report.plotting import FigureFunction, figure_function, plain
+
+if TYPE_CHECKING:
+    from shaftline.design.robustness import RobustnessResult
+    from shaftline.design.search import SearchResult
+
+
+def _values(result: SearchResult, name: str) -> np.ndarray:
+    return np.array([e.values[name] for e in result.evaluations])
+
+
+@figure_function(size=(8.5, 5.5))
+def pareto_front(result: SearchResult, *, ax: Any) -> Any:
+    """Every acceptable design (grey) and the non-dominated ones coloured by power loss, in the
+    seed's plane: h_min against p_max; the knee starred."""
+    ok = np.array([e.ok for e in result.evaluations])
+    hmin = _values(result, "min_film_thickness") * 1e6
+    pmax = _values(result, "max_pressure") / 1e6
+    power = _values(result, "power_loss") / 1e3
+    ax.scatter(hmin[ok], pmax[ok], s=8, color="0.75", label=f"designs evaluated ({ok.sum()})")
+    front = result.pareto
+    if front.size:
+        points = ax.scatter(hmin[front], pmax[front], c=power[front], s=30, cmap="viridis", label="non-dominated")
+        ax.figure.colorbar(points, ax=ax, label="power loss [kW]")
+    if result.knee is not None:
+        ax.plot(hmin[result.knee], pmax[result.knee], "r*", ms=16, label="knee")
+    ax.set_xlabel("smallest film h_min [µm]")
+    ax.set_ylabel("largest pressure p_max [MPa]")
+    ax.set_title(f"Pareto front ({result.algorithm}, {len(result.evaluations)} evaluations, seed {result.seed})")
+    ax.legend(fontsize=8)
+    return ax
+
+
+def design_maps(variables: int) -> FigureFunction:
+    """The figure function of the design maps of a search with ``variables`` design variables:
+    each variable against h_min, coloured by p_max (one panel per variable)."""
+    return FigureFunction(_design_maps, (1, variables), (4.0 * variables, 4.0), False)
+
+
+def _design_maps(result: SearchResult, *, ax: Any) -> Any:
+    names = result.problem.parametrisation.names
+    ok = np.array([e.ok for e in result.evaluations])
+    x = np.array([e.x for e in result.evaluations])
+    hmin = _values(result, "min_film_thickness") * 1e6
+    pmax = _values(result, "max_pressure") / 1e6
+    axes = np.atleast_1d(ax)
+    points = None
+    for k, (axis, name) in enumerate(zip(axes, names, strict=False)):
+        points = axis.scatter(x[ok, k], hmin[ok], c=pmax[ok], s=8, cmap="inferno_r")
+        axis.set_xlabel(name + (" [× 2c/L]" if name.startswith("slope") else " [× L]"))
+        axis.set_ylabel("h_min [µm]")
+    if points is not None:
+        axes[-1].figure.colorbar(points, ax=axes[-1], label="p_max [MPa]")
+    return ax
+
+
+@figure_function(size=(10, 4.5))
+def robustness_heatmap(result: RobustnessResult, *, ax: Any) -> Any:
+    """h_min of each design in each scenario (µm), the cells below the limit framed in red."""
+    names = ["operating point", *(s.name for s in result.scenarios)]
+    values = np.array(
+        [
+            [result.reference[d].values["min_film_thickness"]] + [e.values["min_film_thickness"] for e in row]
+            for d, row in enumerate(result.evaluations)
+        ]
+    )
+    image = ax.imshow(values * 1e6, cmap="RdYlGn", aspect="auto")
+    ax.figure.colorbar(image, ax=ax, label="h_min [µm]")
+    for i in range(values.shape[0]):
+        for j in range(values.shape[1]):
+            ax.text(j, i, f"{values[i, j] * 1e6:.0f}", ha="center", va="center", fontsize=8)
+            if not values[i, j] >= result.limit:
+                ax.add_patch(_frame(ax, j, i))
+    ax.set_xticks(np.arange(len(names)), [plain(n) for n in names], rotation=30, ha="right", fontsize=8)
+    ax.set_yticks(np.arange(len(result.names)), [plain(n) for n in result.names], fontsize=8)
+    ax.set_title(f"Robustness: h_min in each scenario (limit {result.limit * 1e6:.0f} µm)")
+    return ax
+
+
+def _frame(ax: Any, column: int, row: int) -> Any:
+    from matplotlib.patches import Rectangle
+
+    return Rectangle((column - 0.5, row - 0.5), 1, 1, fill=False, edgecolor="red", linewidth=2)

@@ -1,0 +1,175 @@
+"""A slope-boring design study: the search, the robustness of the chosen designs and the
+misalignment sweep, as ``[design]`` in a case file asks (notebooks can build one directly).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from typing import Literal
+
+import numpy as np
+
+from shaftline.design.problem import SlopeDesignProblem
+from shaftline.design.robustness import RobustnessResult, Scenario, robustness
+from shaftline.design.search import SearchProgress, SearchResult, search
+from shaftline.design.sweep import SweepResult, misalignment_sweep
+from shaftline.lubricants import Lubricant
+
+__all__ = ["TASKS", "DesignResult", "DesignStudy", "solve_design"]
+
+#: What a run does: the search (with the robustness of its chosen designs and the sweep, when
+#: asked), or only one of the three.
+TASKS = ("all", "slopes", "robustness", "sweep")
+
+
+@dataclass(frozen=True, eq=False)
+class DesignStudy:
+    """A design problem and what to do with it.
+
+    Attributes
+    ----------
+    problem : SlopeDesignProblem
+        At the case's operating point, with the linear shaft's tilt.
+    shaft : "linear" or "bent"
+        The journal: the problem's tilt, or seed 004's local shaft model with the same chord.
+    algorithm, population, generations, seed
+        The search (:func:`shaftline.design.search.search`).
+    robust_designs : "knee", "pareto" or "none"
+    min_film : float
+        The h_min limit of the robustness verdict, m.
+    scenarios : tuple of Scenario
+    lubricant, temperature
+        The case's lubricant and film temperature (degC), for temperature scenarios.
+    ratios : tuple of float
+        psi_x of the misalignment sweep (empty: none).
+    """
+
+    problem: SlopeDesignProblem
+    shaft: Literal["linear", "bent"]
+    algorithm: str
+    population: int
+    generations: int
+    seed: int
+    robust_designs: Literal["knee", "pareto", "none"]
+    min_film: float
+    scenarios: tuple[Scenario, ...]
+    lubricant: Lubricant | None
+    temperature: float | None
+    ratios: tuple[float, ...] = ()
+
+    @property
+    def misalignment_ratio(self) -> float:
+        """psi_x of the case: the journal tilt over 2c/L."""
+        g = self.problem.film.geometry
+        return self.problem.tilt_y * g.length / (2.0 * g.radial_clearance)
+
+    def problem_at(self) -> Callable[[float], SlopeDesignProblem]:
+        """``psi_x -> problem`` with the study's shaft model."""
+        from shaftline.design.shaft_models import bent_shaft, linear_shaft
+        from shaftline.shaft.local import seed004_local_model
+
+        if self.shaft == "bent":
+            model = replace(seed004_local_model(), bearing_length=self.problem.film.geometry.length)
+            return bent_shaft(self.problem, model)
+        return linear_shaft(self.problem)
+
+
+@dataclass(frozen=True, eq=False)
+class DesignResult:
+    """What a design study found.
+
+    Attributes
+    ----------
+    study : DesignStudy
+    problem : SlopeDesignProblem
+        The problem searched (with the shaft model's journal).
+    search : SearchResult or None
+    robustness : RobustnessResult or None
+    sweep : SweepResult or None
+    """
+
+    study: DesignStudy
+    problem: SlopeDesignProblem
+    search: SearchResult | None
+    robustness: RobustnessResult | None
+    sweep: SweepResult | None
+
+
+def solve_design(
+    study: DesignStudy,
+    progress: Callable[[str], None] | None = None,
+    task: str = "all",
+    workers: int | None = None,
+    scheduler: str | None = None,
+) -> DesignResult:
+    """Run the search, the robustness of its chosen designs and the sweep (``task="all"``), or one.
+
+    ``"robustness"`` needs the designs of a search: it runs the search first as ``"all"`` does,
+    without the sweep; ``"sweep"`` runs only the sweep.
+    """
+    if task not in TASKS:
+        raise ValueError(f"task {task!r}: one of {TASKS}")
+    step = progress or (lambda _: None)
+    problem = study.problem_at()(study.misalignment_ratio)
+    found = tuned = swept = None
+    if task in ("all", "slopes", "robustness"):
+
+        def generation(state: SearchProgress) -> None:
+            eta = f", about {state.remaining:.0f} s left" if math.isfinite(state.remaining) else ""
+            step(
+                f"design search: generation {state.generation}/{state.generations}, {state.evaluations} designs, "
+                f"best h_min {state.best_min_film * 1e6:.1f} µm{eta}"
+            )
+
+        found = search(
+            problem,
+            study.algorithm,
+            study.population,
+            study.generations,
+            study.seed,
+            progress=generation,
+            workers=workers,
+            scheduler=scheduler,
+        )
+    if found is not None and task in ("all", "robustness") and study.robust_designs != "none":
+        chosen = _chosen(found, study.robust_designs)
+        if chosen.size:
+            step(f"robustness of {chosen.size} design(s) in {len(study.scenarios)} scenarios")
+            designs = np.array([found.evaluations[i].x for i in chosen])
+            names = [("knee" if i == found.knee else f"front {k + 1}") for k, i in enumerate(chosen)]
+            tuned = robustness(
+                problem,
+                designs,
+                names=names,
+                scenarios=study.scenarios,
+                lubricant=study.lubricant,
+                temperature=study.temperature,
+                limit=study.min_film,
+                workers=workers,
+                scheduler=scheduler,
+            )
+    if study.ratios and task in ("all", "sweep"):
+
+        def told(ratio: float, state: SearchProgress) -> None:
+            step(f"misalignment sweep: psi_x = {ratio:g}, generation {state.generation}/{state.generations}")
+
+        swept = misalignment_sweep(
+            study.problem_at(),
+            study.ratios,
+            progress=told,
+            algorithm=study.algorithm,
+            population=study.population,
+            generations=study.generations,
+            seed=study.seed,
+            workers=workers,
+            scheduler=scheduler,
+        )
+    return DesignResult(study, problem, found, tuned, swept)
+
+
+def _chosen(found: SearchResult, which: str) -> np.ndarray:
+    if which == "pareto":
+        return found.pareto
+    return np.array([found.knee], dtype=int) if found.knee is not None else found.pareto[:1]

@@ -1,0 +1,132 @@
+"""Slope-boring design through the case file and the command line (issue 12): `design slopes`,
+`design robustness`, `design sweep`, the JSON, the report and the bad inputs.
+
+The example is the seed's search (40 x 40 on 100 x 60); these runs shrink it with the command's
+own options or the case overrides to a few generations of a few designs on a 41 x 36 grid.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from shaftline.cases import load_case
+from shaftline.pipeline import results_document, run_case
+from tests.conftest import invoke
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "ntua_slope_design.toml"
+
+
+def small_case(tmp_path: Path, extra: str = "", drop: str = "") -> Path:
+    text = EXAMPLE.read_text().replace("axial_nodes = 100", "axial_nodes = 41")
+    text = text.replace("circumferential_nodes = 60", "circumferential_nodes = 36")
+    text = text.replace("population = 40", "population = 6").replace("generations = 40", "generations = 2")
+    if drop:
+        text = text.replace(drop, "")
+    path = tmp_path / "design.toml"
+    path.write_text(text + extra)
+    return path
+
+
+def test_design_slopes_command(tmp_path):
+    """The search alone with its options on the command line: every design, the front and its knee in
+    the JSON, the front figure and the design maps in the report, nothing of [bearing] solved."""
+    out = tmp_path / "out"
+    result = invoke(
+        "design", "slopes", str(small_case(tmp_path)), "--generations", "3", "--population", "8", "--seed", "4",
+        "--out", str(out), "--json", "-",
+    )  # fmt: skip
+    assert result.exit_code == 0, result.stderr
+    document = json.loads(result.stdout)
+    assert "bearing" not in document  # [bearing] was built for [design], not solved
+    design = document["design"]
+    assert design["search"]["evaluations"] == 24 and design["search"]["seed"] == 4
+    assert design["variables"] == ["slope_1", "slope_2", "knuckle_1"]
+    assert "robustness" not in design
+    knee = design["search"]["knee"]
+    assert knee is not None and knee["index"] in [row["index"] for row in design["search"]["pareto"]]
+    html = (out / "report.html").read_text()
+    assert "Slope-boring design" in html and "Non-dominated designs" in html
+    for name in ("design_pareto", "design_maps"):
+        assert (out / "figures" / f"{name}.png").stat().st_size > 10_000
+
+
+def test_run_does_search_and_robustness(tmp_path):
+    """`run` on the design case: the bearing film, the search and the knee's robustness in the seed's
+    seven scenarios, with deviations in % and the verdict."""
+    case = load_case(small_case(tmp_path))
+    result = run_case(case, options={"design": {"workers": 1}})
+    document = results_document(result)
+    robustness = document["design"]["robustness"]
+    (knee,) = robustness["designs"]
+    assert knee["name"] == "knee" and len(knee["scenarios"]) == 7
+    hmin = {s["scenario"]: s["min_film_thickness"] for s in knee["scenarios"]}
+    assert hmin["+20 degC"] < hmin["+10 degC"] < knee["reference"]["min_film_thickness"] < hmin["-50 % load"]
+    assert knee["robust"] == all(s["passes"] for s in knee["scenarios"])
+    assert document["bearing"]["cases"][0]["sommerfeld_number"] == pytest.approx(0.0617644, rel=1e-4)
+
+
+def test_design_sweep_verb(tmp_path):
+    path = small_case(tmp_path, extra="\n[design.sweep]\nratios = [0.2, 0.4]\n")
+    result = invoke("design", "sweep", str(path), "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    design = json.loads(result.stdout)["design"]
+    assert [s["psi_x"] for s in design["sweep"]] == [0.2, 0.4] and "search" not in design
+
+
+def test_design_alone_builds_the_bearing_it_needs(tmp_path):
+    """`only=["design"]` (a design verb) builds [bearing] for [design] but does not hand it over
+    to be solved."""
+    case = load_case(small_case(tmp_path), only=["design"])
+    assert list(case.studies) == ["design"]
+    assert case.studies["design"].problem.film.options.axial_nodes == 41
+
+
+@pytest.mark.parametrize(
+    ("change", "field"),
+    [
+        ("slope_bounds = [[0.5, 0.1], [0.0, 0.3]]", "design.slope_bounds[0]"),
+        ("knuckle_bounds = [[0.0, 0.5]]", "design.knuckle_bounds[0]"),
+        ("knuckle_bounds = [[0.2, 0.5], [0.6, 0.8]]", "design.knuckle_bounds"),
+        ("segments = 0", "design.segments"),
+        ('objectives = ["min_film_thickness", "max_pressure", "hmin"]', "design.objectives[2]"),
+    ],
+)
+def test_bad_design_input_is_one_line(tmp_path, change, field):
+    key = change.split(" = ")[0]
+    text = small_case(tmp_path).read_text()
+    if key == "objectives":
+        text = text.replace('objectives = ["min_film_thickness", "max_pressure"]', change)
+    else:
+        text = text.replace("segments = 2", change if key == "segments" else f"segments = 2\n{change}")
+    path = tmp_path / "bad.toml"
+    path.write_text(text)
+    out = tmp_path / "out"
+    result = invoke("design", "slopes", str(path), "--out", str(out))
+    assert result.exit_code == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"error: {field}"), result.stderr
+    assert not out.exists()
+
+
+def test_design_needs_a_bearing_and_a_temperature_model(tmp_path):
+    text = small_case(tmp_path).read_text()
+    design_only = text[text.index("[design]") :]
+    path = tmp_path / "alone.toml"
+    path.write_text('[case]\nname = "x"\n\n' + design_only)
+    result = invoke("design", "slopes", str(path))
+    assert result.exit_code == 2 and "a [bearing] table for [design]" in result.stderr
+    constant = text[: text.index("[bearing.lubricant]")] + (
+        '[bearing.lubricant]\nviscosity = "0.07 Pa*s"\n\n' + text[text.index("[bearing.solver]") :]
+    )
+    path.write_text(constant)
+    result = invoke("design", "robustness", str(path))
+    assert result.exit_code == 2 and result.stderr.startswith("error: design.robustness.scenarios")
+    bored = text.replace(
+        "[bearing.operation]", "[[bearing.bore]]\nlength_fraction = 1.0\nslope_ratio = 0.3\n\n[bearing.operation]"
+    )
+    path.write_text(bored)
+    result = invoke("design", "slopes", str(path))
+    assert result.exit_code == 2 and result.stderr.startswith("error: bearing.bore = 'given'")
