@@ -223,3 +223,16 @@ def test_search_on_a_dask_cluster_gives_the_same_designs():
         remote = search(problem, population=6, generations=2, seed=5, scheduler=cluster.scheduler_address)
     assert [e.x.tolist() for e in remote.evaluations] == [e.x.tolist() for e in serial.evaluations]
     assert [e.values for e in remote.evaluations] == [e.values for e in serial.evaluations]
+
+
+def test_best_single_slope_equals_the_misalignment():
+    """Seed 004 Sect. 5.1.2 on the linear shaft: the best single slope is psi_x itself (the bore
+    parallel to the journal). h_min over single slopes peaks at 0.3 and falls symmetrically either
+    side (the film of a slope s + d and s - d differ by a mirror of the bearing about mid-length)."""
+    problem = ntua(60, 48, parametrisation=SlopeParametrisation(1, slope_bounds=((0.0, 0.6),)))
+    hmin = {
+        s: evaluate_design(problem, np.array([s])).values["min_film_thickness"] for s in (0.2, 0.28, 0.3, 0.32, 0.4)
+    }
+    assert max(hmin, key=hmin.__getitem__) == 0.3
+    assert hmin[0.28] == pytest.approx(hmin[0.32], rel=1e-6) and hmin[0.2] == pytest.approx(hmin[0.4], rel=1e-6)
+    assert hmin[0.2] < hmin[0.28] < hmin[0.3]
