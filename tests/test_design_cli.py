@@ -130,3 +130,30 @@ def test_design_needs_a_bearing_and_a_temperature_model(tmp_path):
     path.write_text(bored)
     result = invoke("design", "slopes", str(path))
     assert result.exit_code == 2 and result.stderr.startswith("error: bearing.bore = 'given'")
+
+
+def test_every_design_in_the_report_folder_and_a_resumable_store(tmp_path):
+    """`--out` gets every evaluated design (CSV and Parquet, linked from the report); `--store` keeps
+    them as the search goes, and a second run on it takes them back (the same numbers) and
+    carries on with more generations."""
+    import pandas as pd
+
+    case, out, store = small_case(tmp_path), tmp_path / "out", tmp_path / "store"
+    first = invoke("design", "slopes", str(case), "--generations", "2", "--store", str(store), "--out", str(out))
+    assert first.exit_code == 0, first.stderr
+    table = pd.read_csv(out / "data" / "design_evaluations.csv")
+    assert len(table) == 12
+    assert all(
+        status in ("ok", "contact", "not converged") or status.startswith("failed") for status in table["status"]
+    )
+    assert "data/design_evaluations.csv" in (out / "report.html").read_text()
+    assert pd.read_parquet(out / "data" / "design_evaluations.parquet").equals(
+        pd.read_parquet(store / "evaluations.parquet")
+    )
+    again = invoke("design", "slopes", str(case), "--generations", "3", "--store", str(store), "--json", "-")
+    assert again.exit_code == 0, again.stderr
+    assert json.loads(again.stdout)["design"]["search"]["evaluations"] == 18
+    stored = pd.read_parquet(store / "evaluations.parquet")
+    assert stored["min_film_thickness"][:12].tolist() == table["min_film_thickness"].tolist()
+    other = invoke("design", "slopes", str(case), "--seed", "9", "--store", str(store))
+    assert other.exit_code == 2 and "store" in other.stderr and "seed" in other.stderr

@@ -19,7 +19,7 @@ from shaftline.commandline import (
     WorkersOption,
 )
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, Verb, no_progress
-from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
+from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
     from shaftline.design.case import DesignSection
@@ -267,6 +267,16 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
             blocks += [
                 self._knee_text(result),
                 _front_table(found),
+                DataFile(
+                    "design_evaluations.csv",
+                    lambda path: found.table().to_csv(path, index=False),
+                    f"every evaluated design ({len(found.evaluations)}, CSV)",
+                ),
+                DataFile(
+                    "design_evaluations.parquet",
+                    lambda path: found.table().to_parquet(path, index=False),
+                    "the same as Parquet",
+                ),
                 Figure("design_pareto.png", figures.pareto_front, (found,), caption="Pareto front"),
                 Figure(
                     "design_maps.png",
@@ -301,6 +311,10 @@ def slopes(
     population: Annotated[int | None, typer.Option("--population", help="Designs per generation.")] = None,
     algorithm: Annotated[str | None, typer.Option("--algorithm", help="nsga2, spea2, smsemoa or agemoea.")] = None,
     seed: Annotated[int | None, typer.Option("--seed", help="Random seed of the search.")] = None,
+    store: Annotated[
+        Path | None,
+        typer.Option("--store", help="Folder keeping every evaluation as it is made; run again on it to resume."),
+    ] = None,
     json_path: JsonOption = None,
     out: OutOption = None,
     strict: StrictOption = False,
@@ -318,6 +332,7 @@ def slopes(
             ("population", population),
             ("algorithm", algorithm),
             ("seed", seed),
+            ("store", None if store is None else str(store.resolve())),
         )
         if value is not None
     }

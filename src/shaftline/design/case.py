@@ -14,6 +14,7 @@ Layout::
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field, model_validator
@@ -70,6 +71,9 @@ class SearchSection(Section):
     """Generations (seed 004: 40)."""
     seed: Annotated[int, Field(ge=0)] = 1
     """Random seed: the same seed gives the same designs."""
+    store: str | None = None
+    """Folder (relative to the case file) that keeps every evaluation as it is made, in Parquet and CSV; the same
+    search started again on it resumes where it stopped (a folder of another search is refused)."""
 
 
 class ScenarioSection(Section):
@@ -206,4 +210,5 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         lubricant=bearing.lubricant,
         temperature=bearing.temperature,
         ratios=tuple(section.sweep.ratios) if section.sweep is not None else (),
+        store=None if search.store is None else str(context.base_dir / Path(search.store).expanduser()),
     )

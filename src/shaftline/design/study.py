@@ -44,6 +44,9 @@ class DesignStudy:
         The case's lubricant and film temperature (degC), for temperature scenarios.
     ratios : tuple of float
         psi_x of the misalignment sweep (empty: none).
+    store : str or None
+        Folder that keeps every evaluation of the search (and resumes it); the sweep's searches
+        go into its sub-folders.
     """
 
     problem: SlopeDesignProblem
@@ -58,6 +61,7 @@ class DesignStudy:
     lubricant: Lubricant | None
     temperature: float | None
     ratios: tuple[float, ...] = ()
+    store: str | None = None
 
     @property
     def misalignment_ratio(self) -> float:
@@ -132,6 +136,7 @@ def solve_design(
             progress=generation,
             workers=workers,
             scheduler=scheduler,
+            store=study.store,
         )
     if found is not None and task in ("all", "robustness") and study.robust_designs != "none":
         chosen = _chosen(found, study.robust_designs)
@@ -165,6 +170,7 @@ def solve_design(
             seed=study.seed,
             workers=workers,
             scheduler=scheduler,
+            store=None if study.store is None else f"{study.store}/sweep",
         )
     return DesignResult(study, problem, found, tuned, swept)
 

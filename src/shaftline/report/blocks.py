@@ -7,8 +7,9 @@ Capabilities describe what their section shows with these blocks; only
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
 if TYPE_CHECKING:
@@ -61,6 +62,26 @@ class Preformatted:
 
 
 @dataclass(frozen=True, eq=False)
+class DataFile:
+    """A data file written into the report's ``data`` folder and linked from the page (every
+    design a search evaluated, say, too many rows for a table).
+
+    Attributes
+    ----------
+    file : str
+        File name inside ``data``.
+    write : callable
+        ``write(path)`` writes the file.
+    caption : str
+        The link's text.
+    """
+
+    file: str
+    write: Callable[[Path], None]
+    caption: str = ""
+
+
+@dataclass(frozen=True, eq=False)
 class Figure:
     """A figure drawn by a figure function of the capability.
 
@@ -87,7 +108,7 @@ class Figure:
     caption: str = ""
 
 
-Block = Paragraph | Heading | Table | Figure | Details | Preformatted
+Block = Paragraph | Heading | Table | Figure | Details | Preformatted | DataFile
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,17 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from shaftline.report.blocks import Details, Figure, Heading, Paragraph, Preformatted, Section, Table, is_number
+from shaftline.report.blocks import (
+    DataFile,
+    Details,
+    Figure,
+    Heading,
+    Paragraph,
+    Preformatted,
+    Section,
+    Table,
+    is_number,
+)
 
 
 def svg_name(file: str) -> str:
@@ -40,6 +50,7 @@ _KINDS: tuple[tuple[type, str], ...] = (
     (Figure, "figure"),
     (Details, "details"),
     (Preformatted, "preformatted"),
+    (DataFile, "data"),
 )
 
 
@@ -57,6 +68,16 @@ def _figures(blocks: Sequence[object]) -> list[Figure]:
             out.append(block)
         elif isinstance(block, Details):
             out += _figures(block.blocks)
+    return out
+
+
+def _data_files(blocks: Sequence[object]) -> list[DataFile]:
+    out: list[DataFile] = []
+    for block in blocks:
+        if isinstance(block, DataFile):
+            out.append(block)
+        elif isinstance(block, Details):
+            out += _data_files(block.blocks)
     return out
 
 
@@ -115,6 +136,13 @@ def write_report(
         if progress is not None:
             progress(f"drawing figure {k + 1} of {len(blocks)}")
         draw_figure(block, figures / block.file)
+    files = [block for section in sections for block in _data_files(section.blocks)]
+    if files:
+        (folder / "data").mkdir(parents=True, exist_ok=True)
+    for data in files:
+        if progress is not None:
+            progress(f"writing {data.file}")
+        data.write(folder / "data" / data.file)
     path = folder / "report.html"
     page = render(title, description, source, sections, version, source_label, created)
     path.write_text(page, encoding="utf-8")
