@@ -186,6 +186,16 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
             }
         if result.robustness is not None:
             out["robustness"] = _robustness_json(result.robustness)
+        if result.profiles:
+            out["comparison"] = {
+                label: {
+                    "min_film_thickness": state.min_film_thickness,
+                    "max_pressure": state.max_pressure,
+                    "power_loss": state.power_loss,
+                    "load_centre_offset": state.load_centre_offset,
+                }
+                for label, state in result.profiles.items()
+            }
         if result.sweep is not None:
             out["sweep"] = [
                 {"psi_x": ratio, "pareto": _design_rows(s, s.pareto)}
@@ -283,6 +293,30 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                     figures.design_maps(result.problem.parametrisation.variables),
                     (found,),
                     caption="design maps",
+                ),
+            ]
+        if result.profiles:
+            rows = [
+                [
+                    label,
+                    fmt(state.min_film_thickness, 1e6),
+                    fmt(state.max_pressure, 1e-6),
+                    fmt(state.power_loss, 1e-3),
+                    fmt(state.load_centre_offset, 1e3),
+                ]
+                for label, state in result.profiles.items()
+            ]
+            blocks += [
+                Table(
+                    ["bore", "h_min [µm]", "p_max [MPa]", "power [kW]", "support pt [mm]"],
+                    rows,
+                    "The knee beside no slope and the single slope",
+                ),
+                Figure(
+                    "design_profiles.png",
+                    figures.profiles_along_bearing,
+                    (result.profiles,),
+                    caption="film and pressure along the bearing",
                 ),
             ]
         if result.robustness is not None:

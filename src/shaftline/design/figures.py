@@ -8,6 +8,7 @@ makes a pyplot figure of its own (see :mod:`shaftline.report.plotting`).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -17,6 +18,7 @@ from shaftline.report.plotting import FigureFunction, figure_function, plain
 if TYPE_CHECKING:
     from shaftline.design.robustness import RobustnessResult
     from shaftline.design.search import SearchResult
+    from shaftline.film.bearing import BearingState
 
 
 def _values(result: SearchResult, name: str) -> np.ndarray:
@@ -95,3 +97,19 @@ def _frame(ax: Any, column: int, row: int) -> Any:
     from matplotlib.patches import Rectangle
 
     return Rectangle((column - 0.5, row - 0.5), 1, 1, fill=False, edgecolor="red", linewidth=2)
+
+
+@figure_function(layout=(2, 1), size=(9, 6.5), sharex=True)
+def profiles_along_bearing(profiles: Mapping[str, BearingState], *, ax: Any) -> Any:
+    """Smallest film (top) and largest pressure (bottom) round the bore at each axial station,
+    for each bore (the chosen design beside no slope and the single slope); ``ax`` is two axes."""
+    top, bottom = ax
+    for k, (label, state) in enumerate(profiles.items()):
+        top.plot(state.z, state.film.min(axis=1) * 1e6, color=f"C{k}", label=plain(label))
+        bottom.plot(state.z, state.pressure.max(axis=1) / 1e6, color=f"C{k}")
+    top.set_ylabel("smallest film round the bore [µm]")
+    bottom.set_ylabel("largest pressure [MPa]")
+    bottom.set_xlabel("z from the aft edge [m]")
+    top.set_title("Along the bearing: the chosen design beside no slope and the single slope")
+    top.legend(fontsize=8)
+    return ax

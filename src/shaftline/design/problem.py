@@ -20,9 +20,19 @@ import numpy as np
 from shaftline.design.bore import SlopeParametrisation
 from shaftline.errors import InputError, SolverFailure, require_finite
 from shaftline.film.bearing import BearingState, JournalBearing
+from shaftline.film.geometry import BoreSegment
 from shaftline.film.problem import BearingProblem
 
-__all__ = ["CONSTRAINT_COMPARISONS", "OBJECTIVES", "Constraint", "DesignEvaluation", "Objective", "SlopeDesignProblem"]
+__all__ = [
+    "CONSTRAINT_COMPARISONS",
+    "OBJECTIVES",
+    "Constraint",
+    "DesignEvaluation",
+    "Objective",
+    "SlopeDesignProblem",
+    "evaluate_design",
+    "film_state",
+]
 
 
 @dataclass(frozen=True)
@@ -215,6 +225,21 @@ def _bearing(film: BearingProblem) -> JournalBearing:
         bearing = JournalBearing.from_problem(film)
         _BEARINGS[key] = bearing
     return bearing
+
+
+def film_state(problem: SlopeDesignProblem, bore: tuple[BoreSegment, ...]) -> BearingState | None:
+    """The film at equilibrium with ``bore`` (any bore, e.g. none or a single slope to compare
+    a design with), or None where there is none (the journal cuts the bore)."""
+    geometry = replace(problem.film.geometry, bore=bore)
+    try:
+        found = (
+            _bearing(problem.film)
+            .with_geometry(geometry)
+            .equilibrium(problem.load_y, problem.load_z, tilt_y=problem.tilt_y, tilt_z=problem.tilt_z)
+        )
+    except (InputError, SolverFailure):
+        return None
+    return found.state
 
 
 def evaluate_design(problem: SlopeDesignProblem, x: np.ndarray) -> DesignEvaluation:

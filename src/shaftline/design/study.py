@@ -6,15 +6,17 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 import numpy as np
 
-from shaftline.design.problem import SlopeDesignProblem
+from shaftline.design.problem import SlopeDesignProblem, film_state
 from shaftline.design.robustness import RobustnessResult, Scenario, robustness
 from shaftline.design.search import SearchProgress, SearchResult, search
 from shaftline.design.sweep import SweepResult, misalignment_sweep
+from shaftline.film.bearing import BearingState
+from shaftline.film.geometry import BoreSegment
 from shaftline.lubricants import Lubricant
 
 __all__ = ["TASKS", "DesignResult", "DesignStudy", "solve_design"]
@@ -92,6 +94,9 @@ class DesignResult:
     search : SearchResult or None
     robustness : RobustnessResult or None
     sweep : SweepResult or None
+    profiles : dict
+        The film (:class:`BearingState`) of the knee beside the bore with no slope and the single
+        slope psi_x, by label, for the comparison along the bearing.
     """
 
     study: DesignStudy
@@ -99,6 +104,7 @@ class DesignResult:
     search: SearchResult | None
     robustness: RobustnessResult | None
     sweep: SweepResult | None
+    profiles: dict[str, BearingState] = field(default_factory=dict)
 
 
 def solve_design(
@@ -172,7 +178,22 @@ def solve_design(
             scheduler=scheduler,
             store=None if study.store is None else f"{study.store}/sweep",
         )
-    return DesignResult(study, problem, found, tuned, swept)
+    profiles: dict[str, BearingState] = {}
+    if found is not None and found.knee is not None:
+        step("films of the knee, no slope and the single slope")
+        g = problem.film.geometry
+        knee = found.evaluations[found.knee].x
+        ratio = study.misalignment_ratio
+        bores = {
+            "no slope": (),
+            f"single slope {ratio:.3g}": (BoreSegment(1.0, ratio * 2.0 * g.radial_clearance / g.length),),
+            "knee": problem.parametrisation.bore(knee, g.length, g.radial_clearance),
+        }
+        for label, bore in bores.items():
+            state = film_state(problem, bore)
+            if state is not None:
+                profiles[label] = state
+    return DesignResult(study, problem, found, tuned, swept, profiles)
 
 
 def _chosen(found: SearchResult, which: str) -> np.ndarray:
