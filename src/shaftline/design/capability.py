@@ -287,7 +287,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                     lambda path: found.table().to_parquet(path, index=False),
                     "the same as Parquet",
                 ),
-                Figure("design_pareto.png", figures.pareto_front, (found,), caption="Pareto front"),
+                Figure("design_pareto.png", figures.pareto_front, (found, result.profiles), caption="Pareto front"),
                 Figure(
                     "design_maps.png",
                     figures.design_maps(result.problem.parametrisation.variables),

@@ -26,9 +26,10 @@ def _values(result: SearchResult, name: str) -> np.ndarray:
 
 
 @figure_function(size=(8.5, 5.5))
-def pareto_front(result: SearchResult, *, ax: Any) -> Any:
+def pareto_front(result: SearchResult, references: Mapping[str, BearingState] | None = None, *, ax: Any) -> Any:
     """Every acceptable design (grey) and the non-dominated ones coloured by power loss, in the
-    seed's plane: h_min against p_max; the knee starred."""
+    seed's plane: h_min against p_max; the knee starred, and the ``references`` (e.g. no slope,
+    the single slope) marked."""
     ok = np.array([e.ok for e in result.evaluations])
     hmin = _values(result, "min_film_thickness") * 1e6
     pmax = _values(result, "max_pressure") / 1e6
@@ -40,6 +41,11 @@ def pareto_front(result: SearchResult, *, ax: Any) -> Any:
         ax.figure.colorbar(points, ax=ax, label="power loss [kW]")
     if result.knee is not None:
         ax.plot(hmin[result.knee], pmax[result.knee], "r*", ms=16, label="knee")
+    for k, (label, state) in enumerate((references or {}).items()):
+        if label != "knee":
+            marker = "sD^v"[k % 4]
+            ax.plot(state.min_film_thickness * 1e6, state.max_pressure / 1e6, marker, color="k", mfc="none", ms=9,
+                    label=plain(label))  # fmt: skip
     ax.set_xlabel("smallest film h_min [µm]")
     ax.set_ylabel("largest pressure p_max [MPa]")
     ax.set_title(f"Pareto front ({result.algorithm}, {len(result.evaluations)} evaluations, seed {result.seed})")
