@@ -931,6 +931,7 @@ def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSup
             bore_anchor=film.bore_anchor,
             rotation=1 if film.rotation == "clockwise" else -1,
         )
-    with located(where, {"operating": "", "options": "solver"}):
+    # a rename replaces the prefix too: the operating point's fields are the film table's own
+    with located(where, {"operating": where, "options": f"{where}.solver"}):
         problem = BearingProblem(geometry, operating, options)
     return FilmSupport(bearing.name, problem, film.elements)
