@@ -158,6 +158,15 @@ def test_bad_film_input_is_one_line(tmp_path, film, field):
     assert not out.exists()
 
 
+def test_a_misspelt_key_in_a_bearings_own_film_table_gets_a_suggestion(tmp_path):
+    result = invoke("align", str(write(tmp_path, film=OWN_FILM + '  clearence = "0.45 mm"\n')))
+    assert result.exit_code == 2
+    assert result.stderr.strip() == (
+        "error: alignment.bearings[0].film.clearence = '0.45 mm': allowed no such field; "
+        "did you mean 'radial_clearance'?"
+    )
+
+
 def test_film_needs_a_clearance_and_no_spring(tmp_path):
     path = write(tmp_path, film=OWN_FILM)
     text = path.read_text()

@@ -371,6 +371,12 @@ class FilmSection(Section):
     """Shaft elements across the bearing (at least; seed 004 uses 10)."""
 
 
+# SupportSection.film names FilmSection before it is defined: pydantic validates it lazily but
+# keeps the field's annotation a ForwardRef until rebuilt, and the README tables, the ranges
+# table and the "did you mean" of a misspelt key in [alignment.bearings.film] read it.
+SupportSection.model_rebuild(force=True)
+
+
 class MinimumSpeedSection(Section):
     """The lowest speed at which every film bearing keeps a film above a limit: the lift-off
     curve h_min against speed (needs film bearings)."""
