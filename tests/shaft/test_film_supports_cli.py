@@ -143,6 +143,10 @@ def test_film_at_its_floor_is_reported_with_exit_status_3(tmp_path):
             OWN_FILM + 'radial_clearance = "0.45 mm"\ndiametral_clearance = "0.9 mm"\n',
             "alignment.bearings[0].film.radial_clearance",
         ),
+        (  # the bearing's diametral 0.9 mm given as the film's radial clearance: one bore, two clearances
+            OWN_FILM + 'radial_clearance = "0.9 mm"\n',
+            "alignment.bearings[0].film.radial_clearance = 0.0009 m: allowed 0.00045 m",
+        ),
         (  # the mass-conserving model without a feed pressure: the field is the film table's
             OWN_FILM.replace("circumferential_nodes = 36", 'circumferential_nodes = 36, cavitation = "jfo"'),
             "alignment.bearings[0].film.cavitation_pressure",

@@ -350,7 +350,7 @@ class FilmSection(Section):
     lubricant: LubricantSection
     """The lubricant (a viscosity, a preset at a temperature or a two-point oil)."""
     radial_clearance: Annotated[PositiveLength, Plausible(1e-5, 0.02, _CLEARANCE)] | None = None
-    """Radial clearance c (default: half the bearing's vertical_clearance)."""
+    """Radial clearance c (default: half the bearing's vertical_clearance; if both are given they must agree)."""
     diametral_clearance: Annotated[PositiveLength, Plausible(2e-5, 0.04, _CLEARANCE)] | None = None
     """Diametral clearance 2c (or radial_clearance)."""
     rotation: Annotated[Literal["clockwise", "anticlockwise"], BeforeValidator(_rotation_alias)] = "clockwise"
@@ -671,12 +671,29 @@ class AlignmentSection(Section):
             given = film.radial_clearance is not None or film.diametral_clearance is not None
             if not given and bearing.vertical_clearance is None:
                 raise field_error(
-                    f"bearings[{k}].film.radial_clearance",
+                    f"{where}.radial_clearance",
                     "missing",
-                    "the film's clearance: radial_clearance or diametral_clearance, or the bearing's "
-                    "vertical_clearance",
+                    "the film's clearance: radial_clearance or diametral_clearance, or "
+                    f"bearings[{k}].vertical_clearance",
                     "m",
                 )
+            if given and bearing.vertical_clearance is not None:
+                # One bore, one clearance: the point supports' top contact (vertical_clearance,
+                # diametral) and the film must agree; a radial value given as diametral (or the
+                # reverse) is the slip this catches.
+                name = "radial_clearance" if film.radial_clearance is not None else "diametral_clearance"
+                value = film.radial_clearance if film.radial_clearance is not None else film.diametral_clearance
+                assert value is not None
+                diametral = 2.0 * value if name == "radial_clearance" else value
+                if abs(diametral - bearing.vertical_clearance) > 1e-3 * bearing.vertical_clearance:
+                    wanted = bearing.vertical_clearance * (0.5 if name == "radial_clearance" else 1.0)
+                    raise field_error(
+                        f"{where}.{name}",
+                        value,
+                        f"{wanted:.6g} m, as bearings[{k}].vertical_clearance = "
+                        f"{bearing.vertical_clearance:.6g} m (diametral) of the same bore; or leave one of them out",
+                        "m",
+                    )
         return self
 
     @model_validator(mode="after")
