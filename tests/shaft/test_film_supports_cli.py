@@ -98,6 +98,20 @@ def test_tables_json_and_report(solved):
         assert (out / "figures" / f"alignment_{name}.png").stat().st_size > 10_000
 
 
+def test_terminal_comparison_shows_the_relative_slope_on_points_and_in_the_film(solved):
+    """The terminal's "point supports vs film supports" keeps both relative slopes of the aft
+    bearing (the issue's "aft-bearing relative slope"), not the film's alone."""
+    from shaftline.report.blocks import fmt
+
+    result, out = solved
+    coupled = json.loads((out / "results.json").read_text())["alignment"]["film_supports"][0]
+    table = result.stdout.split("Point supports vs film supports")[1]
+    aft_row = next(line for line in table.splitlines() if "aft stern" in line)
+    point = fmt(coupled["point_supports"][0]["relative_slope"], 1e3)
+    film = fmt(coupled["films"][0]["relative_slope"], 1e3)
+    assert point != film and point in aft_row and film in aft_row, aft_row
+
+
 def test_line_film_table_serves_film_true(tmp_path):
     """``film = true`` takes [alignment.film]; the clearance defaults to half the bearing's vertical one."""
     shared = """

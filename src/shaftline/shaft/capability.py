@@ -207,7 +207,7 @@ COMPARISON_HEADERS = [
 
 #: Columns of the film tables kept in the terminal summary (80 columns).
 NARROW_FILM = (0, 1, 2, 4, 5, 10)
-NARROW_COMPARISON = (0, 1, 2, 4, 6)
+NARROW_COMPARISON = (0, 1, 2, 4, 5, 6)
 
 
 def _narrowed(headers: list[str], rows: list[list[str]], title: str, keep: tuple[int, ...] | None) -> Table:
