@@ -112,6 +112,22 @@ def test_terminal_comparison_shows_the_relative_slope_on_points_and_in_the_film(
     assert point != film and point in aft_row and film in aft_row, aft_row
 
 
+def test_a_film_below_the_limit_at_the_operating_speed_is_null_in_the_json(tmp_path):
+    """With a class value above the film at the operating speed there is no minimum speed
+    (nan inside Python): the JSON says null and the finding says why; it used to end in a
+    traceback (JSON has no nan) with nothing written."""
+    path = write(tmp_path)
+    path.write_text(path.read_text() + '\n[alignment.minimum_speed]\nclass_value = "400 um"\npoints = 2\n')
+    out = tmp_path / "out"
+    result = invoke("align", str(path), "--out", str(out))
+    assert result.exit_code == 0, result.stderr
+    speed = json.loads((out / "results.json").read_text())["alignment"]["minimum_speed"]
+    assert speed["speed"] is None and speed["speed_rpm"] is None and speed["bracket"][0] is None
+    assert speed["bracket"][1] == pytest.approx(90 * 3.141592653589793 / 30, rel=1e-4)
+    assert "below the limit (400 µm) at the operating speed (90 rpm)" in speed["message"]
+    assert "below the film limit of 400.00 µm" in result.stdout
+
+
 def test_line_film_table_serves_film_true(tmp_path):
     """``film = true`` takes [alignment.film]; the clearance defaults to half the bearing's vertical one."""
     shared = """
