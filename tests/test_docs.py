@@ -37,3 +37,28 @@ def test_every_schema_field_has_a_description():
 
     walk(case_model(), "")
     assert missing == []
+
+
+def test_every_schema_field_type_is_resolved():
+    """A field whose annotation is still a ForwardRef (a table named before it is defined,
+    e.g. a bearing's own ``film`` table) prints as ``ForwardRef(...)`` in the README, drops
+    out of the ranges table and loses the "did you mean" of a misspelt key."""
+    from typing import ForwardRef
+
+    from pydantic import BaseModel
+
+    from shaftline.cases.loader import case_model
+    from shaftline.cases.types import nested_model
+
+    unresolved = []
+
+    def walk(model: type[BaseModel], path: str) -> None:
+        for name, info in model.model_fields.items():
+            if isinstance(info.annotation, (ForwardRef, str)):
+                unresolved.append(f"{path}.{name}")
+            nested = nested_model(info.annotation)
+            if nested is not None:
+                walk(nested[0], f"{path}.{name}")
+
+    walk(case_model(), "")
+    assert unresolved == []

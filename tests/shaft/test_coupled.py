@@ -22,7 +22,7 @@ import pytest
 
 from shaftline.errors import InputError
 from shaftline.film import BearingProblem, JournalBearing, OperatingPoint, SolverOptions
-from shaftline.film.geometry import BearingGeometry, BentJournal, JournalPosition
+from shaftline.film.geometry import BearingGeometry, BentJournal, BoreSegment, JournalPosition
 from shaftline.shaft import AlignmentModel, Bearing, Condition, ShaftLine, ShaftSegment
 from shaftline.shaft.coupled import CoupledAlignment, CouplingOptions, FilmSupport
 from shaftline.shaft.model import PointLoad
@@ -410,6 +410,28 @@ def test_the_film_load_converges_with_the_shaft_elements_across_the_bearing():
     assert second < first, f"line load changes {first:.4g} then {second:.4g} N/m"
     assert abs(values[2][0] - values[1][0]) < 1e-5 * abs(values[2][0])
     assert abs(values[2][1] - values[1][1]) < 1e-5
+
+
+def test_point_and_film_relative_slopes_are_against_the_same_machined_bore():
+    """A single-slope bore of 0.2 mrad on the film bearing: the point-support comparison's
+    relative slope is the point model's shaft slope less that bore's chord, as the film's is
+    (docs/theory.md 10.1, sign conventions), so the two columns differ by the support model
+    only. Reference: the point model solved on its own; the chord is exact (one straight
+    segment), so the agreement is to round-off."""
+    slope = 2e-4
+    problem = ntua_film()
+    bored = replace(problem, geometry=replace(problem.geometry, bore=(BoreSegment(1.0, slope=slope),)))
+    result = CoupledAlignment(ntua_line(), [FilmSupport("aft", bored)]).solve()
+    assert result.converged, result.message
+    alone = AlignmentModel(ntua_line()).solve_condition(ntua_line().all_conditions()[0]).bearing("aft")
+    point = result.point_supports.bearing("aft")
+    assert point.shaft_slope == pytest.approx(alone.shaft_slope, rel=1e-12)
+    assert point.relative_slope == pytest.approx(alone.shaft_slope - slope, rel=1e-9)
+    # the bearings without a film keep the point model's own relative slope
+    assert result.point_supports.bearing("fwd").relative_slope == pytest.approx(
+        AlignmentModel(ntua_line()).solve_condition(ntua_line().all_conditions()[0]).bearing("fwd").relative_slope,
+        rel=1e-12,
+    )
 
 
 # -- 5. Newton and input errors --------------------------------------------------------------

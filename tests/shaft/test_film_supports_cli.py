@@ -98,6 +98,36 @@ def test_tables_json_and_report(solved):
         assert (out / "figures" / f"alignment_{name}.png").stat().st_size > 10_000
 
 
+def test_terminal_comparison_shows_the_relative_slope_on_points_and_in_the_film(solved):
+    """The terminal's "point supports vs film supports" keeps both relative slopes of the aft
+    bearing (the issue's "aft-bearing relative slope"), not the film's alone."""
+    from shaftline.report.blocks import fmt
+
+    result, out = solved
+    coupled = json.loads((out / "results.json").read_text())["alignment"]["film_supports"][0]
+    table = result.stdout.split("Point supports vs film supports")[1]
+    aft_row = next(line for line in table.splitlines() if "aft stern" in line)
+    point = fmt(coupled["point_supports"][0]["relative_slope"], 1e3)
+    film = fmt(coupled["films"][0]["relative_slope"], 1e3)
+    assert point != film and point in aft_row and film in aft_row, aft_row
+
+
+def test_a_film_below_the_limit_at_the_operating_speed_is_null_in_the_json(tmp_path):
+    """With a class value above the film at the operating speed there is no minimum speed
+    (nan inside Python): the JSON says null and the finding says why; it used to end in a
+    traceback (JSON has no nan) with nothing written."""
+    path = write(tmp_path)
+    path.write_text(path.read_text() + '\n[alignment.minimum_speed]\nclass_value = "400 um"\npoints = 2\n')
+    out = tmp_path / "out"
+    result = invoke("align", str(path), "--out", str(out))
+    assert result.exit_code == 0, result.stderr
+    speed = json.loads((out / "results.json").read_text())["alignment"]["minimum_speed"]
+    assert speed["speed"] is None and speed["speed_rpm"] is None and speed["bracket"][0] is None
+    assert speed["bracket"][1] == pytest.approx(90 * 3.141592653589793 / 30, rel=1e-4)
+    assert "below the limit (400 µm) at the operating speed (90 rpm)" in speed["message"]
+    assert "below the film limit of 400.00 µm" in result.stdout
+
+
 def test_line_film_table_serves_film_true(tmp_path):
     """``film = true`` takes [alignment.film]; the clearance defaults to half the bearing's vertical one."""
     shared = """
@@ -143,6 +173,14 @@ def test_film_at_its_floor_is_reported_with_exit_status_3(tmp_path):
             OWN_FILM + 'radial_clearance = "0.45 mm"\ndiametral_clearance = "0.9 mm"\n',
             "alignment.bearings[0].film.radial_clearance",
         ),
+        (  # the bearing's diametral 0.9 mm given as the film's radial clearance: one bore, two clearances
+            OWN_FILM + 'radial_clearance = "0.9 mm"\n',
+            "alignment.bearings[0].film.radial_clearance = 0.0009 m: allowed 0.00045 m",
+        ),
+        (  # the mass-conserving model without a feed pressure: the field is the film table's
+            OWN_FILM.replace("circumferential_nodes = 36", 'circumferential_nodes = 36, cavitation = "jfo"'),
+            "alignment.bearings[0].film.cavitation_pressure",
+        ),
     ],
 )
 def test_bad_film_input_is_one_line(tmp_path, film, field):
@@ -152,6 +190,15 @@ def test_bad_film_input_is_one_line(tmp_path, film, field):
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith(f"error: {field}"), result.stderr
     assert not out.exists()
+
+
+def test_a_misspelt_key_in_a_bearings_own_film_table_gets_a_suggestion(tmp_path):
+    result = invoke("align", str(write(tmp_path, film=OWN_FILM + '  clearence = "0.45 mm"\n')))
+    assert result.exit_code == 2
+    assert result.stderr.strip() == (
+        "error: alignment.bearings[0].film.clearence = '0.45 mm': allowed no such field; "
+        "did you mean 'radial_clearance'?"
+    )
 
 
 def test_film_needs_a_clearance_and_no_spring(tmp_path):

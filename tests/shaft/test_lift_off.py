@@ -81,6 +81,10 @@ def test_messages_at_the_ends(line_and_film):
     calls = []
     above = minimum_speed(line, [film], 200e-6, points=2, progress=lambda *args: calls.append(args))
     assert math.isnan(above.speed) and "operating speed" in above.message
+    top = film.problem.operating.speed
+    # the documented bracket (nan, top), and the message in the units of the report
+    assert math.isnan(above.bracket[0]) and above.bracket[1] == top
+    assert f"(200 µm) at the operating speed ({top * 30 / math.pi:.4g} rpm)" in above.message
     assert [c[0] for c in calls] == [1] and calls[0][1] == film.problem.operating.speed
     low = minimum_speed(line, [film], 1e-6, lowest=0.8, points=2)
     assert low.bracket[0] == 0.0 and "lowest speed" in low.message and low.governing == ""

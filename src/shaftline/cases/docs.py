@@ -76,6 +76,17 @@ def _bounds(metadata: list[Any]) -> str:
     return ", ".join(words)
 
 
+def _also_a_value(annotation: Any) -> bool:
+    """Whether a field that may be a table may also be a plain value (``FilmSection |
+    StrictBool``): it keeps its row beside its table's section."""
+    arms = (
+        [a for a in get_args(annotation) if a is not type(None)]
+        if get_origin(annotation) in (Union, types.UnionType)
+        else []
+    )
+    return any(nested_model(a) is None for a in arms)
+
+
 def _default(info: Any) -> str:
     if info.is_required():
         return "required"
@@ -99,7 +110,8 @@ def _tables(model: type[BaseModel], path: str, array: bool, out: list[str]) -> N
         if nested is not None:
             child, child_array = nested
             children.append((child, f"{path}.{name}" if path else name, child_array))
-            continue
+            if not _also_a_value(info.annotation):
+                continue
         description = " ".join((info.description or "").split())
         annotation: Any = info.annotation
         if info.metadata:  # pydantic keeps Annotated metadata of a plain field apart from its type

@@ -78,6 +78,8 @@ def _model_at(root: type[BaseModel], location: tuple[Any, ...]) -> type[BaseMode
     for part in location:
         if isinstance(part, int) or not (isinstance(model, type) and issubclass(model, BaseModel)):
             continue
+        if part == model.__name__:  # the union member's tag of a "table or value" field
+            continue
         info = model.model_fields.get(part)
         if info is None:
             return None

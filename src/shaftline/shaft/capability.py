@@ -175,6 +175,11 @@ FILM_HEADERS = [
 ]
 
 
+def _finite(value: float) -> float | None:
+    """A float for the JSON, None (null) where it is nan: JSON has no nan."""
+    return float(value) if math.isfinite(value) else None
+
+
 def _comparison_rows(coupled: CoupledResult) -> list[list[str]]:
     rows = []
     for point, film in zip(coupled.point_supports.bearings, coupled.condition.bearings, strict=True):
@@ -207,7 +212,7 @@ COMPARISON_HEADERS = [
 
 #: Columns of the film tables kept in the terminal summary (80 columns).
 NARROW_FILM = (0, 1, 2, 4, 5, 10)
-NARROW_COMPARISON = (0, 1, 2, 4, 6)
+NARROW_COMPARISON = (0, 1, 2, 4, 5, 6)
 
 
 def _narrowed(headers: list[str], rows: list[list[str]], title: str, keep: tuple[int, ...] | None) -> Table:
@@ -299,10 +304,11 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             out["film_supports"] = [_coupled_json(c) for c in result.coupled]
         if result.lift_off is not None:
             lift = result.lift_off
+            # nan (no speed: the films are below the limit at the operating speed) is null
             out["minimum_speed"] = {
-                "speed": lift.speed,
-                "speed_rpm": lift.speed * 30.0 / math.pi,
-                "bracket": list(lift.bracket),
+                "speed": _finite(lift.speed),
+                "speed_rpm": _finite(lift.speed * 30.0 / math.pi),
+                "bracket": [_finite(v) for v in lift.bracket],
                 "limit": lift.limit,
                 "governing": lift.governing,
                 "message": lift.message,

@@ -350,7 +350,7 @@ class FilmSection(Section):
     lubricant: LubricantSection
     """The lubricant (a viscosity, a preset at a temperature or a two-point oil)."""
     radial_clearance: Annotated[PositiveLength, Plausible(1e-5, 0.02, _CLEARANCE)] | None = None
-    """Radial clearance c (default: half the bearing's vertical_clearance)."""
+    """Radial clearance c (default: half the bearing's vertical_clearance; if both are given they must agree)."""
     diametral_clearance: Annotated[PositiveLength, Plausible(2e-5, 0.04, _CLEARANCE)] | None = None
     """Diametral clearance 2c (or radial_clearance)."""
     rotation: Annotated[Literal["clockwise", "anticlockwise"], BeforeValidator(_rotation_alias)] = "clockwise"
@@ -369,6 +369,12 @@ class FilmSection(Section):
     """Film grid and models."""
     elements: Annotated[int, Field(ge=2, le=50)] = 10
     """Shaft elements across the bearing (at least; seed 004 uses 10)."""
+
+
+# SupportSection.film names FilmSection before it is defined: pydantic validates it lazily but
+# keeps the field's annotation a ForwardRef until rebuilt, and the README tables, the ranges
+# table and the "did you mean" of a misspelt key in [alignment.bearings.film] read it.
+SupportSection.model_rebuild(force=True)
 
 
 class MinimumSpeedSection(Section):
@@ -665,12 +671,29 @@ class AlignmentSection(Section):
             given = film.radial_clearance is not None or film.diametral_clearance is not None
             if not given and bearing.vertical_clearance is None:
                 raise field_error(
-                    f"bearings[{k}].film.radial_clearance",
+                    f"{where}.radial_clearance",
                     "missing",
-                    "the film's clearance: radial_clearance or diametral_clearance, or the bearing's "
-                    "vertical_clearance",
+                    "the film's clearance: radial_clearance or diametral_clearance, or "
+                    f"bearings[{k}].vertical_clearance",
                     "m",
                 )
+            if given and bearing.vertical_clearance is not None:
+                # One bore, one clearance: the point supports' top contact (vertical_clearance,
+                # diametral) and the film must agree; a radial value given as diametral (or the
+                # reverse) is the slip this catches.
+                name = "radial_clearance" if film.radial_clearance is not None else "diametral_clearance"
+                value = film.radial_clearance if film.radial_clearance is not None else film.diametral_clearance
+                assert value is not None
+                diametral = 2.0 * value if name == "radial_clearance" else value
+                if abs(diametral - bearing.vertical_clearance) > 1e-3 * bearing.vertical_clearance:
+                    wanted = bearing.vertical_clearance * (0.5 if name == "radial_clearance" else 1.0)
+                    raise field_error(
+                        f"{where}.{name}",
+                        value,
+                        f"{wanted:.6g} m, as bearings[{k}].vertical_clearance = "
+                        f"{bearing.vertical_clearance:.6g} m (diametral) of the same bore; or leave one of them out",
+                        "m",
+                    )
         return self
 
     @model_validator(mode="after")
@@ -931,6 +954,7 @@ def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSup
             bore_anchor=film.bore_anchor,
             rotation=1 if film.rotation == "clockwise" else -1,
         )
-    with located(where, {"operating": "", "options": "solver"}):
+    # a rename replaces the prefix too: the operating point's fields are the film table's own
+    with located(where, {"operating": where, "options": f"{where}.solver"}):
         problem = BearingProblem(geometry, operating, options)
     return FilmSupport(bearing.name, problem, film.elements)

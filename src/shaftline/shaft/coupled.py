@@ -171,7 +171,9 @@ class CoupledResult:
     films : list of FilmBearingResult
     point_supports : ConditionResult
         The same condition with every bearing as declared in the line (point, spring or
-        multi-point): the comparison "point supports vs film supports".
+        multi-point): the comparison "point supports vs film supports". A film bearing's
+        relative slope there is taken against its machined bore (bearing slope plus the chord
+        of its slope-boring profile), as in the film results.
     converged : bool
     iterations : int
         Newton iterations.
@@ -723,7 +725,7 @@ class CoupledAlignment:
         return CoupledResult(
             condition=result_condition,
             films=films,
-            point_supports=points,
+            point_supports=self._against_bores(points),
             converged=converged,
             iterations=iterations,
             film_solutions=solutions,
@@ -770,6 +772,20 @@ class CoupledAlignment:
             magnitude = max(float(np.hypot(*load.row_force.sum(axis=1))), 1e-30)
             worst = max(worst, float(np.hypot(*resultant)) / magnitude)
         return worst
+
+    def _against_bores(self, points: ConditionResult) -> ConditionResult:
+        """The point-support alignment with each film bearing's relative slope taken against
+        the chord of its machined bore (the bearing's slope plus the slope-boring profile's
+        chord), as the film's own: the point-support model knows only the bearing's slope, and
+        "point supports vs film supports" must compare the two against the same bore."""
+        bearings = list(points.bearings)
+        for film in self._films:
+            geometry = film.support.problem.geometry
+            bore_y, _ = geometry.bore_centre_line(np.array([0.0, geometry.length]))
+            chord = float(bore_y[1] - bore_y[0]) / geometry.length
+            old = bearings[film.index]
+            bearings[film.index] = replace(old, relative_slope=float(old.relative_slope - chord))
+        return replace(points, bearings=bearings)
 
     def _result(
         self,
@@ -836,7 +852,7 @@ class CoupledAlignment:
         return CoupledResult(
             condition=condition_result,
             films=films,
-            point_supports=points,
+            point_supports=self._against_bores(points),
             converged=converged,
             iterations=iterations,
             film_solutions=solutions,

@@ -248,9 +248,15 @@ def minimum_speed(
     message = ""
     if math.isnan(low):
         low, high = 0.0, float(sweep[-1])
-        message = f"the films stay above the limit down to the lowest speed tried ({high:.4g} rad/s): lower `lowest`"
+        message = (
+            f"the films stay above the limit down to the lowest speed tried ({high * 30 / math.pi:.4g} rpm): "
+            "lower `lowest`"
+        )
     elif math.isnan(high):
-        message = f"a film is below the limit ({value:.3g} m) at the operating speed ({top:.4g} rad/s)"
+        low, high = math.nan, top  # as documented: (nan, top)
+        message = (
+            f"a film is below the limit ({value * 1e6:.3g} µm) at the operating speed ({top * 30 / math.pi:.4g} rpm)"
+        )
     else:
         while high > low * (1.0 + tolerance):
             middle = math.sqrt(low * high)
@@ -268,7 +274,7 @@ def minimum_speed(
         below = np.where(touching, -math.inf, hmin)
         governing = names[int(np.argmin(below))]
     return LiftOffResult(
-        speed=math.nan if math.isnan(high) else high,
+        speed=math.nan if math.isnan(low) else high,
         bracket=(low, high),
         limit=value,
         governing=governing,
