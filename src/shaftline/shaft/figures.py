@@ -158,18 +158,24 @@ def journal_in_bore(film: FilmBearingResult, *, ax: Any) -> Any:
     return ax
 
 
-@figure_function(size=(11, 4))
+@figure_function(layout=(1, 2), size=(12, 4.2))
 def point_vs_film(coupled: CoupledResult, *, ax: Any) -> Any:
-    """Vertical reactions with point supports (the bearings as declared) and with film supports."""
+    """Point supports (the bearings as declared) against film supports: vertical reactions (left)
+    and the relative slope of the shaft across each bearing (right); ``ax`` is two axes."""
+    left, right = ax
     names = [plain(b.name) for b in coupled.condition.bearings]
     positions = np.arange(len(names))
-    point = [b.reaction_y / 1e3 for b in coupled.point_supports.bearings]
-    film = [b.reaction_y / 1e3 for b in coupled.condition.bearings]
-    ax.bar(positions - 0.2, point, 0.4, label="point supports", color="0.6")
-    ax.bar(positions + 0.2, film, 0.4, label="film supports", color="C0")
-    ax.axhline(0, color="k", lw=0.8)
-    ax.set_xticks(positions, names, rotation=20, ha="right", fontsize=8)
-    ax.set_ylabel("reaction [kN]")
-    ax.set_title(f"Point supports vs film supports: {plain(coupled.condition.name)}")
-    ax.legend(fontsize=8)
+    for axes, key, scale, label in (
+        (left, "reaction_y", 1e-3, "reaction [kN]"),
+        (right, "relative_slope", 1e3, "relative slope [mrad]"),
+    ):
+        point = [getattr(b, key) * scale for b in coupled.point_supports.bearings]
+        film = [getattr(b, key) * scale for b in coupled.condition.bearings]
+        axes.bar(positions - 0.2, point, 0.4, label="point supports", color="0.6")
+        axes.bar(positions + 0.2, film, 0.4, label="film supports", color="C0")
+        axes.axhline(0, color="k", lw=0.8)
+        axes.set_xticks(positions, names, rotation=20, ha="right", fontsize=8)
+        axes.set_ylabel(label)
+    left.set_title(f"Point supports vs film supports: {plain(coupled.condition.name)}")
+    left.legend(fontsize=8)
     return ax
