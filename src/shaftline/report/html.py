@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import TypeVar
 
 from shaftline.report.blocks import (
     DataFile,
@@ -27,6 +28,9 @@ from shaftline.report.blocks import (
 def svg_name(file: str) -> str:
     """The name of the vector copy of a figure file (``maps.png`` -> ``maps.svg``)."""
     return str(Path(file).with_suffix(".svg"))
+
+
+T = TypeVar("T")
 
 
 def draw_figure(figure: Figure, path: Path) -> Path:
@@ -61,23 +65,14 @@ def _kind(block: object) -> str:
     raise TypeError(f"not a report block: {block!r}")
 
 
-def _figures(blocks: Sequence[object]) -> list[Figure]:
-    out: list[Figure] = []
+def _nested(blocks: Sequence[object], kind: type[T]) -> list[T]:
+    """The blocks of ``kind`` among ``blocks``, those folded in :class:`Details` included."""
+    out: list[T] = []
     for block in blocks:
-        if isinstance(block, Figure):
+        if isinstance(block, kind):
             out.append(block)
         elif isinstance(block, Details):
-            out += _figures(block.blocks)
-    return out
-
-
-def _data_files(blocks: Sequence[object]) -> list[DataFile]:
-    out: list[DataFile] = []
-    for block in blocks:
-        if isinstance(block, DataFile):
-            out.append(block)
-        elif isinstance(block, Details):
-            out += _data_files(block.blocks)
+            out += _nested(block.blocks, kind)
     return out
 
 
@@ -131,12 +126,12 @@ def write_report(
     created = datetime.now().astimezone().isoformat(timespec="seconds")
     figures = folder / "figures"
     figures.mkdir(parents=True, exist_ok=True)
-    blocks = [block for section in sections for block in _figures(section.blocks)]
+    blocks = [block for section in sections for block in _nested(section.blocks, Figure)]
     for k, block in enumerate(blocks):
         if progress is not None:
             progress(f"drawing figure {k + 1} of {len(blocks)}")
         draw_figure(block, figures / block.file)
-    files = [block for section in sections for block in _data_files(section.blocks)]
+    files = [block for section in sections for block in _nested(section.blocks, DataFile)]
     if files:
         (folder / "data").mkdir(parents=True, exist_ok=True)
     for data in files:
