@@ -117,7 +117,7 @@ def test_design_needs_a_bearing_and_a_temperature_model(tmp_path):
     path = tmp_path / "alone.toml"
     path.write_text('[case]\nname = "x"\n\n' + design_only)
     result = invoke("design", "slopes", str(path))
-    assert result.exit_code == 2 and "a [bearing] table for [design]" in result.stderr
+    assert result.exit_code == 2 and "a [bearing] or [alignment] table for [design]" in result.stderr
     constant = text[: text.index("[bearing.lubricant]")] + (
         '[bearing.lubricant]\nviscosity = "0.07 Pa*s"\n\n' + text[text.index("[bearing.solver]") :]
     )
@@ -157,3 +157,48 @@ def test_every_design_in_the_report_folder_and_a_resumable_store(tmp_path):
     assert stored["min_film_thickness"][:12].tolist() == table["min_film_thickness"].tolist()
     other = invoke("design", "slopes", str(case), "--seed", "9", "--store", str(store))
     assert other.exit_code == 2 and "store" in other.stderr and "seed" in other.stderr
+
+
+SHAFT_LINE = Path(__file__).resolve().parents[1] / "examples" / "ntua_shaft_line.toml"
+
+
+def test_design_on_the_coupled_alignment(tmp_path):
+    """[design] on a film bearing of [alignment]: the operating point is the coupled solution (its
+    film force as the load, its bent journal held, its chord as psi_x), searched and reported the
+    same way; the knee's film is in the comparison beside no slope."""
+    text = SHAFT_LINE.read_text().replace(
+        "axial_nodes = 100, circumferential_nodes = 60", "axial_nodes = 41, circumferential_nodes = 36"
+    )
+    path = tmp_path / "line.toml"
+    path.write_text(text)
+    out = tmp_path / "out"
+    result = invoke(
+        "design", "slopes", str(path), "--generations", "2", "--population", "6", "--out", str(out), "--json", "-"
+    )
+    assert result.exit_code == 0, result.stderr
+    design = json.loads(result.stdout)["design"]
+    assert design["shaft"] == "coupled"
+    assert 0.1 < design["misalignment_ratio"] < 0.3  # the coupled chord, below the 0.3 of the point supports
+    assert 300e3 < -design["load"][0] < 315e3  # the film force of the coupled solution (309.86 kN on points)
+    assert "knee" in design["comparison"] and "no slope" in design["comparison"]
+    assert "the coupled alignment (aft stern tube)" in (out / "report.html").read_text()
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        ('shaft = "linear"\n', "design.shaft = 'linear'"),
+        ('bearing = "intermediate"\n', "design.bearing = 'intermediate'"),
+        ("[design.sweep]\nratios = [0.2]\n", "design.sweep"),
+    ],
+)
+def test_bad_design_on_an_alignment(tmp_path, extra, message):
+    text = SHAFT_LINE.read_text()
+    if extra.startswith("["):
+        text += "\n" + extra
+    else:
+        text = text.replace('bearing = "aft stern tube"\n', "").replace("[design]\n", "[design]\n" + extra, 1)
+    path = tmp_path / "line.toml"
+    path.write_text(text)
+    result = invoke("design", "slopes", str(path))
+    assert result.exit_code == 2 and result.stderr.startswith(f"error: {message}"), result.stderr

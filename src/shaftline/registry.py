@@ -157,9 +157,9 @@ class Capability(Generic[SectionT, StudyT, ResultT]):
         Top-level tables of an older case-file layout and where they live now, so that an
         old file gets a message saying where to move them.
     needs : tuple of str
-        Keys of other capabilities whose tables this one builds on (in ``context.studies``
-        when :meth:`build` runs); they are built first, also for a verb of this capability
-        alone, but solved only when asked for themselves.
+        Keys of other capabilities whose tables this one builds on, one of them at least (in
+        ``context.studies`` when :meth:`build` runs); those present are built first, also for a
+        verb of this capability alone, but solved only when asked for themselves.
     parallel : bool
         :meth:`solve` spreads its work with :func:`shaftline.parallel.map` and takes its
         ``workers`` and ``scheduler`` keyword options (the command line's ``--workers`` and

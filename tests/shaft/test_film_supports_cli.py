@@ -215,8 +215,9 @@ def test_film_needs_a_clearance_and_no_spring(tmp_path):
 
 
 def test_ntua_shaft_line_example(tmp_path):
-    """``shaftline run examples/ntua_shaft_line.toml``: the alignment with the film-supported stern
-    tube, the point-vs-film comparison and the minimum speed in one run and one report. The case
+    """``shaftline align examples/ntua_shaft_line.toml``: the alignment with the film-supported stern
+    tube, the point-vs-film comparison and the minimum speed in one run and one report (``run``
+    adds the slope-boring search of its [design] table, tests/test_design_cli.py). The case
     file is the line of ``shaftline.shaft.ntua.ntua_shaft_line(0.3)`` (offsets rounded to 1 µm in
     the file, so the film agrees to 0.5 %, about 0.4 µm in h_min); the minimum speed is about
     61.5 rpm (docs/validation.md)."""
@@ -225,7 +226,7 @@ def test_ntua_shaft_line_example(tmp_path):
 
     out = tmp_path / "out"
     example = Path(__file__).resolve().parents[2] / "examples" / "ntua_shaft_line.toml"
-    result = invoke("run", str(example), "--out", str(out), "--json", "-")
+    result = invoke("align", str(example), "--out", str(out), "--json", "-")  # `run` adds the 40 x 40 design
     assert result.exit_code == 0, result.stderr
     alignment = json.loads(result.stdout)["alignment"]
     (film,) = alignment["film_supports"][0]["films"]

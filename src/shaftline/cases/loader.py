@@ -255,11 +255,12 @@ def parse_case(
     wanted = present if only is None else [key for key in present if key in set(only)]
     needed = {need for key in wanted for need in capabilities[key].needs}
     for key in wanted:
-        for need in capabilities[key].needs:
-            if need not in document:
-                raise InputError(
-                    "case file", str(source) if source else "{...}", "", f"a [{need}] table for [{key}] to build on"
-                )
+        needs = capabilities[key].needs
+        if needs and not any(need in document for need in needs):
+            either = " or ".join(f"[{need}]" for need in needs)
+            raise InputError(
+                "case file", str(source) if source else "{...}", "", f"a {either} table for [{key}] to build on"
+            )
     unusual = _unusual(info.unusual, present)
     context = BuildContext(case=info, base_dir=base_dir or Path.cwd())
     studies = {}

@@ -125,10 +125,16 @@ def _robustness_table(result: RobustnessResult) -> Table:
     return Table(headers, rows, f"h_min [µm] in each scenario (limit {result.limit * 1e6:.0f} µm)", marks)
 
 
+def _ratio(result: DesignResult) -> float:
+    """psi_x of the searched problem: its journal's chord tilt over 2c/L."""
+    g = result.problem.film.geometry
+    return result.problem.tilt_y * g.length / (2.0 * g.radial_clearance)
+
+
 class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
     key = "design"
     title = "Slope-boring design"
-    needs = ("bearing",)
+    needs = ("bearing", "alignment")
     parallel = True
     verbs = (
         Verb(
@@ -168,7 +174,9 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
         out: dict[str, Any] = {
             "units": UNITS,
             "shaft": study.shaft,
-            "misalignment_ratio": study.misalignment_ratio,
+            "misalignment_ratio": _ratio(result),
+            "load": [result.problem.load_y, result.problem.load_z],
+            "tilt": [result.problem.tilt_y, result.problem.tilt_z],
             "variables": result.problem.parametrisation.names,
             "lower": result.problem.parametrisation.lower.tolist(),
             "upper": result.problem.parametrisation.upper.tolist(),
@@ -264,11 +272,13 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
         from shaftline.design import figures
 
         study = result.study
+        source = "[bearing]" if study.coupled is None else f"the coupled alignment ({study.coupled.bearing})"
         blocks: list[Block] = [
             Paragraph(
                 f"Bore of {result.problem.parametrisation.segments} slope segment(s) searched for "
                 + ", ".join(result.problem.objectives)
-                + f" at the operating point of [bearing], {study.shaft} shaft, psi_x = {study.misalignment_ratio:.3g} "
+                + f" at the operating point of {source}, {study.shaft} shaft, psi_x = {_ratio(result):.3g} "
+                f"(journal chord over 2c/L), load {abs(result.problem.load_y) / 1e3:.1f} kN "
                 "(slopes as shares of 2c/L, knuckles as shares of L from the aft edge)."
             )
         ]

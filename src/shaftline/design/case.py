@@ -1,5 +1,6 @@
 """The ``[design]`` table of a case file: the search for a slope-bored bore of the case's
-``[bearing]`` (its base case is the operating point held during the search), its robustness
+``[bearing]`` (its base case is the operating point held during the search) or of a film
+bearing of its ``[alignment]`` (the coupled solution is the operating point), its robustness
 scenarios and the misalignment sweep.
 
 Layout::
@@ -34,7 +35,7 @@ if TYPE_CHECKING:
     from shaftline.design.study import DesignStudy
 
 ObjectiveName = Literal["min_film_thickness", "max_pressure", "power_loss", "side_leakage", "support_offset"]
-ShaftModel = Literal["linear", "bent"]
+ShaftModel = Literal["linear", "bent", "coupled"]
 RobustDesigns = Literal["knee", "pareto", "none"]
 SLOPE_SHARE = Plausible(
     -3.0,
@@ -120,9 +121,14 @@ class DesignSection(Section):
     is broken by its own optima)."""
     objectives: Annotated[list[ObjectiveName], Field(min_length=1)] = ["min_film_thickness", "max_pressure"]
     """What to rank by: h_min is maximised, the others minimised (seed 004: h_min and p_max)."""
-    shaft: ShaftModel = "linear"
-    """The journal held during the search: linear (tilted by the bearing's misalignment) or bent (seed 004's local
-    shaft model, Table 4-5, with the same chord)."""
+    shaft: ShaftModel | None = None
+    """The journal held during the search: linear (tilted by the bearing's misalignment), bent (seed 004's local
+    shaft model, Table 4-5, with the same chord) or coupled (the journal and load of the film bearing in the
+    coupled [alignment]); default linear on [bearing], coupled on [alignment]."""
+    bearing: str | None = None
+    """With [alignment]: the film bearing whose bore is designed (default: the first)."""
+    condition: str | None = None
+    """With [alignment]: the condition whose coupled solution is the operating point (default: the first)."""
     constraints: list[ConstraintSection] = []
     """Limits a design must meet."""
     search: SearchSection = SearchSection()
@@ -149,16 +155,61 @@ class DesignSection(Section):
 
 
 def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
-    """The design study in SI domain objects, on the base case of the case's ``[bearing]``."""
+    """The design study in SI domain objects, on the base case of the case's ``[bearing]`` or on a
+    film bearing of its ``[alignment]``."""
     from shaftline.design.bore import SlopeParametrisation
     from shaftline.design.problem import Constraint, SlopeDesignProblem
     from shaftline.design.robustness import SEED_SCENARIOS, Scenario
-    from shaftline.design.study import DesignStudy
+    from shaftline.design.study import CoupledSource, DesignStudy
     from shaftline.film.problem import BearingProblem
 
-    bearing = context.studies["bearing"].cases[0]  # [bearing] is built first (needs)
-    if bearing.geometry.bore:
-        raise InputError("bearing.bore", "given", "", "no bore in [bearing]: [design] searches the bore", in_file=True)
+    coupled = None
+    if "bearing" in context.studies:  # [bearing] first: its base case is the operating point
+        bearing = context.studies["bearing"].cases[0]
+        if bearing.geometry.bore:
+            raise InputError(
+                "bearing.bore", "given", "", "no bore in [bearing]: [design] searches the bore", in_file=True
+            )
+        if section.shaft == "coupled" or section.bearing is not None or section.condition is not None:
+            field = "shaft" if section.shaft == "coupled" else ("bearing" if section.bearing else "condition")
+            raise InputError(field, getattr(section, field), "", "only with an [alignment] case (no [bearing] table)")
+        film = BearingProblem(bearing.geometry, bearing.operating, bearing.options)
+        load_y, load_z, tilt_y, tilt_z = bearing.load_y, bearing.load_z, bearing.tilt_y, bearing.tilt_z
+        lubricant, temperature = bearing.lubricant, bearing.temperature
+        shaft: ShaftModel = section.shaft or "linear"
+    else:
+        alignment = context.studies["alignment"]
+        names = [f.bearing for f in alignment.films]
+        if not names:
+            raise InputError(
+                "alignment.bearings", "no film bearing", "", "a bearing with a film (film = true or a film table)",
+                in_file=True,
+            )  # fmt: skip
+        name = section.bearing or names[0]
+        if name not in names:
+            raise InputError("bearing", name, "", "a film bearing of [alignment]: " + ", ".join(names))
+        conditions = [c.name for c in alignment.line.all_conditions()]
+        if section.condition is not None and section.condition not in conditions:
+            raise InputError("condition", section.condition, "", "a condition of [alignment]: " + ", ".join(conditions))
+        index = names.index(name)
+        support = alignment.films[index]
+        if support.problem.geometry.bore:
+            raise InputError(
+                "alignment.bearings.film.bore", "given", "", f"no bore on {name}: [design] searches it", in_file=True
+            )
+        film = support.problem
+        lubricant, temperature = alignment.film_lubricants[index] if alignment.film_lubricants else (None, None)
+        shaft = section.shaft or "coupled"
+        condition = next(c for c in alignment.line.all_conditions() if c.name == (section.condition or conditions[0]))
+        coupled = CoupledSource(alignment.line, alignment.films, alignment.coupling, condition, name)
+        # the load and the journal come from the coupled solution when the study is solved
+        load_y, load_z, tilt_y, tilt_z = -1.0, 0.0, 0.0, 0.0
+        if shaft != "coupled":
+            raise InputError("shaft", shaft, "", "coupled with an [alignment] case (its journal is the coupled one)")
+        if section.sweep is not None:
+            raise InputError(
+                "sweep", "given", "", "a sweep with a [bearing] case (the coupled journal has its own tilt)"
+            )
     with located(""):
         parametrisation = SlopeParametrisation(
             section.segments,
@@ -170,11 +221,11 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         with located(f"constraints[{k}]"):
             constraints.append(Constraint(c.quantity, c.comparison, c.limit))
     problem = SlopeDesignProblem(
-        BearingProblem(bearing.geometry, bearing.operating, bearing.options),
-        load_y=bearing.load_y,
-        load_z=bearing.load_z,
-        tilt_y=bearing.tilt_y,
-        tilt_z=bearing.tilt_z,
+        film,
+        load_y=load_y,
+        load_z=load_z,
+        tilt_y=tilt_y,
+        tilt_z=tilt_z,
         parametrisation=parametrisation,
         objectives=tuple(section.objectives),
         constraints=tuple(constraints),
@@ -187,19 +238,19 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         )
     )
     uses_temperature = section.robustness.designs != "none" and any(s.temperature_change for s in scenarios)
-    if uses_temperature and (bearing.lubricant is None or bearing.temperature is None):
+    if uses_temperature and (lubricant is None or temperature is None):
         raise InputError(
             "design.robustness.scenarios",
             "a temperature change",
             "",
-            "a [bearing.lubricant] with a preset or two-point oil and its temperature (its viscosity must follow "
+            "a lubricant with a preset or two-point oil and its temperature (its viscosity must follow "
             "temperature), or scenarios without temperature_change",
             in_file=True,
         )
     search = section.search
     return DesignStudy(
         problem=problem,
-        shaft=section.shaft,
+        shaft=shaft,
         algorithm=search.algorithm,
         population=search.population,
         generations=search.generations,
@@ -207,8 +258,9 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         robust_designs=section.robustness.designs,
         min_film=section.robustness.min_film,
         scenarios=scenarios,
-        lubricant=bearing.lubricant,
-        temperature=bearing.temperature,
+        lubricant=lubricant,
+        temperature=temperature,
         ratios=tuple(section.sweep.ratios) if section.sweep is not None else (),
         store=None if search.store is None else str(context.base_dir / Path(search.store).expanduser()),
+        coupled=coupled,
     )

@@ -16,14 +16,53 @@ from shaftline.design.robustness import RobustnessResult, Scenario, robustness
 from shaftline.design.search import SearchProgress, SearchResult, search
 from shaftline.design.sweep import SweepResult, misalignment_sweep
 from shaftline.film.bearing import BearingState
-from shaftline.film.geometry import BoreSegment
+from shaftline.film.geometry import BentJournal, BoreSegment
 from shaftline.lubricants import Lubricant
+from shaftline.shaft.coupled import CoupledResult, CouplingOptions, FilmSupport
+from shaftline.shaft.model import Condition, ShaftLine
 
-__all__ = ["TASKS", "DesignResult", "DesignStudy", "solve_design"]
+__all__ = ["TASKS", "CoupledSource", "DesignResult", "DesignStudy", "solve_design"]
 
 #: What a run does: the search (with the robustness of its chosen designs and the sweep, when
 #: asked), or only one of the three.
 TASKS = ("all", "slopes", "robustness", "sweep")
+
+
+@dataclass(frozen=True, eq=False)
+class CoupledSource:
+    """The coupled alignment whose film bearing ``bearing`` gives the operating point: its load
+    (the film force) and its journal (the coupled centre line) in ``condition``."""
+
+    line: ShaftLine
+    films: tuple[FilmSupport, ...]
+    options: CouplingOptions
+    condition: Condition
+    bearing: str
+
+    def problem(self, base: SlopeDesignProblem) -> tuple[SlopeDesignProblem, CoupledResult]:
+        """``base`` with the load and the journal of the coupled solution (and that solution)."""
+        from shaftline.shaft.coupled import CoupledAlignment
+
+        result = CoupledAlignment(self.line, self.films, self.options).solve(self.condition)
+        film = result.film(self.bearing)
+        g = base.film.geometry
+        z = film.z
+        arm = z - 0.5 * g.length
+        mid_y = float(np.interp(0.5 * g.length, z, film.centre_y))
+        mid_z = float(np.interp(0.5 * g.length, z, film.centre_z))
+        tilt_y = float(film.centre_y[-1] - film.centre_y[0]) / g.length
+        tilt_z = float(film.centre_z[-1] - film.centre_z[0]) / g.length
+        bent = BentJournal(z=z, dy=film.centre_y - mid_y - tilt_y * arm, dz=film.centre_z - mid_z - tilt_z * arm)
+        geometry = replace(g, bent_journal=bent)
+        problem = replace(
+            base,
+            film=replace(base.film, geometry=geometry),
+            load_y=-film.force_y,
+            load_z=-film.force_z,
+            tilt_y=tilt_y,
+            tilt_z=tilt_z,
+        )
+        return problem, result
 
 
 @dataclass(frozen=True, eq=False)
@@ -49,10 +88,13 @@ class DesignStudy:
     store : str or None
         Folder that keeps every evaluation of the search (and resumes it); the sweep's searches
         go into its sub-folders.
+    coupled : CoupledSource or None
+        With ``shaft = "coupled"``: the alignment whose coupled solution is the operating point
+        (the problem's load and tilt are then replaced by it when solved).
     """
 
     problem: SlopeDesignProblem
-    shaft: Literal["linear", "bent"]
+    shaft: Literal["linear", "bent", "coupled"]
     algorithm: str
     population: int
     generations: int
@@ -64,6 +106,7 @@ class DesignStudy:
     temperature: float | None
     ratios: tuple[float, ...] = ()
     store: str | None = None
+    coupled: CoupledSource | None = None
 
     @property
     def misalignment_ratio(self) -> float:
@@ -97,6 +140,8 @@ class DesignResult:
     profiles : dict
         The film (:class:`BearingState`) of the knee beside the bore with no slope and the single
         slope psi_x, by label, for the comparison along the bearing.
+    alignment : CoupledResult or None
+        The coupled solution that gave the operating point (``shaft = "coupled"``).
     """
 
     study: DesignStudy
@@ -105,6 +150,7 @@ class DesignResult:
     robustness: RobustnessResult | None
     sweep: SweepResult | None
     profiles: dict[str, BearingState] = field(default_factory=dict)
+    alignment: CoupledResult | None = None
 
 
 def solve_design(
@@ -122,7 +168,12 @@ def solve_design(
     if task not in TASKS:
         raise ValueError(f"task {task!r}: one of {TASKS}")
     step = progress or (lambda _: None)
-    problem = study.problem_at()(study.misalignment_ratio)
+    alignment = None
+    if study.shaft == "coupled" and study.coupled is not None:
+        step("coupled alignment: the operating point of the film bearing")
+        problem, alignment = study.coupled.problem(study.problem)
+    else:
+        problem = study.problem_at()(study.misalignment_ratio)
     found = tuned = swept = None
     if task in ("all", "slopes", "robustness"):
 
@@ -183,7 +234,7 @@ def solve_design(
         step("films of the knee, no slope and the single slope")
         g = problem.film.geometry
         knee = found.evaluations[found.knee].x
-        ratio = study.misalignment_ratio
+        ratio = problem.tilt_y * g.length / (2.0 * g.radial_clearance)
         bores = {
             "no slope": (),
             f"single slope {ratio:.3g}": (BoreSegment(1.0, ratio * 2.0 * g.radial_clearance / g.length),),
@@ -193,7 +244,7 @@ def solve_design(
             state = film_state(problem, bore)
             if state is not None:
                 profiles[label] = state
-    return DesignResult(study, problem, found, tuned, swept, profiles)
+    return DesignResult(study, problem, found, tuned, swept, profiles, alignment)
 
 
 def _chosen(found: SearchResult, which: str) -> np.ndarray:

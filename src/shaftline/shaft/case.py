@@ -63,6 +63,7 @@ from shaftline.film.problem import OperatingPoint
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
+    from shaftline.lubricants import Lubricant
     from shaftline.shaft.study import AlignmentStudy
 from shaftline.shaft.coupled import CouplingOptions, FilmSupport
 from shaftline.shaft.lift_off import FilmLimit
@@ -890,9 +891,9 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
             _condition(line, mr.condition),
             (mr.reference[0], mr.reference[1]) if mr.reference is not None else None,
         )
-    films = tuple(
-        _film_support(section, k, line) for k, bearing in enumerate(section.bearings) if bearing.film is not False
-    )
+    built = [_film_support(section, k, line) for k, bearing in enumerate(section.bearings) if bearing.film is not False]
+    films = tuple(support for support, _ in built)
+    lubricants = tuple(oil for _, oil in built)
     c = section.coupling
     coupling = CouplingOptions(c.force_tolerance, c.film_tolerance, c.max_iterations)
     fields = tuple(
@@ -912,11 +913,16 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
                 class_value=ms.class_value,
             )
         lift_off = MinimumSpeedRequest(limit, _condition(line, ms.condition), ms.lowest, ms.points, ms.tolerance)
-    return AlignmentStudy(line, tuple(rules), optimise, sag_gap, jack, reactions, films, coupling, fields, lift_off)
+    return AlignmentStudy(
+        line, tuple(rules), optimise, sag_gap, jack, reactions, films, coupling, fields, lift_off, lubricants
+    )
 
 
-def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSupport:
-    """The film of ``bearings[k]`` as a domain object (errors placed under its table)."""
+def _film_support(
+    section: AlignmentSection, k: int, line: ShaftLine
+) -> tuple[FilmSupport, tuple[Lubricant, float | None]]:
+    """The film of ``bearings[k]`` as a domain object (errors placed under its table), with its
+    lubricant and film temperature (None for a viscosity given as such)."""
     from shaftline.film.case import _bore, lubricant_properties, solver_options
     from shaftline.film.problem import BearingProblem
 
@@ -933,7 +939,7 @@ def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSup
         assert bearing.vertical_clearance is not None  # checked by the schema
         clearance = 0.5 * bearing.vertical_clearance
     with located(where):
-        _, viscosity, density = lubricant_properties(film.lubricant)
+        lubricant, viscosity, density = lubricant_properties(film.lubricant)
     with located(where, {"viscosity": "lubricant.viscosity", "density": "lubricant.density"}):
         operating = OperatingPoint(
             speed=film.speed,
@@ -957,4 +963,4 @@ def _film_support(section: AlignmentSection, k: int, line: ShaftLine) -> FilmSup
     # a rename replaces the prefix too: the operating point's fields are the film table's own
     with located(where, {"operating": where, "options": f"{where}.solver"}):
         problem = BearingProblem(geometry, operating, options)
-    return FilmSupport(bearing.name, problem, film.elements)
+    return FilmSupport(bearing.name, problem, film.elements), (lubricant, film.lubricant.temperature)

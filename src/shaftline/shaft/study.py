@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from shaftline.errors import InputError
+from shaftline.lubricants import Lubricant
 from shaftline.shaft.coupled import CouplingOptions, FilmSupport
 from shaftline.shaft.lift_off import FilmLimit
 from shaftline.shaft.model import Bearing, Condition, ShaftLine
@@ -91,7 +92,8 @@ class AlignmentStudy:
     ``films`` are the hydrodynamic bearings, supported by their film in every condition
     (:mod:`shaftline.shaft.coupled`); the procedures (offsets, sag and gap, jack-up) use the
     line's declared supports. ``film_fields`` are the case-file tables the films came from
-    (for error messages; empty from a notebook).
+    (for error messages; empty from a notebook), ``film_lubricants`` their lubricants and film
+    temperatures (for a design's temperature scenarios).
     """
 
     line: ShaftLine
@@ -104,6 +106,7 @@ class AlignmentStudy:
     coupling: CouplingOptions = CouplingOptions()
     film_fields: tuple[str, ...] = ()
     minimum_speed: MinimumSpeedRequest | None = None
+    film_lubricants: tuple[tuple[Lubricant, float | None], ...] = ()
 
 
 @dataclass(frozen=True, eq=False)
