@@ -202,3 +202,37 @@ def test_bad_design_on_an_alignment(tmp_path, extra, message):
     path.write_text(text)
     result = invoke("design", "slopes", str(path))
     assert result.exit_code == 2 and result.stderr.startswith(f"error: {message}"), result.stderr
+
+
+def test_ctrl_c_keeps_the_evaluations_and_the_search_resumes(tmp_path):
+    """SIGINT to a long search (a real process, as a user's Ctrl-C): exit 130, a line saying where
+    the evaluations are, nothing in --out; the store has whole generations, and the same search
+    started again on it takes them back and goes on."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    import pandas as pd
+
+    case, store, out = small_case(tmp_path), tmp_path / "store", tmp_path / "out"
+    command = [sys.executable, "-m", "shaftline.cli", "design", "slopes", str(case), "--generations", "500",
+               "--population", "6", "--workers", "1", "--store", str(store), "--out", str(out)]  # fmt: skip
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120.0
+    while not (store / "evaluations.parquet").exists() and time.monotonic() < deadline:
+        time.sleep(0.2)
+    time.sleep(1.0)
+    process.send_signal(signal.SIGINT)
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 130, stderr
+    assert f"kept in {store}" in stderr and not out.exists()
+    done = pd.read_parquet(store / "evaluations.parquet")
+    assert len(done) % 6 == 0 and 0 < len(done) < 3000
+    generations = len(done) // 6 + 1
+    again = invoke("design", "slopes", str(case), "--generations", str(generations), "--population", "6",
+                   "--store", str(store), "--json", "-")  # fmt: skip
+    assert again.exit_code == 0, again.stderr
+    assert json.loads(again.stdout)["design"]["search"]["evaluations"] == 6 * generations
+    resumed = pd.read_parquet(store / "evaluations.parquet")
+    assert resumed["min_film_thickness"][: len(done)].tolist() == done["min_film_thickness"].tolist()
