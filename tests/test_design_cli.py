@@ -236,3 +236,35 @@ def test_ctrl_c_keeps_the_evaluations_and_the_search_resumes(tmp_path):
     assert json.loads(again.stdout)["design"]["search"]["evaluations"] == 6 * generations
     resumed = pd.read_parquet(store / "evaluations.parquet")
     assert resumed["min_film_thickness"][: len(done)].tolist() == done["min_film_thickness"].tolist()
+
+
+def test_robustness_of_named_designs_and_of_a_file(tmp_path):
+    """Named designs need no search: `design robustness` evaluates them alone; `--designs FILE` takes
+    them from a CSV (here the front of an earlier search's design_evaluations.csv)."""
+    extra = """
+[[design.robustness.named]]
+name = "seed double slope"
+slopes = [0.31, 0.11]
+knuckles = [0.61]
+"""
+    path = small_case(tmp_path, extra=extra)
+    path.write_text(path.read_text().replace('designs = "knee"', 'designs = "named"'))
+    result = invoke("design", "robustness", str(path), "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    design = json.loads(result.stdout)["design"]
+    assert "search" not in design
+    (seed,) = design["robustness"]["designs"]
+    assert seed["name"] == "seed double slope" and seed["x"] == [0.31, 0.11, 0.61]
+    out = tmp_path / "first"
+    assert invoke("design", "slopes", str(small_case(tmp_path)), "--out", str(out)).exit_code == 0
+    front = out / "data" / "design_evaluations.csv"
+    import pandas as pd
+
+    count = int(pd.read_csv(front)["pareto"].sum())
+    result = invoke("design", "robustness", str(small_case(tmp_path)), "--designs", str(front), "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    assert len(json.loads(result.stdout)["design"]["robustness"]["designs"]) == count
+    bad = tmp_path / "bad.csv"
+    bad.write_text("name,slope_1\\nx,0.3\\n")
+    result = invoke("design", "robustness", str(small_case(tmp_path)), "--designs", str(bad))
+    assert result.exit_code == 2 and result.stderr.startswith("error: --designs"), result.stderr

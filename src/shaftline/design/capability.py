@@ -137,11 +137,6 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
     needs = ("bearing", "alignment")
     parallel = True
     verbs = (
-        Verb(
-            ("design", "robustness"),
-            "The search's chosen designs (knee or front) under the speed, load and temperature scenarios.",
-            options={"task": "robustness"},
-        ),
         Verb(("design", "sweep"), "One search per misalignment ratio of [design.sweep].", options={"task": "sweep"}),
     )
 
@@ -167,7 +162,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
         )
 
     def commands(self) -> Sequence[Command]:
-        return (Command(("design", "slopes"), slopes),)
+        return (Command(("design", "slopes"), slopes), Command(("design", "robustness"), robustness_command))
 
     def to_json(self, result: DesignResult) -> dict[str, Any]:
         study = result.study
@@ -399,3 +394,64 @@ def slopes(
 
 
 CAPABILITY = SlopeDesign()
+
+
+def read_designs(path: Path, names: Sequence[str]) -> list[dict[str, Any]]:
+    """Named designs from a CSV: the variable columns (``slope_1`` … ``knuckle_1`` …) and optionally
+    ``name``; a search's ``design_evaluations.csv`` gives its front (the rows marked ``pareto``)."""
+    import pandas as pd
+
+    from shaftline.errors import InputError
+
+    try:
+        table = pd.read_csv(path)
+    except (OSError, ValueError) as error:
+        raise InputError("--designs", str(path), "", f"a readable CSV file ({error})") from None
+    missing = [name for name in names if name not in table.columns]
+    if missing:
+        raise InputError("--designs", str(path), "", "a CSV with the columns " + ", ".join(names))
+    if "pareto" in table.columns:
+        table = table[table["pareto"].astype(bool)]
+    if table.empty:
+        raise InputError("--designs", str(path), "", "at least one design")
+    slopes = [n for n in names if n.startswith("slope_")]
+    knuckles = [n for n in names if n.startswith("knuckle_")]
+    if "name" in table.columns:
+        labels = table["name"].astype(str).tolist()
+    else:
+        labels = [f"design {k + 1}" for k in range(len(table))]
+    return [
+        {"name": label, "slopes": [float(row[n]) for n in slopes], "knuckles": [float(row[n]) for n in knuckles]}
+        for label, (_, row) in zip(labels, table.iterrows(), strict=True)
+    ]
+
+
+def robustness_command(
+    case_file: CaseArgument,
+    designs: Annotated[
+        Path | None,
+        typer.Option(
+            "--designs",
+            help="CSV of designs (name, slope_1 …, knuckle_1 …; a search's design_evaluations.csv gives its front). "
+            "Default: the case's [design.robustness].",
+        ),
+    ] = None,
+    json_path: JsonOption = None,
+    out: OutOption = None,
+    strict: StrictOption = False,
+    workers: WorkersOption = None,
+    scheduler: SchedulerOption = None,
+) -> None:
+    """The chosen designs (the knee or front of a search, named ones, or those of --designs) under the
+    speed, load and temperature scenarios."""
+    from shaftline.commandline import input_errors, parallel_options, read_and_build, run_cases
+
+    overrides: dict[str, Any] = {}
+    with input_errors():
+        options = parallel_options(["design"], workers, scheduler)
+        if designs is not None:
+            case = read_and_build(Path(case_file), ["design"])
+            names = case.studies["design"].problem.parametrisation.names
+            overrides = {"design.robustness.designs": "named", "design.robustness.named": read_designs(designs, names)}
+    options.setdefault("design", {})["task"] = "robustness"
+    run_cases(Path(case_file), json_path, out, only=["design"], options=options, overrides=overrides, strict=strict)

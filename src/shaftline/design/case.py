@@ -36,7 +36,7 @@ if TYPE_CHECKING:
 
 ObjectiveName = Literal["min_film_thickness", "max_pressure", "power_loss", "side_leakage", "support_offset"]
 ShaftModel = Literal["linear", "bent", "coupled"]
-RobustDesigns = Literal["knee", "pareto", "none"]
+RobustDesigns = Literal["knee", "pareto", "named", "none"]
 SLOPE_SHARE = Plausible(
     -3.0,
     3.0,
@@ -90,11 +90,26 @@ class ScenarioSection(Section):
     """Change of the oil's effective temperature (viscosity from the lubricant)."""
 
 
+class NamedDesignSection(Section):
+    """A bore given by its design variables (e.g. the seed's double slope), for the robustness."""
+
+    name: str
+    """Label."""
+    slopes: Annotated[list[Annotated[Number, SLOPE_SHARE]], Field(min_length=1)]
+    """Slope of each segment aft to forward, shares of 2c/L."""
+    knuckles: list[Number] = []
+    """Knuckle positions aft to forward, shares of L from the aft edge (one fewer than the slopes)."""
+
+
 class RobustnessSection(Section):
     """The chosen designs under speed, load and oil-temperature deviations."""
 
     designs: RobustDesigns = "knee"
-    """Which designs: the knee of the front, the whole front, or none."""
+    """Which designs: the knee of the front, the whole front (both need the search), the named designs below (no
+    search), or none."""
+    named: list[NamedDesignSection] = []
+    """Designs given by their variables (with designs = "named"; `design robustness --designs FILE` reads them
+    from a CSV with a name column and the variable columns, e.g. a search's design_evaluations.csv)."""
     min_film: Annotated[float, Quantity("length", gt=0), Plausible(1e-7, 5e-4, _FILM_LIMIT)] = 30e-6
     """Smallest film a design must keep in every scenario (Bureau Veritas' 30 µm, quoted by seed 004)."""
     scenarios: list[ScenarioSection] | None = None
@@ -144,6 +159,15 @@ class DesignSection(Section):
             raise field_error("slope_bounds", len(self.slope_bounds), f"{self.segments} [lower, upper] pairs")
         if self.knuckle_bounds is not None and len(self.knuckle_bounds) != self.segments - 1:
             raise field_error("knuckle_bounds", len(self.knuckle_bounds), f"{self.segments - 1} [lower, upper] pairs")
+        if self.robustness.designs == "named" and not self.robustness.named:
+            raise field_error("robustness.named", [], "at least one design with designs = 'named'")
+        for k, design in enumerate(self.robustness.named):
+            if len(design.slopes) != self.segments or len(design.knuckles) != self.segments - 1:
+                raise field_error(
+                    f"robustness.named[{k}].slopes",
+                    f"{len(design.slopes)} slopes, {len(design.knuckles)} knuckles",
+                    f"{self.segments} slopes and {self.segments - 1} knuckles ([design] segments)",
+                )
         names = [s.name for s in self.robustness.scenarios or []]
         for k, name in enumerate(names):
             if name in names[:k]:
@@ -256,6 +280,7 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         generations=search.generations,
         seed=search.seed,
         robust_designs=section.robustness.designs,
+        named=tuple((d.name, (*d.slopes, *d.knuckles)) for d in section.robustness.named),
         min_film=section.robustness.min_film,
         scenarios=scenarios,
         lubricant=lubricant,

@@ -77,7 +77,9 @@ class DesignStudy:
         The journal: the problem's tilt, or seed 004's local shaft model with the same chord.
     algorithm, population, generations, seed
         The search (:func:`shaftline.design.search.search`).
-    robust_designs : "knee", "pareto" or "none"
+    robust_designs : "knee", "pareto", "named" or "none"
+    named : tuple of (str, tuple of float)
+        The named designs (label, variables) of ``robust_designs = "named"``.
     min_film : float
         The h_min limit of the robustness verdict, m.
     scenarios : tuple of Scenario
@@ -99,7 +101,7 @@ class DesignStudy:
     population: int
     generations: int
     seed: int
-    robust_designs: Literal["knee", "pareto", "none"]
+    robust_designs: Literal["knee", "pareto", "named", "none"]
     min_film: float
     scenarios: tuple[Scenario, ...]
     lubricant: Lubricant | None
@@ -107,6 +109,7 @@ class DesignStudy:
     ratios: tuple[float, ...] = ()
     store: str | None = None
     coupled: CoupledSource | None = None
+    named: tuple[tuple[str, tuple[float, ...]], ...] = ()
 
     @property
     def misalignment_ratio(self) -> float:
@@ -162,8 +165,9 @@ def solve_design(
 ) -> DesignResult:
     """Run the search, the robustness of its chosen designs and the sweep (``task="all"``), or one.
 
-    ``"robustness"`` needs the designs of a search: it runs the search first as ``"all"`` does,
-    without the sweep; ``"sweep"`` runs only the sweep.
+    ``"robustness"`` of the knee or the front runs the search first as ``"all"`` does, without the
+    sweep; of named designs (``robust_designs = "named"``) it runs no search. ``"sweep"`` runs only
+    the sweep.
     """
     if task not in TASKS:
         raise ValueError(f"task {task!r}: one of {TASKS}")
@@ -175,7 +179,8 @@ def solve_design(
     else:
         problem = study.problem_at()(study.misalignment_ratio)
     found = tuned = swept = None
-    if task in ("all", "slopes", "robustness"):
+    named = study.robust_designs == "named"
+    if task in ("all", "slopes") or (task == "robustness" and not named):
 
         def generation(state: SearchProgress) -> None:
             eta = f", about {state.remaining:.0f} s left" if math.isfinite(state.remaining) else ""
@@ -195,23 +200,27 @@ def solve_design(
             scheduler=scheduler,
             store=study.store,
         )
-    if found is not None and task in ("all", "robustness") and study.robust_designs != "none":
+    designs, names = np.zeros((0, problem.parametrisation.variables)), []
+    if named:
+        designs = np.array([x for _, x in study.named], dtype=float)
+        names = [name for name, _ in study.named]
+    elif found is not None and study.robust_designs != "none":
         chosen = _chosen(found, study.robust_designs)
-        if chosen.size:
-            step(f"robustness of {chosen.size} design(s) in {len(study.scenarios)} scenarios")
-            designs = np.array([found.evaluations[i].x for i in chosen])
-            names = [("knee" if i == found.knee else f"front {k + 1}") for k, i in enumerate(chosen)]
-            tuned = robustness(
-                problem,
-                designs,
-                names=names,
-                scenarios=study.scenarios,
-                lubricant=study.lubricant,
-                temperature=study.temperature,
-                limit=study.min_film,
-                workers=workers,
-                scheduler=scheduler,
-            )
+        designs = np.array([found.evaluations[i].x for i in chosen]).reshape(-1, problem.parametrisation.variables)
+        names = [("knee" if i == found.knee else f"front {k + 1}") for k, i in enumerate(chosen)]
+    if task in ("all", "robustness") and names:
+        step(f"robustness of {len(names)} design(s) in {len(study.scenarios)} scenarios")
+        tuned = robustness(
+            problem,
+            designs,
+            names=names,
+            scenarios=study.scenarios,
+            lubricant=study.lubricant,
+            temperature=study.temperature,
+            limit=study.min_film,
+            workers=workers,
+            scheduler=scheduler,
+        )
     if study.ratios and task in ("all", "sweep"):
 
         def told(ratio: float, state: SearchProgress) -> None:
