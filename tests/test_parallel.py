@@ -97,6 +97,40 @@ def test_a_scheduler_that_does_not_answer_is_an_input_error(monkeypatch):
         parallel.map(abs, [1, 2], scheduler="tcp://127.0.0.1:9")
 
 
+@pytest.mark.parametrize("answer", [b"", b"HTTP/1.1 200 OK\r\n\r\n" * 4])
+def test_a_port_that_is_not_a_dask_scheduler_fails_after_the_time_out(monkeypatch, answer):
+    """A port that accepts the connection but does not speak Dask's protocol (a dashboard's HTTP
+    port, given by mistake: silent, or bytes Dask reads as a frame length) used to make Client
+    wait for ever or raise MemoryError; now a one-line InputError within the time-out."""
+    import socket
+    import threading
+
+    monkeypatch.setattr(parallel, "_CONNECT_TIMEOUT", 1.0)
+    server = socket.create_server(("127.0.0.1", 0))
+    address = f"tcp://127.0.0.1:{server.getsockname()[1]}"
+    accepted: list[socket.socket] = []
+
+    def serve() -> None:
+        while True:
+            try:
+                connection, _ = server.accept()
+            except OSError:
+                return
+            accepted.append(connection)
+            connection.sendall(answer)
+
+    threading.Thread(target=serve, daemon=True).start()
+    try:
+        start = time.perf_counter()
+        with pytest.raises(InputError, match=r"^--scheduler = .*allowed the address of a running Dask scheduler"):
+            parallel.check_scheduler(address, "--scheduler")
+        assert time.perf_counter() - start < 8.0
+    finally:
+        server.close()
+        for connection in accepted:
+            connection.close()
+
+
 @pytest.mark.parametrize("address", ["garbage", "http://127.0.0.1:8786", "", "tcp://127.0.0.1"])
 def test_an_address_dask_cannot_read_is_an_input_error(address):
     """Dask raises ValueError for these; the user gets the one line naming the option."""

@@ -302,10 +302,39 @@ def _connect(scheduler: str, field: str) -> Any:
     except ValueError as error:
         raise InputError(field, scheduler, "", f"{allowed} ({error})") from None
     try:
+        _probe(scheduler, _CONNECT_TIMEOUT)
         return Client(scheduler, timeout=_CONNECT_TIMEOUT)
-    except (OSError, ValueError, TypeError) as error:
-        # OSError: no answer; ValueError/TypeError: an address Dask cannot parse.
+    except (KeyboardInterrupt, SystemExit):
+        raise
+    except Exception as error:
+        # OSError: no answer; TimeoutError: a port that answers but not in Dask's protocol;
+        # ValueError/TypeError: an address Dask cannot parse; MemoryError and others: a
+        # service that sends bytes Dask reads as a frame length.
         raise InputError(field, scheduler, "", f"{allowed} ({type(error).__name__}: {error})") from None
+
+
+def _probe(scheduler: str, timeout: float) -> None:
+    """Open one connection to ``scheduler`` and close it, all within ``timeout`` seconds.
+
+    ``Client(address, timeout=...)`` bounds the TCP connection but not Dask's handshake: on a
+    port that accepts the connection and then waits for something else (a Dask dashboard's HTTP
+    port, which users give by mistake) it waits for ever. The probe runs in a thread of its own
+    so that it also works where an event loop is already running (a notebook).
+    """
+    import asyncio
+    from concurrent.futures import ThreadPoolExecutor
+
+    from distributed.comm import connect
+
+    async def once() -> None:
+        try:
+            comm = await asyncio.wait_for(connect(scheduler, timeout=timeout), timeout)
+        except TimeoutError:
+            raise TimeoutError(f"no answer in Dask's protocol within {timeout:g} s") from None
+        await comm.close()
+
+    with ThreadPoolExecutor(1) as thread:
+        thread.submit(asyncio.run, once()).result()
 
 
 def _wait_for_workers(client: Any, scheduler: str, field: str, timeout: float) -> None:
