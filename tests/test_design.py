@@ -50,6 +50,7 @@ def test_bore_of_a_design():
         ({"segments": 2, "knuckle_bounds": ((0.0, 0.5),)}, "knuckle_bounds[0]"),
         ({"segments": 2, "knuckle_bounds": ((0.2, 1.2),)}, "knuckle_bounds[0]"),
         ({"segments": 3, "knuckle_bounds": ((0.2, 0.5),)}, "knuckle_bounds"),
+        ({"segments": 3, "knuckle_bounds": ((0.6, 0.9), (0.1, 0.4))}, "knuckle_bounds[1]"),
     ],
 )
 def test_bad_bounds(kwargs, field):

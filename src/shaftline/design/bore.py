@@ -48,7 +48,8 @@ class SlopeParametrisation:
     ------
     InputError
         ``"segments"`` below 1; ``"slope_bounds[k]"`` or ``"knuckle_bounds[k]"`` with lower >
-        upper, a knuckle bound outside (0, 1), or the wrong number of bounds.
+        upper, a knuckle bound outside (0, 1) or below the previous knuckle's (out of order), or
+        the wrong number of bounds.
     """
 
     segments: int = 2
@@ -80,6 +81,16 @@ class SlopeParametrisation:
                     raise InputError(f"{name}[{k}]", [lower, upper], "", "lower <= upper")
                 if name == "knuckle_bounds" and not 0.0 < lower <= upper < 1.0:
                     raise InputError(f"{name}[{k}]", [lower, upper], "", "within (0, 1) of the length")
+                if name == "knuckle_bounds" and k and (lower < bounds[k - 1][0] or upper < bounds[k - 1][1]):
+                    # bore() sorts the knuckles, so bounds given forward to aft would silently
+                    # bound other knuckles than the user meant
+                    raise InputError(
+                        f"{name}[{k}]",
+                        [lower, upper],
+                        "",
+                        f"knuckles aft to forward: bounds not below those of knuckle_bounds[{k - 1}] "
+                        f"{list(bounds[k - 1])}",
+                    )
 
     @property
     def variables(self) -> int:
