@@ -90,6 +90,7 @@ def test_design_alone_builds_the_bearing_it_needs(tmp_path):
         ("slope_bounds = [[0.5, 0.1], [0.0, 0.3]]", "design.slope_bounds[0]"),
         ("knuckle_bounds = [[0.0, 0.5]]", "design.knuckle_bounds[0]"),
         ("knuckle_bounds = [[0.2, 0.5], [0.6, 0.8]]", "design.knuckle_bounds"),
+        ("segments = 3\nknuckle_bounds = [[0.6, 0.9], [0.1, 0.4]]", "design.knuckle_bounds[1]"),
         ("segments = 0", "design.segments"),
         ('objectives = ["min_film_thickness", "max_pressure", "hmin"]', "design.objectives[2]"),
     ],
@@ -268,3 +269,22 @@ knuckles = [0.61]
     bad.write_text("name,slope_1\\nx,0.3\\n")
     result = invoke("design", "robustness", str(small_case(tmp_path)), "--designs", str(bad))
     assert result.exit_code == 2 and result.stderr.startswith("error: --designs"), result.stderr
+
+
+@pytest.mark.parametrize("knuckles", [[1.5], [0.0]])
+def test_a_named_knuckle_off_the_bearing_is_refused(tmp_path, knuckles):
+    """The bore clips a knuckle to the bearing's ends: 1.5 L would silently be a single slope."""
+    extra = f"""
+[[design.robustness.named]]
+name = "off"
+slopes = [0.3, 0.1]
+knuckles = {knuckles}
+"""
+    path = small_case(tmp_path, extra=extra)
+    path.write_text(path.read_text().replace('designs = "knee"', 'designs = "named"'))
+    out = tmp_path / "out"
+    result = invoke("design", "robustness", str(path), "--out", str(out))
+    assert result.exit_code == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: design.robustness.named[0].knuckles[0]"), result.stderr
+    assert not out.exists()

@@ -168,6 +168,15 @@ class DesignSection(Section):
                     f"{len(design.slopes)} slopes, {len(design.knuckles)} knuckles",
                     f"{self.segments} slopes and {self.segments - 1} knuckles ([design] segments)",
                 )
+            knuckles = list(design.knuckles)
+            for j, position in enumerate(knuckles):
+                # the bore would clip a knuckle to the bearing's ends and sort them: say so instead
+                if not 0.0 < position < 1.0 or (j and position < knuckles[j - 1]):
+                    raise field_error(
+                        f"robustness.named[{k}].knuckles[{j}]",
+                        position,
+                        "within (0, 1) of the length, aft to forward (not below the previous knuckle)",
+                    )
         names = [s.name for s in self.robustness.scenarios or []]
         for k, name in enumerate(names):
             if name in names[:k]:
