@@ -175,7 +175,7 @@ def test_robustness_bad_inputs():
         robustness(
             ntua(), np.array([[0.3, 0.1, 0.5]]), scenarios=hot, lubricant=Lubricant.preset("SAE 30"), temperature=40.0
         )
-    assert error.value.field == "temperature_change"
+    assert error.value.field == "scenarios[0].temperature_change"
     with pytest.raises(InputError) as error:
         robustness(ntua(), np.array([[0.3, 0.1]]), backend="serial")
     assert error.value.field == "designs"
@@ -237,3 +237,14 @@ def test_best_single_slope_equals_the_misalignment():
     assert max(hmin, key=hmin.__getitem__) == 0.3
     assert hmin[0.28] == pytest.approx(hmin[0.32], rel=1e-6) and hmin[0.2] == pytest.approx(hmin[0.4], rel=1e-6)
     assert hmin[0.2] < hmin[0.28] < hmin[0.3]
+
+
+def test_search_reports_progress_each_generation():
+    """The progress callback is told after every generation: its count, the designs so far, the best
+    acceptable h_min so far (never falling) and an estimate of the time left."""
+    told = []
+    search(ntua(21, 24), population=4, generations=3, seed=1, backend="serial", progress=told.append)
+    assert [t.generation for t in told] == [1, 2, 3] and [t.evaluations for t in told] == [4, 8, 12]
+    best = [t.best_min_film for t in told]
+    assert best == sorted(best) and best[0] > 0
+    assert told[-1].remaining == 0.0 and all(t.remaining >= 0 for t in told)

@@ -20,7 +20,9 @@ EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "ntua_slope_design.
 
 
 def small_case(tmp_path: Path, extra: str = "", drop: str = "") -> Path:
-    text = EXAMPLE.read_text().replace("axial_nodes = 100", "axial_nodes = 41")
+    text = EXAMPLE.read_text()
+    text = text[: text.index("[[design.robustness.named]]")]  # the example's seed design is a reference only
+    text = text.replace("axial_nodes = 100", "axial_nodes = 41")
     text = text.replace("circumferential_nodes = 60", "circumferential_nodes = 36")
     text = text.replace("population = 40", "population = 6").replace("generations = 40", "generations = 2")
     if drop:
@@ -288,3 +290,17 @@ knuckles = {knuckles}
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: design.robustness.named[0].knuckles[0]"), result.stderr
     assert not out.exists()
+
+
+def test_a_front_on_a_bound_is_a_finding(tmp_path):
+    """A fore slope held to [0, 0.05] (the journal wants 0.3): the search moves the knuckle as far forward as
+    it may go instead, so the front sits on the knuckle's upper bound, which is said as a design
+    criterion (exit 0, 3 with --strict)."""
+    path = small_case(tmp_path)
+    path.write_text(path.read_text().replace("segments = 2", "segments = 2\nslope_bounds = [[0.0, 0.6], [0.0, 0.05]]"))
+    options = ("--generations", "8", "--population", "12")
+    result = invoke("design", "slopes", str(path), *options, "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    texts = [f["text"] for f in json.loads(result.stdout)["findings"]]
+    assert any("upper bound of knuckle_1 (0.9)" in t for t in texts), texts
+    assert invoke("design", "slopes", str(path), *options, "--strict").exit_code == 3

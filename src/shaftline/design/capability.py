@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
 
+import numpy as np
 import typer
 
 from shaftline.commandline import (
@@ -131,6 +132,17 @@ def _ratio(result: DesignResult) -> float:
     return result.problem.tilt_y * g.length / (2.0 * g.radial_clearance)
 
 
+def _deviation_table(result: RobustnessResult) -> Table:
+    """Change of h_min and p_max from each design's operating point, % (seed 004 Tables 5-14/5-15)."""
+    hmin, pmax = result.deviation("min_film_thickness"), result.deviation("max_pressure")
+    rows = []
+    for k, name in enumerate(result.names):
+        rows.append([f"{name}: Δh_min", *(f"{v:+.1f}" for v in hmin[k])])
+        rows.append([f"{name}: Δp_max", *(f"{v:+.1f}" for v in pmax[k])])
+    headers = ["change [%]", *(s.name for s in result.scenarios)]
+    return Table(headers, rows, "Deviations from the operating point, % (as seed 004 Tables 5-14/5-15)")
+
+
 class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
     key = "design"
     title = "Slope-boring design"
@@ -213,6 +225,21 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
             out.append(
                 Finding("the design search found no acceptable design (every one failed or broke a constraint).")
             )
+        if found is not None and found.pareto.size:
+            parametrisation = result.problem.parametrisation
+            front = np.array([found.evaluations[int(i)].x for i in found.pareto])
+            span = np.maximum(parametrisation.upper - parametrisation.lower, 1e-12)
+            for k, name in enumerate(parametrisation.names):
+                for side, bound in (("lower", parametrisation.lower[k]), ("upper", parametrisation.upper[k])):
+                    share = float(np.mean(np.abs(front[:, k] - bound) <= 0.02 * span[k]))
+                    if share >= 0.5:
+                        out.append(
+                            Finding(
+                                f"the design front sits on the {side} bound of {name} ({bound:g}) in "
+                                f"{share:.0%} of its designs: a wider bound may give better bores.",
+                                criterion=True,
+                            )
+                        )
         if result.robustness is not None and not result.robustness.robust().any():
             out.append(
                 Finding(
@@ -328,6 +355,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
             blocks += [
                 Heading("Robustness"),
                 _robustness_table(result.robustness),
+                _deviation_table(result.robustness),
                 Figure(
                     "design_robustness.png",
                     figures.robustness_heatmap,
@@ -336,7 +364,15 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                 ),
             ]
         if result.sweep is not None:
+            sweep = result.sweep
             blocks.append(Heading("Misalignment sweep"))
+            blocks.append(
+                DataFile(
+                    "design_sweep_fronts.csv",
+                    lambda path: sweep.dominant().to_csv(path, index=False),
+                    "the non-dominated designs of every psi_x (CSV)",
+                )
+            )
             for ratio, s in zip(result.sweep.ratios, result.sweep.searches, strict=True):
                 table = _front_table(s)
                 title = f"psi_x = {ratio:g}: " + (table.title or "")

@@ -108,7 +108,8 @@ class RobustnessSection(Section):
     """Which designs: the knee of the front, the whole front (both need the search), the named designs below (no
     search), or none."""
     named: list[NamedDesignSection] = []
-    """Designs given by their variables (with designs = "named"; `design robustness --designs FILE` reads them
+    """Designs given by their variables: marked on the front and compared along the bearing beside the knee, and
+    with designs = "named" the ones whose robustness is checked (`design robustness --designs FILE` reads them
     from a CSV with a name column and the variable columns, e.g. a search's design_evaluations.csv)."""
     min_film: Annotated[float, Quantity("length", gt=0), Plausible(1e-7, 5e-4, _FILM_LIMIT)] = 30e-6
     """Smallest film a design must keep in every scenario (Bureau Veritas' 30 µm, quoted by seed 004)."""

@@ -43,7 +43,7 @@ def pareto_front(result: SearchResult, references: Mapping[str, BearingState] | 
         ax.plot(hmin[result.knee], pmax[result.knee], "r*", ms=16, label="knee")
     for k, (label, state) in enumerate((references or {}).items()):
         if label != "knee":
-            marker = "sD^v"[k % 4]
+            marker = "sD^vP"[k % 5]
             ax.plot(state.min_film_thickness * 1e6, state.max_pressure / 1e6, marker, color="k", mfc="none", ms=9,
                     label=plain(label))  # fmt: skip
     ax.set_xlabel("smallest film h_min [µm]")
@@ -55,30 +55,34 @@ def pareto_front(result: SearchResult, references: Mapping[str, BearingState] | 
 
 def design_maps(variables: int) -> FigureFunction:
     """The figure function of the design maps of a search with ``variables`` design variables:
-    each variable against h_min, coloured by p_max (one panel per variable)."""
-    return FigureFunction(_design_maps, (1, variables), (4.0 * variables, 4.0), False)
+    each variable against h_min (top row) and against p_max (bottom row), as seed 004
+    Figs. 5-41 ff., the non-dominated designs dark."""
+    return FigureFunction(_design_maps, (2, variables), (4.0 * variables, 7.0), False)
 
 
 def _design_maps(result: SearchResult, *, ax: Any) -> Any:
     names = result.problem.parametrisation.names
     ok = np.array([e.ok for e in result.evaluations])
     x = np.array([e.x for e in result.evaluations])
-    hmin = _values(result, "min_film_thickness") * 1e6
-    pmax = _values(result, "max_pressure") / 1e6
-    axes = np.atleast_1d(ax)
-    points = None
-    for k, (axis, name) in enumerate(zip(axes, names, strict=False)):
-        points = axis.scatter(x[ok, k], hmin[ok], c=pmax[ok], s=8, cmap="inferno_r")
-        axis.set_xlabel(name + (" [× 2c/L]" if name.startswith("slope") else " [× L]"))
-        axis.set_ylabel("h_min [µm]")
-    if points is not None:
-        axes[-1].figure.colorbar(points, ax=axes[-1], label="p_max [MPa]")
+    quantities = (
+        (_values(result, "min_film_thickness") * 1e6, "h_min [µm]"),
+        (_values(result, "max_pressure") / 1e6, "p_max [MPa]"),
+    )
+    grid = np.asarray(ax).reshape(2, -1)
+    for row, (value, label) in enumerate(quantities):
+        for k, name in enumerate(names):
+            axis = grid[row, k]
+            axis.scatter(x[ok, k], value[ok], s=6, color="0.7")
+            axis.scatter(x[result.pareto, k], value[result.pareto], s=10, color="C0")
+            axis.set_xlabel(name + (" [× 2c/L]" if name.startswith("slope") else " [× L]"))
+            axis.set_ylabel(label)
     return ax
 
 
 @figure_function(size=(10, 4.5))
 def robustness_heatmap(result: RobustnessResult, *, ax: Any) -> Any:
-    """h_min of each design in each scenario (µm), the cells below the limit framed in red."""
+    """h_min of each design in each scenario (µm), the cells below the limit framed and marked, the
+    designs that keep it everywhere labelled robust."""
     names = ["operating point", *(s.name for s in result.scenarios)]
     values = np.array(
         [
@@ -93,8 +97,11 @@ def robustness_heatmap(result: RobustnessResult, *, ax: Any) -> Any:
             ax.text(j, i, f"{values[i, j] * 1e6:.0f}", ha="center", va="center", fontsize=8)
             if not values[i, j] >= result.limit:
                 ax.add_patch(_frame(ax, j, i))
+                ax.text(j, i + 0.3, "below", ha="center", va="center", fontsize=7, color="white")
     ax.set_xticks(np.arange(len(names)), [plain(n) for n in names], rotation=30, ha="right", fontsize=8)
-    ax.set_yticks(np.arange(len(result.names)), [plain(n) for n in result.names], fontsize=8)
+    robust = result.robust()
+    labels = [plain(n) + (" (robust)" if r else "") for n, r in zip(result.names, robust, strict=True)]
+    ax.set_yticks(np.arange(len(result.names)), labels, fontsize=8)
     ax.set_title(f"Robustness: h_min in each scenario (limit {result.limit * 1e6:.0f} µm)")
     return ax
 
@@ -102,7 +109,7 @@ def robustness_heatmap(result: RobustnessResult, *, ax: Any) -> Any:
 def _frame(ax: Any, column: int, row: int) -> Any:
     from matplotlib.patches import Rectangle
 
-    return Rectangle((column - 0.5, row - 0.5), 1, 1, fill=False, edgecolor="red", linewidth=2)
+    return Rectangle((column - 0.45, row - 0.45), 0.9, 0.9, fill=False, edgecolor="black", linewidth=2.5)
 
 
 @figure_function(layout=(2, 1), size=(9, 6.5), sharex=True)

@@ -21,7 +21,7 @@ import numpy as np
 
 from shaftline import parallel
 from shaftline.design.problem import DesignEvaluation, SlopeDesignProblem, evaluate_design
-from shaftline.errors import InputError, require_finite, require_positive
+from shaftline.errors import InputError, located, require_finite, require_positive
 from shaftline.lubricants import Lubricant
 
 __all__ = ["SEED_SCENARIOS", "RobustnessResult", "Scenario", "robustness"]
@@ -216,7 +216,10 @@ def robustness(
     labels = names or [f"design {k + 1}" for k in range(designs.shape[0])]
     if len(labels) != designs.shape[0]:
         raise InputError("names", len(labels), "", f"{designs.shape[0]} names, one per design")
-    variants = [problem] + [_scenario_problem(problem, s, lubricant, temperature) for s in scenarios]
+    variants = [problem]
+    for k, scenario in enumerate(scenarios):
+        with located(f"scenarios[{k}]", {"lubricant": "lubricant"}):
+            variants.append(_scenario_problem(problem, scenario, lubricant, temperature))
     pairs = [(variant, x) for x in designs for variant in variants]
     results = parallel.map(
         _evaluate_pair,

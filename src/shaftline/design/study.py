@@ -15,6 +15,7 @@ from shaftline.design.problem import SlopeDesignProblem, film_state
 from shaftline.design.robustness import RobustnessResult, Scenario, robustness
 from shaftline.design.search import SearchProgress, SearchResult, search
 from shaftline.design.sweep import SweepResult, misalignment_sweep
+from shaftline.errors import located
 from shaftline.film.bearing import BearingState
 from shaftline.film.geometry import BentJournal, BoreSegment
 from shaftline.lubricants import Lubricant
@@ -189,17 +190,18 @@ def solve_design(
                 f"best h_min {state.best_min_film * 1e6:.1f} µm{eta}"
             )
 
-        found = search(
-            problem,
-            study.algorithm,
-            study.population,
-            study.generations,
-            study.seed,
-            progress=generation,
-            workers=workers,
-            scheduler=scheduler,
-            store=study.store,
-        )
+        with located("search"):
+            found = search(
+                problem,
+                study.algorithm,
+                study.population,
+                study.generations,
+                study.seed,
+                progress=generation,
+                workers=workers,
+                scheduler=scheduler,
+                store=study.store,
+            )
     designs, names = np.zeros((0, problem.parametrisation.variables)), []
     if named:
         designs = np.array([x for _, x in study.named], dtype=float)
@@ -210,17 +212,18 @@ def solve_design(
         names = [("knee" if i == found.knee else f"front {k + 1}") for k, i in enumerate(chosen)]
     if task in ("all", "robustness") and names:
         step(f"robustness of {len(names)} design(s) in {len(study.scenarios)} scenarios")
-        tuned = robustness(
-            problem,
-            designs,
-            names=names,
-            scenarios=study.scenarios,
-            lubricant=study.lubricant,
-            temperature=study.temperature,
-            limit=study.min_film,
-            workers=workers,
-            scheduler=scheduler,
-        )
+        with located("robustness"):
+            tuned = robustness(
+                problem,
+                designs,
+                names=names,
+                scenarios=study.scenarios,
+                lubricant=study.lubricant,
+                temperature=study.temperature,
+                limit=study.min_film,
+                workers=workers,
+                scheduler=scheduler,
+            )
     if study.ratios and task in ("all", "sweep"):
 
         def told(ratio: float, state: SearchProgress) -> None:
@@ -249,6 +252,8 @@ def solve_design(
             f"single slope {ratio:.3g}": (BoreSegment(1.0, ratio * 2.0 * g.radial_clearance / g.length),),
             "knee": problem.parametrisation.bore(knee, g.length, g.radial_clearance),
         }
+        for name, x in study.named:  # e.g. the seed's own design, marked beside the front
+            bores[name] = problem.parametrisation.bore(np.asarray(x, dtype=float), g.length, g.radial_clearance)
         for label, bore in bores.items():
             state = film_state(problem, bore)
             if state is not None:
