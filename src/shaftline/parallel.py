@@ -1,9 +1,9 @@
 """The one way shaftline runs many independent jobs: serially, on a local process pool or a
 Dask cluster, through :func:`map`.
 
-Sweeps, searches and robustness tables all go through :func:`map`, so a notebook, the
-command line and a cluster run the same code. The backends are a small registry,
-:data:`BACKENDS` (the style of SciPy's ``method=`` choices):
+Sweeps, searches and robustness tables all go through :func:`map` (a :class:`Pool` for one
+call), so a notebook, the command line and a cluster run the same code. The backends are
+named in :data:`BACKENDS` (the style of SciPy's ``method=`` choices):
 
 ``"serial"``
     In this process, one item after the other (the reference: the others give the same
@@ -40,7 +40,7 @@ from typing import Any, TypeVar
 
 from shaftline.errors import InputError
 
-__all__ = ["BACKENDS", "Backend", "Pool", "available_workers", "backend_name", "check_scheduler", "map"]
+__all__ = ["BACKENDS", "Pool", "available_workers", "backend_name", "check_scheduler", "map"]
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -51,11 +51,6 @@ _CONNECT_TIMEOUT = 10.0
 _WORKER_TIMEOUT = 60.0
 #: ``progress(done, total)``: told, in the calling process, how many items are finished.
 ProgressCallback = Callable[[int, int], None]
-#: A backend: ``(function, batches, workers, scheduler, on_batch)`` -> one result list per
-#: batch, in batch order; ``on_batch(index)`` is called as each batch finishes.
-Backend = Callable[
-    [Callable[[Any], Any], list[list[Any]], int | None, str | None, Callable[[int], None]], list[list[Any]]
-]
 
 
 def available_workers() -> int:
@@ -72,11 +67,7 @@ def _run_batch(function: Callable[[T], R], batch: list[T]) -> list[R]:
 
 
 def _serial(
-    function: Callable[[Any], Any],
-    batches: list[list[Any]],
-    workers: int | None,
-    scheduler: str | None,
-    on_batch: Callable[[int], None],
+    function: Callable[[Any], Any], batches: list[list[Any]], on_batch: Callable[[int], None]
 ) -> list[list[Any]]:
     results = []
     for index, batch in enumerate(batches):
@@ -165,39 +156,6 @@ def _gather_process(
     return results
 
 
-def _process(
-    function: Callable[[Any], Any],
-    batches: list[list[Any]],
-    workers: int | None,
-    scheduler: str | None,
-    on_batch: Callable[[int], None],
-) -> list[list[Any]]:
-    executor = _new_executor(function, min(workers or available_workers(), len(batches)))
-    try:
-        results = _gather_process(executor, function, batches, on_batch)
-    except BaseException:
-        _stop(executor)
-        raise
-    executor.shutdown(wait=True)
-    return results
-
-
-def _dask(
-    function: Callable[[Any], Any],
-    batches: list[list[Any]],
-    workers: int | None,
-    scheduler: str | None,
-    on_batch: Callable[[int], None],
-) -> list[list[Any]]:
-    client, cluster = _dask_client(min(workers or available_workers(), len(batches)), scheduler)
-    try:
-        return _gather_dask(client, function, batches, on_batch)
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
-
-
 def _dask_client(workers: int, scheduler: str | None) -> tuple[Any, Any]:
     """A client of the scheduler at ``scheduler`` (checked to have a worker), or of a
     ``LocalCluster`` of ``workers`` processes started for it; and that cluster (or None)."""
@@ -249,8 +207,8 @@ def _gather_dask(
             client.cancel(futures)
 
 
-#: The backends by name (``backend=`` of :func:`map`).
-BACKENDS: dict[str, Backend] = {"serial": _serial, "process": _process, "dask": _dask}
+#: The backends by name (``backend=`` of :func:`map` and :class:`Pool`).
+BACKENDS = ("serial", "process", "dask")
 
 
 def backend_name(backend: str | None, workers: int | None, scheduler: str | None) -> str:
@@ -391,6 +349,8 @@ class Pool:
             self.backend = "serial"
         self.workers = workers
         self.scheduler = scheduler
+        #: Workers to start: ``workers``, else one per core (:func:`map` caps it at its jobs).
+        self.size = workers or available_workers()
         self._executor: ProcessPoolExecutor | None = None
         self._client: Any = None
         self._cluster: Any = None
@@ -416,10 +376,10 @@ class Pool:
         if not batches:
             return []
         if self.backend == "serial":
-            results = _serial(function, batches, None, None, on_batch)
+            results = _serial(function, batches, on_batch)
         elif self.backend == "process":
             if self._executor is None:
-                self._executor = _new_executor(function, self.workers or available_workers())
+                self._executor = _new_executor(function, self.size)
             try:
                 results = _gather_process(self._executor, function, batches, on_batch)
             except BaseException:
@@ -428,7 +388,7 @@ class Pool:
                 raise
         else:
             if self._client is None:
-                self._client, self._cluster = _dask_client(self.workers or available_workers(), self.scheduler)
+                self._client, self._cluster = _dask_client(self.size, self.scheduler)
             results = _gather_dask(self._client, function, batches, on_batch)
         return [result for batch in results for result in batch]
 
@@ -497,11 +457,9 @@ def map(
     >>> parallel.map(abs, [-2, 3, -5], backend="serial")
     [2, 3, 5]
     """
-    name = backend_name(backend, workers, scheduler)
-    batches, on_batch = _batched(items, chunksize, progress)
-    if not batches:
-        return []
-    if name == "process" and workers == 1:
-        name = "serial"
-    results = BACKENDS[name](function, batches, workers, scheduler, on_batch)
-    return [result for batch in results for result in batch]
+    pool = Pool(backend, workers, scheduler)
+    jobs = len(_batched(items, chunksize, None)[0])
+    # a pool for one call: no more workers than jobs (a LocalCluster or process each costs a start)
+    pool.size = max(1, min(pool.size, jobs))
+    with pool:
+        return pool.map(function, items, chunksize=chunksize, progress=progress)
