@@ -36,6 +36,9 @@ bench:
 	.venv-bench/bin/python benchmarks/bench_wear.py
 	.venv-bench/bin/python benchmarks/bench_cpp.py
 	.venv-bench/bin/python benchmarks/bench_contact_qp.py
+	.venv-bench/bin/python benchmarks/bench_coupled.py
+	.venv-bench/bin/python benchmarks/bench_ntua_line.py
+	.venv-bench/bin/python benchmarks/bench_design.py 10
 	.venv-bench/bin/python benchmarks/bench_startup.py
 
 clean:
