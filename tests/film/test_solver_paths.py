@@ -154,7 +154,8 @@ def test_equilibrium_started_from_a_neighbours_set_is_the_same_equilibrium(tilt_
     position to 1e-9 of the clearance and on its pressure to the module's tolerance: the
     Newton iterations of both end below the same force tolerance, and the pressure of each
     film solution is the unique LCP solution (the argument at the top of this file). The
-    neighbour's set must also spare active-set iterations in the first film solution.
+    neighbour's set must not cost more active-set iterations in the first film solution than
+    the cold start (whose coarse-grid prediction, relaxed, is often already the final set).
     """
     bearing = make_bearing(1.0, axial_nodes=41, circumferential_nodes=144, tolerance=1e-10)
     load = -6e3
@@ -187,7 +188,7 @@ def test_equilibrium_started_from_a_neighbours_set_is_the_same_equilibrium(tilt_
     first_cold = bearing.solve_at(start, warm_start=False)
     bearing.solve_at(neighbour.state.position, warm_start=False)
     first_warm = bearing.solve_at(start)  # warm from the neighbour's set, as initial_cavitated does
-    assert first_warm.iterations < first_cold.iterations
+    assert first_warm.iterations <= first_cold.iterations
     np.testing.assert_array_equal(first_warm.cavitated, first_cold.cavitated)
 
 
