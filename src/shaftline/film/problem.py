@@ -432,6 +432,16 @@ class BearingProblem:
 
     def __post_init__(self) -> None:
         self._check_cell_shape()
+        if self.geometry.surface is not None and self.options.cavitation == "jfo":
+            # The JFO void transport rides on the smooth Couette flux (jfo.py); its rough form
+            # (mean gap and shear flow factor) is not derived yet.
+            raise InputError(
+                "options.cavitation",
+                self.options.cavitation,
+                "",
+                "reynolds or half_sommerfeld with rough surfaces (geometry.surface): the mass-conserving "
+                "model has no flow factors yet",
+            )
         if self.options.cavitation == "jfo" and self.operating.feed_pressure <= self.operating.cavitation_pressure:
             raise InputError(
                 "operating.cavitation_pressure",
