@@ -75,6 +75,35 @@ FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
 ]
 
 
+#: Results of rough surfaces (``geometry.surface``, a ``[bearing.surface]`` table), written only
+#: for a rough film: a smooth film's JSON keeps exactly its keys.
+MIXED_FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
+    ("min_film_ratio", "-", "h_min / composite RMS roughness sigma (lambda)", lambda s: s.min_film_ratio),
+    (
+        "lubrication_regime",
+        "-",
+        "boundary (lambda < 1), mixed (1-3) or full film (> 3), from h_min",
+        lambda s: s.lubrication_regime,
+    ),
+    ("asperity_load", "N", "magnitude of the asperity contact force (Greenwood-Tripp)", lambda s: s.asperity_load),
+    (
+        "asperity_load_share",
+        "-",
+        "share of the carried load on the asperities (their force along the total force / total force)",
+        lambda s: s.asperity_load_share,
+    ),
+    ("max_asperity_pressure", "Pa", "largest asperity contact pressure", lambda s: s.max_asperity_pressure),
+    ("contact_area_ratio", "-", "real asperity contact area / bore area", lambda s: s.contact_area_ratio),
+    ("fluid_friction_force", "N", "friction force of the film's shear", lambda s: s.fluid_friction_force),
+    (
+        "boundary_friction_force",
+        "N",
+        "friction force of the asperities (boundary coefficient x asperity load)",
+        lambda s: s.boundary_friction_force,
+    ),
+]
+
+
 def _clean(value: Any) -> Any:
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
@@ -84,13 +113,15 @@ def _clean(value: Any) -> Any:
 
 
 def state_summary(state: BearingState) -> dict[str, Any]:
-    """Scalar results of a film solution, keyed as in :data:`FIELDS`."""
-    return {key: _clean(getter(state)) for key, _, _, getter in FIELDS}
+    """Scalar results of a film solution, keyed as in :data:`FIELDS` (and :data:`MIXED_FIELDS`
+    for rough surfaces)."""
+    fields = FIELDS + MIXED_FIELDS if state.asperity_pressure is not None else FIELDS
+    return {key: _clean(getter(state)) for key, _, _, getter in fields}
 
 
-def units() -> dict[str, str]:
-    """Unit of every key of :func:`state_summary`."""
-    return {key: unit for key, unit, _, _ in FIELDS}
+def units(mixed: bool = False) -> dict[str, str]:
+    """Unit of every key of :func:`state_summary` (with ``mixed``, of the rough-surface keys too)."""
+    return {key: unit for key, unit, _, _ in (FIELDS + MIXED_FIELDS if mixed else FIELDS)}
 
 
 def equilibrium_summary(equilibrium: Equilibrium, coefficients: DynamicCoefficients | None = None) -> dict[str, Any]:
@@ -144,6 +175,7 @@ EXTRA_UNITS = {key: unit for key, unit, _ in EXTRA_FIELDS}
 def field_table() -> str:
     """The Markdown table of every JSON field of a bearing case (the README's)."""
     rows = [(key, unit, text) for key, unit, text, _ in FIELDS] + EXTRA_FIELDS
+    rows += [(key, unit, f"{text} (with [bearing.surface] only)") for key, unit, text, _ in MIXED_FIELDS]
     return (
         "| key | unit | meaning |\n|---|---|---|\n"
         + "\n".join(f"| `{key}` | {unit} | {text} |" for key, unit, text in rows)
