@@ -37,16 +37,16 @@ def sweep() -> dict[float, object]:
 
 def test_thick_film_reproduces_the_smooth_solver() -> None:
     """A rough film with h >> sigma is the smooth film: the flow-factor corrections are below
-    0.9 exp(-0.56 lambda) (pressure) and 1.13 exp(-lambda/4) sigma/h (shear), < 1e-7 at the
-    lambda_min of about 60 here, and the asperity pressure is zero above lambda = 12: the
-    results agree to 1e-6."""
+    0.9 exp(-0.56 lambda) (pressure) and 1.13 exp(-lambda/4) sigma/h (shear), < 1e-10 at the
+    lambda_min of 87 here (215 rpm, sigma = 0.28 um), the mean gap is h to rounding and the
+    asperity pressure is zero above lambda = 12: the results agree to 1e-9 (measured 1e-12)."""
     smooth_geometry = replace(RIG, surface=None)
     rough_geometry = replace(RIG, surface=SurfaceRoughness.from_ra(0.1e-6, 0.2e-6))
     smooth = _rig(215, smooth_geometry).equilibrium(load_y=-LOAD).state
     rough = _rig(215, rough_geometry).equilibrium(load_y=-LOAD).state
-    assert rough.min_film_ratio > 50
+    assert rough.min_film_ratio > 80
     for name in ("eccentricity_ratio", "attitude_angle", "min_film_thickness", "max_pressure", "friction_force"):
-        assert getattr(rough, name) == pytest.approx(getattr(smooth, name), rel=1e-6), name
+        assert getattr(rough, name) == pytest.approx(getattr(smooth, name), rel=1e-9), name
     assert rough.asperity_load == 0.0 and rough.boundary_friction_force == 0.0
     assert rough.lubrication_regime == "full film"
 
