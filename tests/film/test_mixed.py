@@ -145,3 +145,22 @@ def test_mass_conserving_model_with_roughness_is_refused() -> None:
     with pytest.raises(InputError) as info:
         JournalBearing(RIG, operating, SolverOptions(cavitation="jfo"))
     assert info.value.field == "options.cavitation"
+
+
+def test_rough_pressure_does_not_depend_on_the_path() -> None:
+    """The rough stencil is again a symmetric M-matrix (positive conductances H^3 phi_x), so its
+    Reynolds-condition problem has one solution (tests/film/test_solver_paths.py): cold and
+    warm starts match the plain active-set reference solved by spsolve to 1e-9 of the largest
+    pressure, in the boundary regime (15 rpm, lambda_min 0.9)."""
+    from tests.film.test_solver_paths import TOLERANCE, _reference, _relative
+
+    bearing = _rig(15)
+    position = bearing.equilibrium(load_y=-LOAD).state.position
+    nearby = replace(position, ey=0.999 * position.ey, ez=position.ez + 2e-6)
+    reference = _reference(bearing, position)
+    cold = bearing.solve_at(position, warm_start=False)
+    assert cold.lubrication_regime == "boundary"
+    assert _relative(bearing, cold.pressure, reference) <= TOLERANCE
+    bearing.solve_at(nearby, warm_start=False)
+    warm = bearing.solve_at(position, warm_start=True)
+    assert np.array_equal(warm.pressure, cold.pressure)

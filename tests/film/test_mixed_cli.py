@@ -142,3 +142,22 @@ def test_a_roughness_near_the_clearance_is_refused(rig: Path, tmp_path: Path) ->
     assert result.stderr.strip().startswith("error: bearing.surface.bore_roughness = ")
     assert "half the radial clearance" in result.stderr
     assert not (tmp_path / "r.json").exists()
+
+
+def test_stribeck_of_a_smooth_case_has_no_regimes(tmp_path: Path) -> None:
+    """Without [bearing.surface] the sweep runs (friction and h_min against speed) and has no
+    regime or transition speed: nothing in it says where asperities would touch."""
+    path = tmp_path / "smooth.toml"
+    text = RIG.split("[bearing.surface]")[0] + "[bearing.stribeck]" + RIG.split("[bearing.stribeck]")[1]
+    path.write_text(
+        text.replace('speed = "35 rpm"', 'speed = "300 rpm"')
+        .replace('lowest = "20 rpm"', 'lowest = "150 rpm"')
+        .replace("points = 8", "points = 3")
+    )
+    out = tmp_path / "out"
+    result = invoke("bearing", "stribeck", str(path), "--out", str(out), "--workers", "1")
+    assert result.exit_code == 0, result.output
+    curve = json.loads((out / "results.json").read_text())["bearing"]["stribeck"]
+    assert curve["transition_speed_rpm"] is None and curve["lubrication_regime"] == [None, None, None]
+    assert curve["min_film_ratio"] == [None, None, None]  # infinite for smooth surfaces
+    assert (out / "figures" / "bearing_stribeck.png").stat().st_size > 10_000

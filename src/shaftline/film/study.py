@@ -175,7 +175,17 @@ def solve_study(
 
         if progress is not None:
             progress(f"{study.cases[0].name}: Stribeck curve, {len(study.stribeck_speeds)} speeds")
+
+        def chunks_done(done: int, total: int) -> None:
+            if progress is not None:
+                progress(f"{study.cases[0].name}: Stribeck curve, {done} of {total} groups of speeds done")
+
         curve = stribeck_curve(
-            study.cases[0], study.stribeck_speeds, backend=backend, workers=workers, scheduler=scheduler
+            study.cases[0],
+            study.stribeck_speeds,
+            backend=backend,
+            workers=workers,
+            scheduler=scheduler,
+            progress=chunks_done,
         )
     return BearingStudyResult(tuple(results), curve)
