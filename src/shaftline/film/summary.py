@@ -172,10 +172,29 @@ EXTRA_FIELDS: list[tuple[str, str, str]] = [
 EXTRA_UNITS = {key: unit for key, unit, _ in EXTRA_FIELDS}
 
 
+#: (key, unit, description) of the ``stribeck`` block of ``shaftline bearing stribeck``.
+STRIBECK_FIELDS: list[tuple[str, str, str]] = [
+    ("stribeck.speed_rpm", "rpm", "speeds of the sweep (the base case's load and tilt)"),
+    ("stribeck.friction_coefficient", "-", "friction force / load at each speed (the Stribeck curve)"),
+    ("stribeck.asperity_load_share", "-", "share of the load on the asperities at each speed"),
+    ("stribeck.min_film_thickness", "m", "h_min at each speed"),
+    ("stribeck.min_film_ratio", "-", "h_min / sigma at each speed (null for smooth surfaces)"),
+    ("stribeck.lubrication_regime", "-", "boundary, mixed or full film at each speed (null when smooth)"),
+    ("stribeck.converged", "-", "equilibrium reached at each speed"),
+    ("stribeck.contact", "-", "load not carried within the clearance at each speed"),
+    (
+        "stribeck.transition_speed_rpm",
+        "rpm",
+        "speed above which the asperities carry less than 1 % of the load (null: not crossed in the range)",
+    ),
+]
+
+
 def field_table() -> str:
     """The Markdown table of every JSON field of a bearing case (the README's)."""
     rows = [(key, unit, text) for key, unit, text, _ in FIELDS] + EXTRA_FIELDS
     rows += [(key, unit, f"{text} (with [bearing.surface] only)") for key, unit, text, _ in MIXED_FIELDS]
+    rows += [(key, unit, f"{text} (`bearing stribeck` only)") for key, unit, text in STRIBECK_FIELDS]
     return (
         "| key | unit | meaning |\n|---|---|---|\n"
         + "\n".join(f"| `{key}` | {unit} | {text} |" for key, unit, text in rows)
