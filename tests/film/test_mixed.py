@@ -189,3 +189,25 @@ def test_seed001_rig_example_moves_from_boundary_towards_full_film() -> None:
     assert states[0].lubrication_regime in ("boundary", "mixed") and states[0].asperity_load_share > 0.01
     assert states[0].min_film_ratio < states[1].min_film_ratio < states[2].min_film_ratio
     assert states[0].asperity_load_share > states[1].asperity_load_share > states[2].asperity_load_share
+
+
+def test_stribeck_curve_is_the_same_on_a_pool_and_a_rough_bearing_pickles() -> None:
+    """Chunks depend on the speeds only, so a pool of two gives the serial curve bit for bit;
+    a rough bearing sent to another process (pickled: problem only) solves the same."""
+    import pickle
+
+    from shaftline.film.stribeck import stribeck_curve
+    from shaftline.film.study import BearingCase
+
+    case = BearingCase("rig", RIG, OperatingPoint(speed=1.0, viscosity=1e-3, density=1000.0), SolverOptions(), -LOAD)
+    speeds = np.array([10, 25, 60, 150]) * math.pi / 30
+    serial = stribeck_curve(case, speeds, workers=1, chunk_size=2)
+    pooled = stribeck_curve(case, speeds, workers=2, chunk_size=2)
+    for name in ("friction_coefficient", "asperity_load_share", "min_film_thickness"):
+        assert np.array_equal(getattr(serial, name), getattr(pooled, name)), name
+    assert serial.regime == ("boundary", "mixed", "full film", "full film")
+    bearing = _rig(15)
+    copy = pickle.loads(pickle.dumps(bearing))
+    a = bearing.equilibrium(load_y=-LOAD).state
+    b = copy.equilibrium(load_y=-LOAD).state
+    assert a.asperity_load == b.asperity_load and a.friction_force == b.friction_force

@@ -116,8 +116,11 @@ def stribeck_curve(
     workers: int | None = None,
     scheduler: str | None = None,
     progress: Callable[[int, int], None] | None = None,
+    chunk_size: int = CHUNK_SIZE,
 ) -> StribeckCurve:
-    """Friction coefficient, asperity share and h_min of ``case`` at each of ``speeds`` (rad/s).
+    """Friction coefficient, asperity share and h_min of ``case`` at each of ``speeds`` (rad/s),
+    in warm-started chunks of ``chunk_size`` speeds over :func:`shaftline.parallel.map`
+    (``backend``, ``workers``, ``scheduler`` as there; ``progress(done, total)`` per chunk).
 
     Raises
     ------
@@ -130,7 +133,7 @@ def stribeck_curve(
     values = np.sort(np.asarray(speeds, dtype=float))
     if values.size < 2 or not np.all(np.isfinite(values)) or values[0] <= 0.0:
         raise InputError("speeds", list(map(float, values)), "rad/s", "two or more finite speeds > 0")
-    chunks = [values[k : k + CHUNK_SIZE] for k in range(0, values.size, CHUNK_SIZE)]
+    chunks = [values[k : k + chunk_size] for k in range(0, values.size, chunk_size)]
     solved = parallel.map(
         functools.partial(_solve_chunk, case),
         chunks,
