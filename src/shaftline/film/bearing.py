@@ -171,7 +171,8 @@ class BearingState:
         (``solve_at(..., warm_start=True)``) needs fewer for the same result.
     asperity_pressure : ndarray (nz, nt) or None
         Greenwood-Tripp asperity contact pressure, Pa (rough surfaces, ``geometry.surface``;
-        None when smooth). ``force_y``, ``force_z``, the moments and ``load_capacity`` include it.
+        None when smooth). ``force_y``, ``force_z``, the moments and ``load_capacity`` include it;
+        ``pressure`` and ``max_pressure`` are the film's alone.
     asperity_load : float
         Magnitude of the asperity force on the journal, N.
     asperity_load_share : float
