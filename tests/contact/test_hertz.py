@@ -99,3 +99,29 @@ def test_bad_input_names_the_field():
         hertz.reduced_modulus(E_STEEL, 0.3, E_STEEL, 0.6)
     with pytest.raises(InputError, match="method"):
         hertz.point_contact(100.0, 0.01, 0.01, E_PRIME, "nope")
+
+
+def test_axis_stresses_of_a_circle_match_johnson():
+    # The quadrature of Boussinesq's stresses against the closed forms on the axis of a circular
+    # contact (Johnson Eq. 3.45): sigma_r = -(1+nu)(1 - z atan(1/z)) + 1/(2(1+z^2)),
+    # sigma_z = -1/(1+z^2), z in units of a; 1e-5 (24 x 48 Gauss nodes: found 5e-6, the square-root
+    # edge of the pressure slows Gauss convergence; 2e-7 with 64 x 128).
+    z = np.array([0.1, 0.3, 0.48, 1.0, 2.0])
+    sx, sy, sz = hertz.axis_stresses(1.0, z, 0.3)
+    sr = -(1.3) * (1 - z * np.arctan(1 / z)) + 0.5 / (1 + z**2)
+    np.testing.assert_allclose(sx, sr, atol=1e-5)
+    np.testing.assert_allclose(sy, sr, atol=1e-5)
+    np.testing.assert_allclose(sz, -1 / (1 + z**2), atol=1e-5)
+
+
+def test_elliptical_subsurface_shear_between_circle_and_line():
+    # Limits: the circle (Johnson Fig. 3.9: 0.31 p0 at 0.48 a) and the line contact (0.300 p0 at
+    # 0.786 b) as k grows; 0.005 and 0.01 b (table interpolation and Johnson's rounding).
+    ratio, depth = hertz.elliptical_max_shear(np.array([1.0, 100.0, 1e4]))
+    assert ratio[0] == pytest.approx(0.31, abs=0.005) and depth[0] == pytest.approx(0.48, abs=0.01)
+    assert ratio[1] == pytest.approx(0.300, abs=0.005) and depth[1] == pytest.approx(0.786, abs=0.01)
+    assert ratio[2] == pytest.approx(0.300, abs=0.001)
+    # and along a point contact of growing ellipticity the depth moves from 0.48 b to 0.79 b
+    c = hertz.point_contact(300.0, 0.004, 0.004 * np.array([1.0, 4.0, 30.0]), E_PRIME)
+    np.testing.assert_array_less(np.diff(c.max_shear_depth / c.semi_axis_x), 0.4)
+    assert np.all(np.diff(c.max_shear_depth / c.semi_axis_x) > 0)
