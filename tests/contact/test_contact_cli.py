@@ -82,3 +82,21 @@ def test_extrapolate_turns_the_range_error_into_a_warning(tmp_path):
     assert "Extrapolated" in result.stdout
     warnings = json.loads((tmp_path / "out" / "results.json").read_text())["contact"]["warnings"]
     assert warnings and "[-20, 200] degC" in warnings[0]
+
+
+def test_boundary_dominated_contact_is_a_design_finding(tmp_path):
+    # 0.5 m/s leaves a film of a few nm: the film carries less than half the load (g < 0.5)
+    text = (
+        EXAMPLE.read_text()
+        .replace('speed = "69.6 m/s"', 'speed = "0.45 m/s"')
+        .replace('speed = "76.9 m/s"', 'speed = "0.5 m/s"')
+    )
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    result = invoke("contact", "ehl", str(case), "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    document = json.loads(result.stdout)
+    assert document["contact"]["lubrication"] == "boundary-dominated"
+    assert any("boundary-dominated" in f["text"] and f["criterion"] for f in document["findings"])
+    strict = invoke("contact", "ehl", str(case), "--strict", "--json", "-")
+    assert strict.exit_code == 3

@@ -116,11 +116,12 @@ def thermal_correction(power: ArrayLike, slide_roll: ArrayLike, extrapolate: boo
         c = (0.39 - 0.28 * log_x) * s ** -(0.088 * log_x + 0.220)
     if np.any(outside):
         value = float(np.broadcast_to(x, outside.shape)[outside][0])
-        allowed = f"in [{low}, {high}] Pa s GPa m/s where S > S_m (range of the fit of seed 002 Eq. 6)"
+        bounds = f"[{low}, {high}] Pa s GPa m/s where S > S_m (the fit range of seed 002 Eq. 6)"
         if not extrapolate:
-            raise InputError("eta0 p_H u", value, "Pa s GPa m/s", allowed + "; extrapolate=true to go beyond")
+            raise InputError("eta0 p_H u", value, "Pa s GPa m/s", f"in {bounds}; extrapolate=true to go beyond")
         warnings.warn(
-            f"eta0 p_H u = {value:g} Pa s GPa m/s is outside {allowed}: extrapolated",
+            f"eta0 p_H u = {value:g} Pa s GPa m/s is outside the validity range {bounds}: extrapolated, c clipped to "
+            "[0, 1]",
             ExtrapolationWarning,
             stacklevel=2,
         )

@@ -52,11 +52,11 @@ def check_range(
     outside = ~((array >= low) & (array <= high))
     if np.any(outside):
         value = float(array[outside].flat[0]) if array.ndim else float(array)
-        allowed = f"in [{low:g}, {high:g}] {unit}".rstrip() + (f" ({what})" if what else "")
+        bounds = f"[{low:g}, {high:g}] {unit}".rstrip() + (f" ({what})" if what else "")
         if not extrapolate:
-            raise InputError(field_name, value, unit, allowed + "; extrapolate=true to go beyond with a warning")
+            raise InputError(field_name, value, unit, f"in {bounds}; extrapolate=true to go beyond with a warning")
         warnings.warn(
-            f"{field_name} = {value:g} {unit} is outside the validity range {allowed}: extrapolated",
+            f"{field_name} = {value:g} {unit} is outside the validity range {bounds}: extrapolated",
             ExtrapolationWarning,
             stacklevel=3,
         )
