@@ -163,7 +163,7 @@ class LubricatedContact(Capability["ContactSection", "ContactStudy", "ContactRes
         if not line:
             from shaftline.contact.ehl import REGIMES
 
-            rows.insert(6, ["EHL regime (Hamrock-Dowson map)", REGIMES[int(op.regime)]])
+            rows.insert(6, ["EHL regime (point-contact map, theory 15.2)", REGIMES[int(op.regime)]])
         return Table(
             ["quantity", "value"], rows, f"Lubricated contact, {study.model.lubricant.name} at {study.temperature:g} °C"
         )

@@ -20,11 +20,10 @@ Formulas (every one vectorised over numpy arrays):
 * point, isoviscous-elastic (soft contacts), Hamrock & Dowson (1978):
   ``Hc = 7.32 U^0.64 W^-0.22 (1 - 0.72 e^-0.28k)``, ``Hmin = 7.43 U^0.65 W^-0.21 (1 - 0.85 e^-0.31k)``;
 * regime map of point contacts: the minimum film of the four regimes rigid/elastic x
-  isoviscous/piezoviscous (Hamrock & Dowson 1981 and Esfahanian & Hamrock 1991,
-  ``H^ = H (W/U)^2``, ``gV = G W^3 / U^2``, ``gE = W^(8/3) / U^2``); the boundaries of the map
-  are where neighbouring formulas give the same film and the regime is the one whose formula
-  gives the largest film (docs/theory.md Sect. 15.2 says why, and how uncertain it is near a
-  boundary);
+  isoviscous/piezoviscous (Hamrock & Dowson 1981, the rigid-piezoviscous formula as revised by
+  Esfahanian & Hamrock 1991; ``H^ = H (W/U)^2``, ``gV = G W^3 / U^2``, ``gE = W^(8/3) / U^2``);
+  the boundaries of the map are where neighbouring formulas give the same film and the regime
+  is the one whose formula gives the largest film (docs/theory.md Sect. 15.2);
 * thermal reduction of the inlet (shear heating): Gupta et al. (1992), with the slide-to-roll
   ratio S and the thermal loading ``L = beta eta0 u^2 / k_f``:
   ``phi_T = (1 - 13.2 (p0/E') L^0.42) / (1 + 0.213 (1 + 2.23 S^0.83) L^0.64)``, and Murch &
@@ -130,12 +129,14 @@ POINT_FILM_METHODS: dict[str, FilmFormula] = {
 
 
 def point_regime(u: ArrayLike, g: ArrayLike, w: ArrayLike, k: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
-    """Regime code and minimum film H = h/Rx of an elliptical contact (Hamrock & Dowson 1981;
-    Esfahanian & Hamrock 1991) in ``H^ = H (W/U)^2``: rigid-isoviscous
-    ``128 alpha_r lambda^2 (0.131 arctan(alpha_r/2) + 1.683)^2`` with ``alpha_r = k^(pi/2)``,
-    ``lambda = (1 + 2/(3 alpha_r))^-1``; rigid-piezoviscous ``1.66 gV^(2/3) (1 - e^-0.68k)``;
-    elastic-isoviscous ``8.70 gE^0.67 (1 - 0.85 e^-0.31k)``; elastic-piezoviscous
-    ``3.42 gV^0.49 gE^0.17 (1 - e^-0.68k)``; the regime is the formula of the largest film."""
+    """Regime code and minimum film H = h/Rx of an elliptical contact in ``H^ = H (W/U)^2``:
+    rigid-isoviscous ``128 alpha_r lambda^2 (0.131 arctan(alpha_r/2) + 1.683)^2`` with
+    ``alpha_r = k^(pi/2)``, ``lambda = (1 + 2/(3 alpha_r))^-1`` (Brewe, Hamrock & Taylor 1979);
+    rigid-piezoviscous ``1.41 gV^0.375 (1 - e^(-0.0387 alpha_r))`` (Esfahanian & Hamrock 1991,
+    who revised Hamrock & Dowson's ``1.66 gV^(2/3) (1 - e^-0.68k)``); elastic-isoviscous
+    ``8.70 gE^0.67 (1 - 0.85 e^-0.31k)``; elastic-piezoviscous ``3.42 gV^0.49 gE^0.17
+    (1 - e^-0.68k)`` (Hamrock & Dowson 1981); the regime is the formula of the largest film
+    (docs/theory.md Sect. 15.2)."""
     u, g, w, k = (np.asarray(x, dtype=float) for x in (u, g, w, k))
     g_v = g * w**3 / u**2
     g_e = w ** (8.0 / 3.0) / u**2
@@ -145,7 +146,7 @@ def point_regime(u: ArrayLike, g: ArrayLike, w: ArrayLike, k: ArrayLike) -> tupl
     films = np.stack(
         np.broadcast_arrays(
             rigid_iso,
-            1.66 * g_v ** (2.0 / 3.0) * (1.0 - np.exp(-0.68 * k)),
+            1.41 * g_v**0.375 * (1.0 - np.exp(-0.0387 * alpha_r)),
             8.70 * g_e**0.67 * (1.0 - 0.85 * np.exp(-0.31 * k)),
             3.42 * g_v**0.49 * g_e**0.17 * (1.0 - np.exp(-0.68 * k)),
         )

@@ -118,7 +118,12 @@ def thermal_correction(power: ArrayLike, slide_roll: ArrayLike, extrapolate: boo
         value = float(np.broadcast_to(x, outside.shape)[outside][0])
         bounds = f"[{low}, {high}] Pa s GPa m/s where S > S_m (the fit range of seed 002 Eq. 6)"
         if not extrapolate:
-            raise InputError("eta0 p_H u", value, "Pa s GPa m/s", f"in {bounds}; extrapolate=true to go beyond")
+            raise InputError(
+                "eta0 p_H u",
+                value,
+                "Pa s GPa m/s",
+                f"in {bounds}, from viscosity, load and speed; extrapolate=true to go beyond",
+            )
         warnings.warn(
             f"eta0 p_H u = {value:g} Pa s GPa m/s is outside the validity range {bounds}: extrapolated, c clipped to "
             "[0, 1]",
