@@ -37,22 +37,31 @@ def _sweeps(
     omega: float,
 ) -> None:
     nz, nt = pressure.shape
+    # omega / diag(A), once: a third of the sweep's time otherwise.
+    step = np.empty((nz, nt))
+    for j in range(nz):
+        for i in range(nt):
+            west = i - 1 if i > 0 else nt - 1
+            diagonal = c_theta[j, i] + c_theta[j, west]
+            if j > 0:
+                diagonal += c_z[j - 1, i]
+            if j < nz - 1:
+                diagonal += c_z[j, i]
+            step[j, i] = omega / diagonal
     for _ in range(sweeps):
         for j in range(nz):
+            below, above = j > 0, j < nz - 1
             for i in range(nt):
                 if fixed[j, i]:
                     continue
                 west = i - 1 if i > 0 else nt - 1
                 east = i + 1 if i < nt - 1 else 0
-                diagonal = c_theta[j, i] + c_theta[j, west]
                 inflow = rhs[j, i] + c_theta[j, i] * pressure[j, east] + c_theta[j, west] * pressure[j, west]
-                if j > 0:
-                    diagonal += c_z[j - 1, i]
+                if below:
                     inflow += c_z[j - 1, i] * pressure[j - 1, i]
-                if j < nz - 1:
-                    diagonal += c_z[j, i]
+                if above:
                     inflow += c_z[j, i] * pressure[j + 1, i]
-                value = (1.0 - omega) * pressure[j, i] + omega * inflow / diagonal
+                value = (1.0 - omega) * pressure[j, i] + step[j, i] * inflow
                 pressure[j, i] = value if value > 0.0 else 0.0
 
 
