@@ -11,10 +11,13 @@ nodes from the final one instead of tens, and needs two factorisations instead o
 
 from __future__ import annotations
 
-import numpy as np
-from numba import njit
+from collections.abc import Callable
+from functools import lru_cache
+from typing import Any
 
-__all__ = ["PREDICTION_OMEGA", "PREDICTION_SWEEPS", "projected_sor"]
+import numpy as np
+
+__all__ = ["PREDICTION_OMEGA", "PREDICTION_SWEEPS", "load", "projected_sor"]
 
 #: Over-relaxation factor and sweeps of the set prediction. On the NTUA case (100 x 60) the
 #: set interpolated from 50 x 30 is 50 nodes off the final one; Gauss-Seidel (1.0) leaves 23
@@ -26,7 +29,6 @@ PREDICTION_OMEGA = 1.7
 PREDICTION_SWEEPS = 10
 
 
-@njit(cache=True)
 def _sweeps(
     pressure: np.ndarray,
     c_theta: np.ndarray,
@@ -65,6 +67,19 @@ def _sweeps(
                 pressure[j, i] = value if value > 0.0 else 0.0
 
 
+@lru_cache(maxsize=1)
+def load() -> Callable[..., Any]:
+    """The compiled sweep kernel, loaded from numba's cache (or compiled) on first use.
+
+    numba is imported here, not with the module: importing it and loading the kernel take
+    0.3-0.7 s once per process, which a command that solves no film (``--version``, an
+    input error) should not pay. The process pool's fork server calls this before it forks
+    its workers (:mod:`shaftline._compiled`), so they start with the kernel loaded."""
+    from numba import njit
+
+    return njit(cache=True)(_sweeps)
+
+
 def projected_sor(
     pressure: np.ndarray,
     c_theta: np.ndarray,
@@ -96,7 +111,7 @@ def projected_sor(
         The relaxed pressure, >= 0 on the free nodes.
     """
     out = np.array(pressure, dtype=float, copy=True)
-    _sweeps(
+    load()(
         out,
         np.ascontiguousarray(c_theta, dtype=float),
         np.ascontiguousarray(c_z, dtype=float),
