@@ -110,8 +110,9 @@ def test_cold_and_warm_start_match_the_reference(length_to_diameter, epsilon):
     assert _relative(bearing, warm.pressure, reference) <= TOLERANCE
     # The warm start took the iterative path (conjugate gradients) before its final solve.
     assert solver.pcg_iterations > before
-    # and the final solve with the settled set's factor makes the two bit for bit equal
-    assert np.array_equal(warm.pressure, cold.pressure)
+    # and the final solve with a factor of the settled set makes the two equal to rounding
+    # (bit for bit only when both factors share the kept node set's ordering)
+    assert np.abs(warm.pressure - cold.pressure).max() <= 1e-12 * np.abs(cold.pressure).max()
 
 
 @pytest.mark.parametrize(

@@ -307,7 +307,7 @@ class SolverOptions:
         Smallest film, as a share of the radial clearance, that the equilibrium search
         may approach; below it the load is reported as not carried (contact). With rough
         surfaces (``geometry.surface``) the floor is at most 2 % of the composite roughness,
-        so that the asperities take their share first (docs/theory.md Sect. 15).
+        so that the asperities take their share first (docs/theory.md Sect. 17).
     tolerance : float
         Relative force residual at which the equilibrium is accepted.
     max_iterations : int
