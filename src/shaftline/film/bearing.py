@@ -52,6 +52,14 @@ from shaftline.film.reynolds import (
     build_stencil,
     stencil_derivative,
 )
+from shaftline.film.roughness import (
+    RoughFilm,
+    asperity_pressure,
+    asperity_pressure_derivative,
+    contact_area_ratio,
+    lubrication_regime,
+    mean_gap,
+)
 
 __all__ = [
     # Problem data, defined in shaftline.film.problem and re-exported here for compatibility.
@@ -76,6 +84,12 @@ __all__ = [
 CONTINUATION_NODES = 20_000
 #: Force tolerance of that coarse equilibrium: it only places the start.
 CONTINUATION_TOLERANCE = 1e-5
+#: Newton iterations in a row that each leave more than ``STALLED_REDUCTION`` of the force
+#: residual, after which a rough film's equilibrium is given up as contact: the asperities of
+#: a rigid bore cannot carry the rest of the load (seen below 15 rpm on seed 001's rig, where
+#: the residual stalls at 8 % of the load). Smooth films keep their rule (no descent left).
+STALLED_ITERATIONS = 4
+STALLED_REDUCTION = 0.99
 
 
 @dataclass(frozen=True, eq=False)
@@ -155,6 +169,29 @@ class BearingState:
     iterations : int
         Active-set iterations (linear solves) of this solution; a warm start
         (``solve_at(..., warm_start=True)``) needs fewer for the same result.
+    asperity_pressure : ndarray (nz, nt) or None
+        Greenwood-Tripp asperity contact pressure, Pa (rough surfaces, ``geometry.surface``;
+        None when smooth). ``force_y``, ``force_z``, the moments and ``load_capacity`` include it;
+        ``pressure`` and ``max_pressure`` are the film's alone.
+    asperity_load : float
+        Magnitude of the asperity force on the journal, N.
+    asperity_load_share : float
+        Share of the total force carried by the asperities (the asperity force projected on the
+        total force, over the total force's magnitude).
+    max_asperity_pressure : float
+        Largest nodal asperity pressure, Pa.
+    contact_area_ratio : float
+        Real (asperity) contact area over the bore's area, Greenwood-Tripp.
+    fluid_friction_force, boundary_friction_force : float
+        The friction force split into the film's shear and the boundary friction on the
+        asperity load (``boundary_friction x`` asperity pressure), N; they sum to
+        ``friction_force`` (smooth: all fluid).
+    film_ratio : ndarray (nz, nt) or None
+        ``lambda = h / sigma`` over the bore (rough surfaces).
+    min_film_ratio : float
+        ``h_min / sigma`` (inf when smooth).
+    lubrication_regime : str or None
+        ``"boundary"`` (lambda_min < 1), ``"mixed"`` (1-3) or ``"full film"`` (> 3); None when smooth.
 
     Equality is identity: the fields hold arrays, which have no single truth value.
     """
@@ -194,6 +231,16 @@ class BearingState:
     cavitation: Cavitation
     cavitated: np.ndarray
     iterations: int
+    asperity_pressure: np.ndarray | None = field(default=None, repr=False)
+    asperity_load: float = 0.0
+    asperity_load_share: float = 0.0
+    max_asperity_pressure: float = 0.0
+    contact_area_ratio: float = 0.0
+    fluid_friction_force: float = 0.0
+    boundary_friction_force: float = 0.0
+    film_ratio: np.ndarray | None = field(default=None, repr=False)
+    min_film_ratio: float = math.inf
+    lubrication_regime: str | None = None
 
 
 @dataclass(frozen=True)
@@ -357,7 +404,9 @@ class _Evaluation:
     stencil: Stencil
     solution: ReynoldsSolution
     relative_pressure: np.ndarray  # dimensionless, above cavitation pressure, fixed nodes included
-    force: np.ndarray  # (2,) N
+    force: np.ndarray  # (2,) N, film and asperities
+    rate: np.ndarray | None = None  # (2/omega) dH/dt of a moving journal
+    contact: np.ndarray | None = None  # asperity pressure, Pa (rough surfaces only)
 
 
 class _SolverState:
@@ -603,7 +652,8 @@ class JournalBearing:
                 self.geometry, grid, tilting
             )
             rate = (2.0 / self.operating.speed) * dh_dt / c
-        stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate)
+        rough = self._rough_film()
+        stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate, rough)
         solver = cache.reynolds
         if start_pressure is not None and self.options.cavitation == "reynolds":
             start = solver.predicted_set(stencil, start_pressure)
@@ -612,8 +662,34 @@ class JournalBearing:
         solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
         cache.last_cavitated = solution.cavitated
         relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
-        force = self._integrate_force(grid, relative)
-        return _Evaluation(position, grid, film, stencil, solution, relative, force)
+        surface = (geometry or self.geometry).surface
+        contact = None if surface is None else asperity_pressure(surface, film)
+        force = self._integrate_force(grid, relative, contact=contact)
+        return _Evaluation(position, grid, film, stencil, solution, relative, force, rate, contact)
+
+    def _rough_film(self) -> RoughFilm | None:
+        """The roughness of the film equation (None for smooth surfaces)."""
+        surface = self.geometry.surface
+        if surface is None:
+            return None
+        return RoughFilm(surface.sigma / self.geometry.radial_clearance, surface.shear_weight)
+
+    def _film_floor(self) -> float:
+        """Smallest film the equilibrium may approach, m: ``min_film_floor`` of the clearance, or
+        with rough surfaces at most 2 % of the composite roughness, where the asperities carry
+        96 % of their largest pressure (``F_5/2(0.02) / F_5/2(0)``): a rough film is not stopped
+        before its asperities take the load (docs/theory.md, "Mixed lubrication")."""
+        floor = self.options.min_film_floor * self.geometry.radial_clearance
+        surface = self.geometry.surface
+        return floor if surface is None else min(floor, 0.02 * surface.sigma)
+
+    def _contact_changes(self, evaluation: _Evaluation, films: list[np.ndarray]) -> list[np.ndarray | None]:
+        """Asperity pressure changes (Pa) for film changes ``dH`` (of H = h/c); None when smooth."""
+        surface = self.geometry.surface
+        if surface is None or evaluation.contact is None:
+            return [None] * len(films)
+        slope = asperity_pressure_derivative(surface, evaluation.film) * self.geometry.radial_clearance
+        return [slope * d_film for d_film in films]
 
     def _evaluate_inside(self, position: JournalPosition, warm: bool, start: np.ndarray | None = None) -> _Evaluation:
         """:meth:`_evaluate`, with a journal cutting the bore reported as bad input."""
@@ -630,20 +706,29 @@ class JournalBearing:
     def _gauge(self, relative: np.ndarray) -> np.ndarray:
         return relative * self.pressure_scale + self.operating.cavitation_pressure
 
-    def _integrate_force(self, grid: Grid, relative: np.ndarray, gauge: bool = True) -> np.ndarray:
+    def _integrate_force(
+        self, grid: Grid, relative: np.ndarray, gauge: bool = True, contact: np.ndarray | None = None
+    ) -> np.ndarray:
         """Film force on the journal, N, from dimensionless pressures (a change of them when
-        ``gauge`` is False, which leaves out the constant cavitation-pressure offset)."""
+        ``gauge`` is False, which leaves out the constant cavitation-pressure offset), with the
+        asperity pressure ``contact`` (Pa, or its change) added."""
         pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
+        if contact is not None:
+            pressure = pressure + contact
         weighted = pressure * self._solver_state().area_weights
         theta = grid.theta
         fy = -np.sum(weighted * np.cos(theta)[None, :])
         fz = -self.geometry.rotation * np.sum(weighted * np.sin(theta)[None, :])
         return np.array([fy, fz])
 
-    def _integrate_moment(self, grid: Grid, relative: np.ndarray, gauge: bool = True) -> np.ndarray:
+    def _integrate_moment(
+        self, grid: Grid, relative: np.ndarray, gauge: bool = True, contact: np.ndarray | None = None
+    ) -> np.ndarray:
         """First moments ``(M_y, M_z) = sum((z - L/2) dF)`` of the film force about the
         mid-plane, N*m, from dimensionless pressures (as :meth:`_integrate_force`)."""
         pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
+        if contact is not None:
+            pressure = pressure + contact
         arm = grid.z - 0.5 * self.geometry.length
         weighted = pressure * self._solver_state().area_weights * arm[:, None]
         theta = grid.theta
@@ -660,7 +745,11 @@ class JournalBearing:
         ``dRate`` the change of ``(2/omega) dH/dt`` per unit of the parameter.
         """
         _, d_pressure = self._pressure_derivatives(evaluation, directions)
-        return [self._integrate_force(evaluation.grid, dp, gauge=False) for dp in d_pressure]
+        d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in directions])
+        return [
+            self._integrate_force(evaluation.grid, dp, gauge=False, contact=dc)
+            for dp, dc in zip(d_pressure, d_contact, strict=True)
+        ]
 
     def _pressure_derivatives(
         self, evaluation: _Evaluation, directions: list[tuple[np.ndarray, np.ndarray | None]]
@@ -669,14 +758,22 @@ class JournalBearing:
         :meth:`_force_derivatives`."""
         cache = self._solver_state()
         solution = evaluation.solution
+        c = self.geometry.radial_clearance
         changes = []
         for d_film, d_rate in directions:
             dc_theta, dc_z, d_couette = stencil_derivative(
-                evaluation.film / self.geometry.radial_clearance, d_film, cache.d_theta, cache.d_z
+                evaluation.film / self.geometry.radial_clearance,
+                d_film,
+                cache.d_theta,
+                cache.d_z,
+                self._rough_film(),
+                evaluation.rate,
             )
             d_residual = apply_operator(dc_theta, dc_z, evaluation.relative_pressure) - d_couette
             if d_rate is not None:
-                d_residual = d_residual + cache.d_theta * cache.d_z * d_rate
+                rough = self._rough_film()
+                squeeze = d_rate if rough is None else d_rate * rough.squeeze_factor(evaluation.film / c)
+                d_residual = d_residual + cache.d_theta * cache.d_z * squeeze
             if isinstance(solution, JfoSolution):
                 # JFO: the voids ride on the Couette flux, whose change moves them too (exact linearisation).
                 d_face = cache.d_z * 0.5 * (d_film + np.roll(d_film, -1, axis=1))
@@ -708,7 +805,11 @@ class JournalBearing:
         their cavitated sets from these (:meth:`_predicted_cavitation`)."""
         d_ey, d_ez = self._offset_directions(evaluation)
         d_residual, d_pressure = self._pressure_derivatives(evaluation, [(d_ey, None), (d_ez, None)])
-        dfy, dfz = (self._integrate_force(evaluation.grid, dp, gauge=False) for dp in d_pressure)
+        d_contact = self._contact_changes(evaluation, [d_ey, d_ez])
+        dfy, dfz = (
+            self._integrate_force(evaluation.grid, dp, gauge=False, contact=dc)
+            for dp, dc in zip(d_pressure, d_contact, strict=True)
+        )
         return np.column_stack([dfy, dfz]), d_residual, d_pressure
 
     # -- public API ----------------------------------------------------------------------
@@ -810,17 +911,21 @@ class JournalBearing:
         directions: list[tuple[np.ndarray, np.ndarray | None]] = [(d, None) for d in shapes]
         directions += [(zero, rate * d) for d in shapes]
         _, d_pressure = self._pressure_derivatives(evaluation, directions)
+        d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in directions])
         grid = evaluation.grid
         columns = [
             np.concatenate(
-                [self._integrate_force(grid, dp, gauge=False), self._integrate_moment(grid, dp, gauge=False)]
+                [
+                    self._integrate_force(grid, dp, gauge=False, contact=dc),
+                    self._integrate_moment(grid, dp, gauge=False, contact=dc),
+                ]
             )
-            for dp in d_pressure
+            for dp, dc in zip(d_pressure, d_contact, strict=True)
         ]
         return TiltLinearisation(
             position=evaluation.position,
             force=evaluation.force,
-            moment=self._integrate_moment(grid, evaluation.relative_pressure),
+            moment=self._integrate_moment(grid, evaluation.relative_pressure, contact=evaluation.contact),
             offset_derivative=np.column_stack(columns[:4]),
             velocity_derivative=np.column_stack(columns[4:]),
         )
@@ -883,7 +988,9 @@ class JournalBearing:
                 "centre_y", f"hmin {exc.value:.3g}", "m", "a journal centre line inside the clearance"
             ) from None
         state = self._state(evaluation)
-        row_force = self._row_forces(evaluation.grid, evaluation.relative_pressure, gauge=True)
+        row_force = self._row_forces(
+            evaluation.grid, evaluation.relative_pressure, gauge=True, contact=evaluation.contact
+        )
         theta = evaluation.grid.theta
         c = self.geometry.radial_clearance
 
@@ -906,7 +1013,14 @@ class JournalBearing:
             moving = len(changes)
         if requests:
             _, d_pressure = self._pressure_derivatives(evaluation, requests)
-            rows = np.stack([self._row_forces(evaluation.grid, dp, gauge=False) for dp in d_pressure], axis=-1)
+            d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in requests])
+            rows = np.stack(
+                [
+                    self._row_forces(evaluation.grid, dp, gauge=False, contact=dc)
+                    for dp, dc in zip(d_pressure, d_contact, strict=True)
+                ],
+                axis=-1,
+            )
         else:
             rows = np.zeros((2, z.size, 0))
         split = rows.shape[-1] - moving
@@ -936,9 +1050,13 @@ class JournalBearing:
         position, geometry = self._centre_line(centre_y, centre_z)
         return float(film_thickness(geometry, self.grid(position), position).min())
 
-    def _row_forces(self, grid: Grid, relative: np.ndarray, gauge: bool) -> np.ndarray:
+    def _row_forces(
+        self, grid: Grid, relative: np.ndarray, gauge: bool, contact: np.ndarray | None = None
+    ) -> np.ndarray:
         """Film force on the journal per axial grid row, (2, nz), N (sums to :meth:`_integrate_force`)."""
         pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
+        if contact is not None:
+            pressure = pressure + contact
         weighted = pressure * self._solver_state().area_weights
         theta = grid.theta
         return np.stack([-weighted @ np.cos(theta), -self.geometry.rotation * (weighted @ np.sin(theta))])
@@ -1001,7 +1119,7 @@ class JournalBearing:
         if magnitude == 0.0:
             raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
         c = self.geometry.radial_clearance
-        floor = self.options.min_film_floor * c
+        floor = self._film_floor()
         if initial is None:
             initial = self._coarse_equilibrium(load_y, load_z, tilt_y, tilt_z)
         position = initial or self._initial_position(load, tilt_y, tilt_z)
@@ -1016,6 +1134,8 @@ class JournalBearing:
         residual = evaluation.force + load
         contact = False
         iterations = 0
+        rough = self.geometry.surface is not None
+        stalled = 0
         while iterations < self.options.max_iterations:
             norm = float(np.hypot(*residual))
             if norm <= tolerance:
@@ -1035,6 +1155,14 @@ class JournalBearing:
             residual = evaluation.force + load
             if progress is not None:
                 progress(iterations, float(np.hypot(*residual)) / magnitude)
+            if rough:
+                # A rigid rough bore whose film and asperities cannot carry the load within the
+                # clearance: the journal presses into the floor between nodes and the steps only
+                # crawl. Stop after a few such steps (contact) instead of spending max_iterations.
+                stalled = stalled + 1 if np.hypot(*residual) > STALLED_REDUCTION * norm else 0
+                if stalled >= STALLED_ITERATIONS:
+                    contact = True
+                    break
         residual_norm = float(np.hypot(*residual))
         converged = residual_norm <= tolerance
         state = self._state(evaluation, load=load)
@@ -1206,8 +1334,10 @@ class JournalBearing:
         free = ~(self._solver_state().reynolds.fixed | evaluation.solution.cavitated)
         peak = local_extreme(pressure, usable=free, maximum=True)
         arm = z - 0.5 * g.length
-        dfy = -pressure * weights * np.cos(theta)[None, :]
-        dfz = -g.rotation * pressure * weights * np.sin(theta)[None, :]
+        contact = evaluation.contact
+        carried = pressure if contact is None else pressure + contact
+        dfy = -carried * weights * np.cos(theta)[None, :]
+        dfz = -g.rotation * carried * weights * np.sin(theta)[None, :]
         moment_y = float(np.sum(dfy * arm[:, None]))
         moment_z = float(np.sum(dfz * arm[:, None]))
         offset = (moment_y * fy + moment_z * fz) / capacity**2 if capacity > 0 else 0.0
@@ -1215,8 +1345,21 @@ class JournalBearing:
         speed = op.speed * g.radius
         dp_dx = (np.roll(pressure, -1, axis=1) - np.roll(pressure, 1, axis=1)) / (2.0 * grid.d_theta * g.radius)
         shearing = fraction if self.options.cavitated_shear == "film_fraction" else np.ones_like(fraction)
-        shear = op.viscosity * speed * shearing / film + 0.5 * film * dp_dx
-        friction = float(np.sum(shear * weights))
+        surface = g.surface
+        if surface is None:
+            shear = op.viscosity * speed * shearing / film + 0.5 * film * dp_dx
+            friction = float(np.sum(shear * weights))
+            fluid_friction, boundary_friction = friction, 0.0
+        else:
+            # Couette shear over the mean gap h_T (finite as h -> 0), Poiseuille part as smooth;
+            # boundary friction on the asperity pressure (docs/theory.md, "Mixed lubrication").
+            lam = film / surface.sigma
+            gap = surface.sigma * mean_gap(lam)
+            shear = op.viscosity * speed * shearing / gap + 0.5 * film * dp_dx
+            fluid_friction = float(np.sum(shear * weights))
+            assert contact is not None
+            boundary_friction = float(np.sum(surface.boundary_friction * contact * weights))
+            friction = fluid_friction + boundary_friction
         torque = friction * g.radius
         # Flows from the discrete face fluxes (consistent with the solver's mass balance).
         stencil = evaluation.stencil
@@ -1244,6 +1387,23 @@ class JournalBearing:
             else math.inf
         )
         hmin = float(thinnest.value)
+        rough: dict[str, Any] = {}
+        if surface is not None and contact is not None:
+            ay = -float(np.sum(contact * weights * np.cos(theta)[None, :]))
+            az = -g.rotation * float(np.sum(contact * weights * np.sin(theta)[None, :]))
+            lam_min = hmin / surface.sigma
+            rough = {
+                "asperity_pressure": contact,
+                "asperity_load": float(np.hypot(ay, az)),
+                "asperity_load_share": (ay * fy + az * fz) / capacity**2 if capacity > 0 else 0.0,
+                "max_asperity_pressure": float(contact.max()),
+                "contact_area_ratio": float(
+                    np.sum(contact_area_ratio(surface, film) * weights) / (2.0 * math.pi * g.radius * g.length)
+                ),
+                "film_ratio": film / surface.sigma,
+                "min_film_ratio": lam_min,
+                "lubrication_regime": lubrication_regime(lam_min),
+            }
         return BearingState(
             position=evaluation.position,
             eccentricity_ratio=e / g.radial_clearance,
@@ -1276,10 +1436,13 @@ class JournalBearing:
             circumferential_flow=circumferential,
             edge_leakage=edge,
             sommerfeld_number=sommerfeld,
-            contact=bool(hmin <= self.options.min_film_floor * g.radial_clearance),
+            contact=bool(hmin <= self._film_floor()),
             cavitation=self.options.cavitation,
             cavitated=evaluation.solution.cavitated,
             iterations=evaluation.solution.iterations,
+            fluid_friction_force=fluid_friction,
+            boundary_friction_force=boundary_friction,
+            **rough,
         )
 
     def _inlet_flow(self, evaluation: _Evaluation, theta_flux: np.ndarray, circumferential: np.ndarray) -> float:

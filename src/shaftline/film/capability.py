@@ -8,6 +8,7 @@ the figures in :mod:`shaftline.film.figures`; this class ties them to the pipeli
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any
 
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
@@ -15,6 +16,7 @@ from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fm
 
 if TYPE_CHECKING:
     from shaftline.film.case import BearingSection
+    from shaftline.film.stribeck import StribeckCurve
     from shaftline.film.study import BearingStudy, BearingStudyResult
 
 #: Largest peak film pressure a class rule allows, Pa: NK's 40 MPa as quoted in seed 004
@@ -41,12 +43,28 @@ TABLE_ROWS = [
     ("side leakage [l/min]", "side_leakage", 6e4, 4),
     ("Sommerfeld number S [-]", "sommerfeld_number", 1.0, 4),
 ]
+#: Rows added for rough surfaces ([bearing.surface]).
+MIXED_TABLE_ROWS = [
+    ("λ = h_min/σ [-]", "min_film_ratio", 1.0, 4),
+    ("asperity load share [%]", "asperity_load_share", 100.0, 3),
+    ("peak asperity pressure [MPa]", "max_asperity_pressure", 1e-6, 3),
+    ("real contact area [%]", "contact_area_ratio", 100.0, 3),
+    ("boundary friction [N]", "boundary_friction_force", 1.0, 4),
+    ("fluid friction [N]", "fluid_friction_force", 1.0, 4),
+]
 
 
 class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResult"]):
     key = "bearing"
     title = "Stern-tube bearing film"
-    verbs = (Verb(("bearing", "solve"), "Solve the bearing film at equilibrium under the case load."),)
+    verbs = (
+        Verb(("bearing", "solve"), "Solve the bearing film at equilibrium under the case load."),
+        Verb(
+            ("bearing", "stribeck"),
+            "Solve the bearing, then sweep its speed: the Stribeck curve, h_min and the lift-off speed.",
+            options={"task": "stribeck"},
+        ),
+    )
     parallel = True
     moved_tables = {
         "operation": "bearing.operation",
@@ -74,18 +92,23 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
             lambda name: progress(f"solving {name}"),
             workers=options.get("workers"),
             scheduler=options.get("scheduler"),
+            stribeck=options.get("task") == "stribeck",
         )
 
     def to_json(self, result: BearingStudyResult) -> dict[str, Any]:
         from shaftline.film.summary import EXTRA_UNITS, equilibrium_summary, units
 
-        return {
-            "units": {**units(), **EXTRA_UNITS},
+        mixed = any(run.case.geometry.surface is not None for run in result.cases)
+        out: dict[str, Any] = {
+            "units": {**units(mixed), **EXTRA_UNITS},
             "cases": [
                 {"name": run.case.name, **equilibrium_summary(run.equilibrium, run.coefficients)}
                 for run in result.cases
             ],
         }
+        if result.stribeck is not None:
+            out["stribeck"] = stribeck_json(result.stribeck)
+        return out
 
     def findings(self, result: BearingStudyResult) -> list[Finding]:
         out: list[Finding] = []
@@ -107,7 +130,20 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                     )
                 )
             roughness = run.case.surface_roughness
-            if not equilibrium.contact and state.min_film_thickness < 3.0 * roughness:
+            if state.lubrication_regime is not None and not equilibrium.contact:
+                if state.lubrication_regime != "full film":
+                    out.append(
+                        Finding(
+                            f"{name}: {state.lubrication_regime} lubrication — h_min/σ = {state.min_film_ratio:.3g}; "
+                            f"the asperities carry {100 * state.asperity_load_share:.3g} % of the load (peak "
+                            f"{state.max_asperity_pressure / 1e6:.3g} MPa) and give "
+                            f"{100 * state.boundary_friction_force / max(state.friction_force, 1e-300):.3g} % of the "
+                            "friction (Greenwood-Tripp contact with Patir-Cheng flow factors): wear is expected "
+                            "(seed 001, Sect. 5.3).",
+                            criterion=True,
+                        )
+                    )
+            elif not equilibrium.contact and state.min_film_thickness < 3.0 * roughness:
                 out.append(
                     Finding(
                         f"{name}: h_min {state.min_film_thickness * 1e6:.3g} µm is below three times the composite "
@@ -136,12 +172,21 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
     def _table(self, result: BearingStudyResult) -> Table:
         summaries = self.to_json(result)["cases"]
         rows = [[label] + [fmt(s[key], scale, digits) for s in summaries] for label, key, scale, digits in TABLE_ROWS]
+        if any("min_film_ratio" in s for s in summaries):
+            rows += [
+                [label] + [fmt(s[key], scale, digits) if key in s else "smooth" for s in summaries]
+                for label, key, scale, digits in MIXED_TABLE_ROWS
+            ]
+            rows.append(["lubrication regime"] + [s.get("lubrication_regime") or "smooth" for s in summaries])
         rows.append(["converged"] + ["yes" if s["converged"] else "NO" for s in summaries])
         rows.append(["contact (film at floor)"] + ["YES" if s["contact"] else "no" for s in summaries])
         return Table(["quantity"] + [s["name"] for s in summaries], rows, "Bearing film at equilibrium")
 
     def summary(self, result: BearingStudyResult) -> list[Block]:
-        return [self._table(result)]
+        blocks: list[Block] = [self._table(result)]
+        if result.stribeck is not None:
+            blocks.append(_stribeck_table(result))
+        return blocks
 
     def report(self, result: BearingStudyResult) -> list[Block]:
         from shaftline.film import figures
@@ -189,6 +234,17 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                     "journal tilt (the full 4 × 4 with the force and offset terms is in the JSON)",
                 )
             )
+        if result.stribeck is not None:
+            blocks.append(_stribeck_table(result))
+            blocks.append(
+                Figure(
+                    "bearing_stribeck.png",
+                    figures.stribeck,
+                    (result.stribeck, result.cases[0].case.name),
+                    caption="Stribeck curve (friction coefficient) and h_min against speed, with the "
+                    "lubrication regimes of lambda = h_min/σ and the transition speed (asperity share below 1 %)",
+                )
+            )
         if len(result.cases) > 1:
             blocks.append(
                 Figure(
@@ -209,6 +265,15 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                     caption=f"{name}: film and pressure",
                 )
             )
+            if state.asperity_pressure is not None:
+                blocks.append(
+                    Figure(
+                        f"bearing_{index}_contact.png",
+                        figures.contact_maps,
+                        (state, name),
+                        caption=f"{name}: asperity contact pressure and film-thickness ratio λ = h/σ",
+                    )
+                )
             blocks.append(
                 Figure(
                     f"bearing_{index}_circumferential.png",
@@ -226,6 +291,42 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 )
             )
         return blocks
+
+
+def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
+    """The Stribeck curve of ``bearing stribeck`` for results.json (speeds in rpm)."""
+
+    def clean(values: Any) -> list[Any]:
+        return [float(v) if math.isfinite(v) else None for v in values]
+
+    return {
+        "speed_rpm": clean(curve.speed * 30.0 / math.pi),
+        "friction_coefficient": clean(curve.friction_coefficient),
+        "asperity_load_share": clean(curve.asperity_load_share),
+        "min_film_thickness": clean(curve.min_film_thickness),
+        "min_film_ratio": clean(curve.min_film_ratio),
+        "lubrication_regime": list(curve.regime),
+        "converged": [bool(v) for v in curve.converged],
+        "contact": [bool(v) for v in curve.contact],
+        "transition_speed_rpm": None
+        if curve.transition_speed is None
+        else float(curve.transition_speed * 30.0 / math.pi),
+    }
+
+
+def _stribeck_table(result: BearingStudyResult) -> Table:
+    curve = result.stribeck
+    assert curve is not None
+    lowest = int(curve.friction_coefficient.argmin())
+    transition = "-" if curve.transition_speed is None else fmt(curve.transition_speed * 30.0 / math.pi, 1, 4)
+    rows = [
+        ["speeds [rpm]", f"{fmt(curve.speed[0] * 30 / math.pi)} to {fmt(curve.speed[-1] * 30 / math.pi)}"],
+        ["transition speed, asperity share < 1 % [rpm]", transition],
+        ["lowest friction coefficient [-]", fmt(float(curve.friction_coefficient[lowest]))],
+        ["at [rpm]", fmt(curve.speed[lowest] * 30 / math.pi)],
+        ["speeds in contact (load not carried)", str(int(curve.contact.sum()))],
+    ]
+    return Table(["Stribeck curve", result.cases[0].case.name], rows, "Stribeck curve of the base case")
 
 
 CAPABILITY = BearingFilm()

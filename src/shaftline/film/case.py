@@ -9,6 +9,7 @@ Layout::
     [bearing.operation]          speed, load, misalignment, edge pressures
     [[bearing.operation.grooves]]
     [bearing.lubricant]
+    [bearing.surface]            rough journal and bore: mixed lubrication
     [bearing.solver]             grid and cavitation model
     [[bearing.variants]]         other bores or tilts solved beside the base case
 """
@@ -26,6 +27,7 @@ from shaftline.cases.types import (
     Angle,
     Force,
     Length,
+    NonNegativeLength,
     Number,
     Plausible,
     PlausibleRatio,
@@ -33,6 +35,7 @@ from shaftline.cases.types import (
     PositiveFraction,
     PositiveKinematicViscosity,
     PositiveLength,
+    PositivePressure,
     PositiveViscosity,
     Pressure,
     Quantity,
@@ -60,6 +63,7 @@ from shaftline.film.problem import (
     SolverOptions,
     SupplyGroove,
 )
+from shaftline.film.roughness import SurfaceRoughness
 from shaftline.film.study import BearingCase
 from shaftline.registry import BuildContext
 
@@ -352,6 +356,114 @@ class SolverSection(Section):
     anything is allocated. Default: half the machine's memory."""
 
 
+_SURFACE_ROUGHNESS = (
+    "machined journals and bores: Ra 0.1 um (lapped) to 6.3 um (rough turned); seed 001: polymer liner Ra 1.6 um, "
+    "sleeve Ra 0.8 um; 20 um keeps a value in um written as mm out (engineering judgement)"
+)
+_MODULUS = (
+    "nitrile rubber liners about 3-10 MPa, polymer composites 1-10 GPa (seed 001: 2320 MPa), white metal about "
+    "50 GPa, steel 206 GPa; 3 MPa to 500 GPa keeps GPa written as MPa and MPa as kPa out (engineering judgement)"
+)
+
+
+class SurfaceSection(Section):
+    """Rough journal and bore: Patir-Cheng flow factors in the film and Greenwood-Tripp asperity
+    contact (mixed lubrication, docs/theory.md). A preset gives every field; fields given
+    beside it replace the preset's."""
+
+    preset: Literal["steel_polymer", "turned_steel_white_metal", "ground_steel_white_metal"] | None = None
+    """Named surface pair (docs/theory.md lists the sources): steel_polymer (seed 001's rig),
+    turned_steel_white_metal, ground_steel_white_metal."""
+    journal_roughness: Annotated[NonNegativeLength, Plausible(0.0, 2e-5, _SURFACE_ROUGHNESS)] | None = None
+    """Roughness of the journal (sleeve)."""
+    bore_roughness: Annotated[NonNegativeLength, Plausible(0.0, 2e-5, _SURFACE_ROUGHNESS)] | None = None
+    """Roughness of the bore (liner)."""
+    roughness_parameter: Literal["Rq", "Ra"] = "Ra"
+    """Rq (root mean square) or Ra (arithmetic mean; Rq = 1.25 Ra, seed 001 Eq. 10)."""
+    journal_modulus: Annotated[PositivePressure, Plausible(3e6, 5e11, _MODULUS)] | None = None
+    """Young's modulus of the journal (default steel, 206 GPa)."""
+    journal_poisson: Annotated[float, Quantity("dimensionless", gt=0, lt=0.5)] | None = None
+    """Poisson's ratio of the journal (default 0.3)."""
+    bore_modulus: Annotated[PositivePressure, Plausible(3e6, 5e11, _MODULUS)] | None = None
+    """Young's modulus of the bore surface (liner)."""
+    bore_poisson: Annotated[float, Quantity("dimensionless", gt=0, lt=0.5)] | None = None
+    """Poisson's ratio of the bore surface."""
+    sigma_beta_eta: Annotated[float, Quantity("dimensionless", gt=0, lt=1)] | None = None
+    """Roughness parameter sigma beta eta (default 0.04)."""
+    sigma_over_beta: Annotated[float, Quantity("dimensionless", gt=0, lt=1)] | None = None
+    """RMS roughness over asperity tip radius (default 0.001)."""
+    boundary_friction: Annotated[float, Quantity("dimensionless", ge=0, lt=1)] | None = None
+    """Coefficient of friction on the asperity load (default 0.1)."""
+
+    @model_validator(mode="after")
+    def _complete(self) -> SurfaceSection:
+        if self.preset is None:
+            for name in ("journal_roughness", "bore_roughness", "bore_modulus", "bore_poisson"):
+                if getattr(self, name) is None:
+                    raise field_error(name, "missing", "a value, or a preset")
+        journal, bore = self.journal_roughness, self.bore_roughness
+        if journal == 0 and bore == 0:
+            raise field_error("bore_roughness", 0.0, "> 0 where journal_roughness is 0 (a rough surface)", "m")
+        return self
+
+
+def surface_roughness(section: SurfaceSection) -> SurfaceRoughness:
+    """The :class:`SurfaceRoughness` of a ``surface`` table (fields beside a preset replace it)."""
+    from shaftline.film.roughness import PRESETS, RA_TO_RQ, contact_modulus
+
+    base = PRESETS[section.preset] if section.preset is not None else None
+    factor = RA_TO_RQ if section.roughness_parameter == "Ra" else 1.0
+    journal = section.journal_roughness
+    bore = section.bore_roughness
+    if base is not None:
+        # Preset roughnesses are Ra; a value given beside them is in the table's parameter.
+        journal_rq = RA_TO_RQ * base[0] if journal is None else factor * journal
+        bore_rq = RA_TO_RQ * base[1] if bore is None else factor * bore
+        bore_e = base[2] if section.bore_modulus is None else section.bore_modulus
+        bore_nu = base[3] if section.bore_poisson is None else section.bore_poisson
+    else:
+        assert journal is not None and bore is not None and section.bore_modulus is not None
+        assert section.bore_poisson is not None
+        journal_rq, bore_rq = factor * journal, factor * bore
+        bore_e, bore_nu = section.bore_modulus, section.bore_poisson
+    journal_e = 206e9 if section.journal_modulus is None else section.journal_modulus
+    journal_nu = 0.3 if section.journal_poisson is None else section.journal_poisson
+    names = {"journal_rq": "journal_roughness", "bore_rq": "bore_roughness", "contact_modulus": "bore_modulus"}
+    with located("", names):
+        defaults = SurfaceRoughness(journal_rq=1.0, bore_rq=1.0)
+        return SurfaceRoughness(
+            journal_rq=journal_rq,
+            bore_rq=bore_rq,
+            sigma_beta_eta=section.sigma_beta_eta or defaults.sigma_beta_eta,
+            sigma_over_beta=section.sigma_over_beta or defaults.sigma_over_beta,
+            contact_modulus=contact_modulus(journal_e, journal_nu, bore_e, bore_nu),
+            boundary_friction=defaults.boundary_friction
+            if section.boundary_friction is None
+            else section.boundary_friction,
+        )
+
+
+class StribeckSection(Section):
+    """Speeds of ``shaftline bearing stribeck``: geometric steps from lowest to highest."""
+
+    lowest: Annotated[float, Quantity("speed", gt=0), SHAFT_SPEED] | None = None
+    """Lowest speed (default a tenth of the case's)."""
+    highest: Annotated[float, Quantity("speed", gt=0), SHAFT_SPEED] | None = None
+    """Highest speed (default ten times the case's)."""
+    points: Annotated[int, Field(ge=2, le=500)] = 30
+    """Number of speeds."""
+
+
+def stribeck_speeds(section: StribeckSection | None, speed: float) -> tuple[float, ...]:
+    """The speeds (rad/s) of a ``stribeck`` table for a case running at ``speed``."""
+    table = section or StribeckSection()
+    lowest = table.lowest if table.lowest is not None else 0.1 * speed
+    highest = table.highest if table.highest is not None else 10.0 * speed
+    if highest <= lowest:
+        raise InputError("stribeck.highest", highest, "rad/s", f"above the lowest speed ({lowest:.4g} rad/s)")
+    return tuple(float(v) for v in np.geomspace(lowest, highest, table.points))
+
+
 class VariantSection(Section):
     """A further bore or tilt solved beside the base case."""
 
@@ -485,6 +597,10 @@ class BearingSection(Section):
     """Speed, load and misalignment."""
     lubricant: LubricantSection
     """The lubricant."""
+    surface: SurfaceSection | None = None
+    """Rough journal and bore (mixed lubrication); none: smooth surfaces."""
+    stribeck: StribeckSection | None = None
+    """Speeds of the Stribeck curve (``shaftline bearing stribeck``)."""
     solver: SolverSection = SolverSection()
     """Grid and models."""
     variants: list[VariantSection] = []
@@ -497,6 +613,13 @@ class BearingSection(Section):
                 "radial_clearance",
                 "missing" if self.radial_clearance is None else self.radial_clearance,
                 "exactly one of radial_clearance or diametral_clearance",
+                "m",
+            )
+        if self.surface is not None and "surface_roughness" in self.model_fields_set:
+            raise field_error(
+                "surface_roughness",
+                self.surface_roughness,
+                "either surface_roughness or a [bearing.surface] table (which gives the roughness)",
                 "m",
             )
         names = [variant.name for variant in self.variants]
@@ -612,6 +735,20 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
         with located("film_profile"):
             profile = read_film_profile(context.path(section.film_profile.file), section.film_profile.length_unit)
 
+    surface = None
+    if section.surface is not None:
+        with located("surface"):
+            surface = surface_roughness(section.surface)
+        if surface.sigma >= 0.5 * clearance:
+            name = "bore_roughness" if surface.bore_rq >= surface.journal_rq else "journal_roughness"
+            raise InputError(
+                f"surface.{name}",
+                getattr(section.surface, name),
+                "m",
+                f"a composite roughness (now {surface.sigma:.3g} m Rq) below half the radial clearance "
+                f"({0.5 * clearance:.3g} m)",
+            )
+
     def geometry(bore: tuple[BoreSegment, ...], where: str) -> BearingGeometry:
         with located("", {"bore": where}):
             return BearingGeometry(
@@ -623,6 +760,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
                 bent_journal=bent,
                 film_profile=profile,
                 rotation=1 if section.rotation == "clockwise" else -1,
+                surface=surface,
             )
 
     base_geometry = geometry(_bore(section.bore, length, clearance), "bore")
@@ -665,7 +803,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             tilt_z=tilt_z,
             lubricant=lubricant,
             temperature=section.lubricant.temperature,
-            surface_roughness=section.surface_roughness,
+            surface_roughness=section.surface_roughness if surface is None else surface.sigma,
             error_fields=fields,
         )
 
@@ -681,4 +819,4 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             variant_tilt = _tilt(variant.tilt_vertical, variant.misalignment_ratio_vertical, length, clearance)
             tilt_field = f"variants[{k}].tilt_vertical"
         cases.append(case(variant.name, variant_geometry, variant_tilt, tilt_field))
-    return BearingStudy(tuple(cases))
+    return BearingStudy(tuple(cases), stribeck_speeds(section.stribeck, op.speed))

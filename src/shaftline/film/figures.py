@@ -100,3 +100,59 @@ def comparison(names: Sequence[str], states: Sequence[BearingState], *, ax: Any)
         axes.set_xticks(positions, [plain(name) for name in names], rotation=20, ha="right", fontsize=8)
         axes.set_ylabel(label)
     return ax
+
+
+@figure_function(layout=(1, 2), size=(11, 4.2))
+def contact_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
+    """Unwrapped asperity contact pressure and film-thickness ratio lambda = h/sigma maps of a
+    rough film (``state.asperity_pressure``), with the regime limits 1 and 3 as contours."""
+    theta, order, z = _unwrapped(state)
+    assert state.asperity_pressure is not None and state.film_ratio is not None
+    contact = state.asperity_pressure[:, order] / 1e6
+    ratio = np.minimum(state.film_ratio[:, order], 10.0)
+    mesh = ax[0].contourf(theta, z, contact, levels=30, cmap="magma", rasterized=True)
+    ax[0].figure.colorbar(mesh, ax=ax[0], label="asperity pressure p_a [MPa]")
+    mesh = ax[1].contourf(theta, z, ratio, levels=np.linspace(0.0, 10.0, 41), cmap="RdYlGn", rasterized=True)
+    ax[1].figure.colorbar(mesh, ax=ax[1], label="λ = h/σ (capped at 10)")
+    ax[1].contour(theta, z, ratio, levels=[1.0, 3.0], colors="k", linewidths=0.8)
+    for axes in ax:
+        axes.set_xlabel("bearing angle θ from top, in sense of rotation [deg]")
+        axes.set_ylabel("z from aft edge [m]")
+        axes.set_xlim(0, 360)
+        axes.set_xticks(range(0, 361, 60))
+    head = f"{plain(title)}: " if title else ""
+    ax[0].set_title(f"{head}asperities carry {100 * state.asperity_load_share:.2g} % of the load")
+    ax[1].set_title(f"λ_min = {state.min_film_ratio:.2f} ({state.lubrication_regime}); contours λ = 1, 3")
+    return ax
+
+
+@figure_function(layout=(1, 2), size=(11, 4.2))
+def stribeck(curve: Any, title: str = "", *, ax: Any) -> Any:
+    """Friction coefficient (Stribeck curve) and h_min against speed, shaded by lubrication
+    regime (boundary lambda < 1, mixed 1-3, full film > 3), with the transition speed."""
+    rpm = curve.speed * 30.0 / np.pi
+    ok = ~curve.contact
+    ax[0].loglog(rpm[ok], curve.friction_coefficient[ok], "o-", color="C0", ms=3, label="friction coefficient")
+    if (~ok).any():
+        ax[0].loglog(rpm[~ok], curve.friction_coefficient[~ok], "x", color="C3", label="contact: load not carried")
+    ax[1].semilogx(rpm, curve.min_film_thickness * 1e6, "o-", color="C2", ms=3, label="h_min")
+    colours = {"boundary": "#f4cccc", "mixed": "#fff2cc", "full film": "#d9ead3"}
+    edges = np.sqrt(rpm[1:] * rpm[:-1])
+    lows = np.concatenate([[rpm[0]], edges])
+    highs = np.concatenate([edges, [rpm[-1]]])
+    for low, high, regime in zip(lows, highs, curve.regime, strict=True):
+        if regime is not None:
+            for axes in ax:
+                axes.axvspan(low, high, color=colours[regime], lw=0, zorder=0)
+    if curve.transition_speed is not None:
+        for axes in ax:
+            axes.axvline(curve.transition_speed * 30.0 / np.pi, color="k", ls="--", lw=1, label="asperity share < 1 %")
+    ax[0].set_ylabel("friction coefficient [-]")
+    ax[1].set_ylabel("h_min [µm]")
+    for axes in ax:
+        axes.set_xlabel("shaft speed [rpm]")
+        axes.legend(fontsize=8)
+    head = f"{plain(title)}: " if title else ""
+    ax[0].set_title(f"{head}Stribeck curve (red: boundary, yellow: mixed, green: full film)")
+    ax[1].set_title("smallest film")
+    return ax

@@ -27,6 +27,7 @@ from typing import Any, Literal, get_args
 import numpy as np
 
 from shaftline.errors import InputError, require_finite, require_positive
+from shaftline.film.roughness import SurfaceRoughness
 
 #: Below this many nodes the Reynolds solution is too coarse to be worth returning.
 MIN_CIRCUMFERENTIAL_NODES = 16
@@ -198,6 +199,10 @@ class BearingGeometry:
         Additive film change delta(theta, z), e.g. wear or bore errors.
     rotation : Rotation
         +1 for a shaft turning clockwise seen from aft, -1 for anticlockwise.
+    surface : SurfaceRoughness or None
+        Roughness and elasticity of the journal and bore surfaces: with it the film carries
+        Patir-Cheng flow factors and the asperities a Greenwood-Tripp contact pressure (mixed
+        lubrication, :mod:`shaftline.film.roughness`); None (default) is a smooth film.
 
     Raises
     ------
@@ -214,6 +219,7 @@ class BearingGeometry:
     bent_journal: BentJournal | None = None
     film_profile: FilmProfile | None = field(default=None, repr=False)
     rotation: Rotation = 1
+    surface: SurfaceRoughness | None = None
 
     def __post_init__(self) -> None:
         require_positive("length", self.length, "m")
@@ -221,6 +227,13 @@ class BearingGeometry:
         require_positive("radial_clearance", self.radial_clearance, "m")
         if self.radial_clearance >= 0.5 * self.diameter:
             raise InputError("radial_clearance", self.radial_clearance, "m", f"< diameter/2 = {0.5 * self.diameter}")
+        if self.surface is not None and self.surface.sigma >= 0.5 * self.radial_clearance:
+            raise InputError(
+                "surface.bore_rq",
+                round(self.surface.sigma, 12),
+                "m",
+                f"a composite roughness below half the radial clearance ({0.5 * self.radial_clearance:g} m)",
+            )
         if self.rotation not in ROTATIONS:
             raise InputError("rotation", self.rotation, "", "+1 (clockwise from aft) or -1")
         if self.bore_anchor not in BORE_ANCHORS:

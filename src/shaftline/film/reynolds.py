@@ -46,6 +46,7 @@ from shaftline.errors import SolverFailure
 from shaftline.film.geometry import coarse_shape
 from shaftline.film.problem import CAVITATION_MODELS, Cavitation
 from shaftline.film.relaxation import Relaxation
+from shaftline.film.roughness import RoughFilm
 
 __all__ = [
     "CAVITATION_MODELS",
@@ -151,16 +152,34 @@ class Stencil:
     rhs: np.ndarray
 
 
-def build_stencil(film: np.ndarray, d_theta: float, d_z: float, film_rate: np.ndarray | None = None) -> Stencil:
-    """Stencil for dimensionless film ``H`` (nz x nt) and its rate ``(2/omega) dH/dt``."""
+def build_stencil(
+    film: np.ndarray,
+    d_theta: float,
+    d_z: float,
+    film_rate: np.ndarray | None = None,
+    rough: RoughFilm | None = None,
+) -> Stencil:
+    """Stencil for dimensionless film ``H`` (nz x nt) and its rate ``(2/omega) dH/dt``.
+
+    With ``rough`` (docs/theory.md, "Mixed lubrication") the conductances carry the Patir-Cheng
+    pressure flow factor, ``H^3 phi_x``, the Couette transport the mean gap and the shear flow
+    factor, ``h_T/c + (sigma/c) w Phi_s``, and the squeeze acts on the mean gap
+    (``dh_T/dt = Phi(h/sigma) dh/dt``); without it the smooth stencil, unchanged.
+    """
     h_east = 0.5 * (film + np.roll(film, -1, axis=1))
     h_north = 0.5 * (film[:-1] + film[1:])
-    c_theta = (d_z / d_theta) * h_east**3
-    c_z = (d_theta / d_z) * h_north**3
-    couette_face = d_z * h_east
+    if rough is None:
+        c_theta = (d_z / d_theta) * h_east**3
+        c_z = (d_theta / d_z) * h_north**3
+        couette_face = d_z * h_east
+    else:
+        c_theta = (d_z / d_theta) * rough.conductance(h_east)
+        c_z = (d_theta / d_z) * rough.conductance(h_north)
+        couette_face = d_z * rough.transport(h_east)
     rhs = np.roll(couette_face, 1, axis=1) - couette_face
     if film_rate is not None:
-        rhs = rhs - d_theta * d_z * film_rate
+        squeeze = film_rate if rough is None else film_rate * rough.squeeze_factor(film)
+        rhs = rhs - d_theta * d_z * squeeze
     return Stencil(c_theta=c_theta, c_z=c_z, couette_face=couette_face, rhs=rhs)
 
 
@@ -183,17 +202,35 @@ def apply_operator(c_theta: np.ndarray, c_z: np.ndarray, pressure: np.ndarray) -
 
 
 def stencil_derivative(
-    film: np.ndarray, film_derivative: np.ndarray, d_theta: float, d_z: float
+    film: np.ndarray,
+    film_derivative: np.ndarray,
+    d_theta: float,
+    d_z: float,
+    rough: RoughFilm | None = None,
+    film_rate: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Derivatives of (c_theta, c_z, Couette rhs) for a film change ``dH``."""
+    """Derivatives of (c_theta, c_z, rhs without its change of film rate) for a film change ``dH``.
+
+    Smooth (``rough`` None): the Couette part of the rhs only, as before. Rough: also the
+    change of the squeeze factor ``Phi(h/sigma)`` under a given ``film_rate`` (the rate itself
+    held), so that the derivative is that of :func:`build_stencil` with the same arguments.
+    """
     h_east = 0.5 * (film + np.roll(film, -1, axis=1))
     dh_east = 0.5 * (film_derivative + np.roll(film_derivative, -1, axis=1))
     h_north = 0.5 * (film[:-1] + film[1:])
     dh_north = 0.5 * (film_derivative[:-1] + film_derivative[1:])
-    dc_theta = (d_z / d_theta) * 3.0 * h_east**2 * dh_east
-    dc_z = (d_theta / d_z) * 3.0 * h_north**2 * dh_north
-    d_couette = d_z * dh_east
-    return dc_theta, dc_z, np.roll(d_couette, 1, axis=1) - d_couette
+    if rough is None:
+        dc_theta = (d_z / d_theta) * 3.0 * h_east**2 * dh_east
+        dc_z = (d_theta / d_z) * 3.0 * h_north**2 * dh_north
+        d_couette = d_z * dh_east
+        return dc_theta, dc_z, np.roll(d_couette, 1, axis=1) - d_couette
+    dc_theta = (d_z / d_theta) * rough.conductance_derivative(h_east) * dh_east
+    dc_z = (d_theta / d_z) * rough.conductance_derivative(h_north) * dh_north
+    d_couette = d_z * rough.transport_derivative(h_east) * dh_east
+    d_rhs = np.roll(d_couette, 1, axis=1) - d_couette
+    if film_rate is not None:
+        d_rhs = d_rhs - d_theta * d_z * film_rate * rough.squeeze_factor_derivative(film) * film_derivative
+    return dc_theta, dc_z, d_rhs
 
 
 @dataclass(eq=False)

@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from shaftline.film.bearing import Equilibrium, JournalBearing
     from shaftline.film.dynamics import DynamicCoefficients
     from shaftline.film.geometry import JournalPosition
+    from shaftline.film.stribeck import StribeckCurve
     from shaftline.lubricants import Lubricant
 
 
@@ -71,9 +72,11 @@ class BearingCase:
 
 @dataclass(frozen=True, eq=False)
 class BearingStudy:
-    """The base case (first) and its variants."""
+    """The base case (first) and its variants; ``stribeck_speeds`` (rad/s) are the speeds of
+    the base case's Stribeck curve (``shaftline bearing stribeck``)."""
 
     cases: tuple[BearingCase, ...]
+    stribeck_speeds: tuple[float, ...] = ()
 
 
 @dataclass(frozen=True, eq=False)
@@ -87,9 +90,11 @@ class BearingResult:
 
 @dataclass(frozen=True, eq=False)
 class BearingStudyResult:
-    """The results of a study, in the order of its cases."""
+    """The results of a study, in the order of its cases, and the base case's Stribeck curve
+    when asked for (:func:`shaftline.film.stribeck.stribeck_curve`)."""
 
     cases: tuple[BearingResult, ...]
+    stribeck: StribeckCurve | None = None
 
 
 def solve_case(
@@ -149,6 +154,7 @@ def solve_study(
     backend: str | None = None,
     workers: int | None = None,
     scheduler: str | None = None,
+    stribeck: bool = False,
 ) -> BearingStudyResult:
     """Solve the base case and every variant with :func:`shaftline.film.sweep`: variants with
     the same film problem share one bearing and warm-start from each other, and the groups
@@ -163,4 +169,23 @@ def solve_study(
     from shaftline.film.sweeps import sweep
 
     results = sweep(study.cases, backend=backend, workers=workers, scheduler=scheduler, progress=progress)
-    return BearingStudyResult(tuple(results))
+    curve = None
+    if stribeck:
+        from shaftline.film.stribeck import stribeck_curve
+
+        if progress is not None:
+            progress(f"{study.cases[0].name}: Stribeck curve, {len(study.stribeck_speeds)} speeds")
+
+        def chunks_done(done: int, total: int) -> None:
+            if progress is not None:
+                progress(f"{study.cases[0].name}: Stribeck curve, {done} of {total} groups of speeds done")
+
+        curve = stribeck_curve(
+            study.cases[0],
+            study.stribeck_speeds,
+            backend=backend,
+            workers=workers,
+            scheduler=scheduler,
+            progress=chunks_done,
+        )
+    return BearingStudyResult(tuple(results), curve)

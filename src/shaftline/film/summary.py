@@ -75,6 +75,35 @@ FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
 ]
 
 
+#: Results of rough surfaces (``geometry.surface``, a ``[bearing.surface]`` table), written only
+#: for a rough film: a smooth film's JSON keeps exactly its keys.
+MIXED_FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
+    ("min_film_ratio", "-", "h_min / composite RMS roughness sigma (lambda)", lambda s: s.min_film_ratio),
+    (
+        "lubrication_regime",
+        "-",
+        "boundary (lambda < 1), mixed (1-3) or full film (> 3), from h_min",
+        lambda s: s.lubrication_regime,
+    ),
+    ("asperity_load", "N", "magnitude of the asperity contact force (Greenwood-Tripp)", lambda s: s.asperity_load),
+    (
+        "asperity_load_share",
+        "-",
+        "share of the carried load on the asperities (their force along the total force / total force)",
+        lambda s: s.asperity_load_share,
+    ),
+    ("max_asperity_pressure", "Pa", "largest asperity contact pressure", lambda s: s.max_asperity_pressure),
+    ("contact_area_ratio", "-", "real asperity contact area / bore area", lambda s: s.contact_area_ratio),
+    ("fluid_friction_force", "N", "friction force of the film's shear", lambda s: s.fluid_friction_force),
+    (
+        "boundary_friction_force",
+        "N",
+        "friction force of the asperities (boundary coefficient x asperity load)",
+        lambda s: s.boundary_friction_force,
+    ),
+]
+
+
 def _clean(value: Any) -> Any:
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
@@ -84,13 +113,15 @@ def _clean(value: Any) -> Any:
 
 
 def state_summary(state: BearingState) -> dict[str, Any]:
-    """Scalar results of a film solution, keyed as in :data:`FIELDS`."""
-    return {key: _clean(getter(state)) for key, _, _, getter in FIELDS}
+    """Scalar results of a film solution, keyed as in :data:`FIELDS` (and :data:`MIXED_FIELDS`
+    for rough surfaces)."""
+    fields = FIELDS + MIXED_FIELDS if state.asperity_pressure is not None else FIELDS
+    return {key: _clean(getter(state)) for key, _, _, getter in fields}
 
 
-def units() -> dict[str, str]:
-    """Unit of every key of :func:`state_summary`."""
-    return {key: unit for key, unit, _, _ in FIELDS}
+def units(mixed: bool = False) -> dict[str, str]:
+    """Unit of every key of :func:`state_summary` (with ``mixed``, of the rough-surface keys too)."""
+    return {key: unit for key, unit, _, _ in (FIELDS + MIXED_FIELDS if mixed else FIELDS)}
 
 
 def equilibrium_summary(equilibrium: Equilibrium, coefficients: DynamicCoefficients | None = None) -> dict[str, Any]:
@@ -141,9 +172,29 @@ EXTRA_FIELDS: list[tuple[str, str, str]] = [
 EXTRA_UNITS = {key: unit for key, unit, _ in EXTRA_FIELDS}
 
 
+#: (key, unit, description) of the ``stribeck`` block of ``shaftline bearing stribeck``.
+STRIBECK_FIELDS: list[tuple[str, str, str]] = [
+    ("stribeck.speed_rpm", "rpm", "speeds of the sweep (the base case's load and tilt)"),
+    ("stribeck.friction_coefficient", "-", "friction force / load at each speed (the Stribeck curve)"),
+    ("stribeck.asperity_load_share", "-", "share of the load on the asperities at each speed"),
+    ("stribeck.min_film_thickness", "m", "h_min at each speed"),
+    ("stribeck.min_film_ratio", "-", "h_min / sigma at each speed (null for smooth surfaces)"),
+    ("stribeck.lubrication_regime", "-", "boundary, mixed or full film at each speed (null when smooth)"),
+    ("stribeck.converged", "-", "equilibrium reached at each speed"),
+    ("stribeck.contact", "-", "load not carried within the clearance at each speed"),
+    (
+        "stribeck.transition_speed_rpm",
+        "rpm",
+        "speed above which the asperities carry less than 1 % of the load (null: not crossed in the range)",
+    ),
+]
+
+
 def field_table() -> str:
     """The Markdown table of every JSON field of a bearing case (the README's)."""
     rows = [(key, unit, text) for key, unit, text, _ in FIELDS] + EXTRA_FIELDS
+    rows += [(key, unit, f"{text} (with [bearing.surface] only)") for key, unit, text, _ in MIXED_FIELDS]
+    rows += [(key, unit, f"{text} (`bearing stribeck` only)") for key, unit, text in STRIBECK_FIELDS]
     return (
         "| key | unit | meaning |\n|---|---|---|\n"
         + "\n".join(f"| `{key}` | {unit} | {text} |" for key, unit, text in rows)

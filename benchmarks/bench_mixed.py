@@ -1,0 +1,81 @@
+"""Mixed-lubrication timings (issue 15 part A): rough equilibria against the smooth path.
+
+Run ``.venv/bin/python benchmarks/bench_mixed.py [--repeat N]``. Prints medians and ratios,
+pair by pair in one process (the machine is shared: ratios, not absolute times, are the
+measure).
+
+1. NTUA stern tube (seed 004 Table 5-1, examples/ntua_stern_tube.toml), 100 x 60 nodes: one
+   load equilibrium smooth and with the turned-steel / white-metal roughness preset, at the
+   seed's 90 rpm and psi = 0.3 (full film: the rough path's overhead), and aligned at 1 rpm,
+   where the film is mixed (lambda_min 1.4, the asperities carry 3 %). (Misaligned at low
+   speed the rigid bore's edge takes the load on a vanishing area: contact, part B's liner.)
+   Issue 15 target (with the elastic liner of part B): <= 0.3 s.
+2. The same smooth equilibrium as bench_bearing.py, to show the smooth path's time unchanged
+   (its stencil is the smooth one: ``rough`` None takes the old code).
+3. Seed 001's rig (examples/seed001_water_rig.toml, 41 x 120): a 30-speed Stribeck curve from
+   3.5 to 350 rpm, serially (workers = 1) and on the process pool. Target <= 5 s.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+from timing import median_time
+
+from shaftline.cases import load_case
+from shaftline.film import JournalBearing
+from shaftline.film.roughness import SurfaceRoughness, gaussian_integral_table
+from shaftline.film.stribeck import stribeck_curve
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def main() -> None:
+    repeat = int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 7
+    gaussian_integral_table(2.5)  # built once per process (about 0.05 s): not an equilibrium's cost
+    gaussian_integral_table(2.0)
+    case = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"].cases[0]
+    surface = SurfaceRoughness.preset("turned_steel_white_metal")
+    print(f"NTUA stern tube, {case.options.axial_nodes} x {case.options.circumferential_nodes}")
+    print(f"{'case':48s} {'median s':>9s} {'ratio':>7s} {'h_min um':>9s} {'lambda':>7s} {'share %':>8s}")
+    runs = (
+        ("90 rpm, psi 0.3 (seed 004)", case.operating.speed, case.tilt_y),
+        ("1 rpm, aligned (mixed)", np.pi / 30, 0.0),
+    )
+    for label, speed, tilt in runs:
+        operating = replace(case.operating, speed=speed)
+        smooth = JournalBearing(case.geometry, operating, case.options)
+        rough = JournalBearing(replace(case.geometry, surface=surface), operating, case.options)
+
+        def solve(bearing: JournalBearing, tilt: float = tilt):  # noqa: ANN202 - benchmark helper
+            return bearing.equilibrium(case.load_y, case.load_z, tilt_y=tilt, tilt_z=case.tilt_z)
+
+        # Alternated pair by pair so that both see the same load of the shared machine.
+        t_smooth, eq_smooth = median_time(lambda b=smooth: solve(b), repeat)
+        t_rough, eq_rough = median_time(lambda b=rough: solve(b), repeat)
+        s, r = eq_smooth.state, eq_rough.state
+        print(
+            f"{label + ', smooth':48s} {t_smooth:9.3f} {1.0:7.2f} {s.min_film_thickness * 1e6:9.2f} {'-':>7s} {'-':>8s}"
+        )
+        print(
+            f"{label + ', rough (white metal)':48s} {t_rough:9.3f} {t_rough / t_smooth:7.2f} "
+            f"{r.min_film_thickness * 1e6:9.2f} {r.min_film_ratio:7.2f} {100 * r.asperity_load_share:8.3f}"
+            + ("" if eq_rough.converged else "  (not converged)")
+        )
+    rig = load_case(ROOT / "examples" / "seed001_water_rig.toml").studies["bearing"]
+    speeds = np.geomspace(3.5, 350.0, 30) * np.pi / 30.0
+    print(f"\nseed 001 rig, Stribeck curve of {speeds.size} speeds (3.5-350 rpm), 41 x 120")
+    for workers in (1, None):
+        t, curve = median_time(lambda w=workers: stribeck_curve(rig.cases[0], speeds, workers=w), max(1, repeat // 3))
+        transition = curve.transition_speed * 30.0 / np.pi if curve.transition_speed else float("nan")
+        print(
+            f"workers {workers or 'pool'}: median {t:.2f} s; transition speed {transition:.1f} rpm; "
+            f"{int(curve.contact.sum())} speeds in contact"
+        )
+
+
+if __name__ == "__main__":
+    main()

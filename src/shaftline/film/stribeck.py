@@ -1,0 +1,159 @@
+"""The Stribeck curve of a bearing: friction coefficient against speed, through boundary,
+mixed and full-film lubrication, and the transition speed a stern-tube bearing maker quotes.
+
+The speeds of a curve are solved in ascending order in contiguous chunks; within a chunk each
+equilibrium starts from the previous speed's position and cavitated set (a warm start: the
+position moves smoothly with the speed). The chunks depend on the speeds only, never on the
+number of workers, and are spread over cores with :func:`shaftline.parallel.map` (one
+mechanism with :func:`shaftline.film.sweep`), so the curve is the same on any backend.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from shaftline.errors import InputError
+from shaftline.film.study import BearingCase
+
+__all__ = ["TRANSITION_SHARE", "StribeckCurve", "stribeck_curve", "transition_speed"]
+
+#: Asperity load share below which the bearing counts as lifted off (issue 15: 1 %).
+TRANSITION_SHARE = 0.01
+#: Speeds solved one after the other, warm-started, by one worker.
+CHUNK_SIZE = 10
+
+
+@dataclass(frozen=True, eq=False)
+class StribeckCurve:
+    """Equilibria of one bearing case over a range of speeds (the case's load and tilt).
+
+    Attributes
+    ----------
+    speed : ndarray (n,)
+        Shaft speeds, rad/s, ascending.
+    friction_coefficient, asperity_load_share, min_film_thickness, min_film_ratio : ndarray (n,)
+        Friction force over load (-), share of the load on the asperities (-), h_min (m) and
+        h_min / sigma (-; inf for smooth surfaces).
+    regime : tuple of str or None
+        Lubrication regime at each speed (None for smooth surfaces).
+    converged, contact : ndarray of bool (n,)
+        Whether each equilibrium converged and whether it reached the film floor.
+    transition_speed : float or None
+        Speed above which the asperities carry less than :data:`TRANSITION_SHARE` of the load,
+        rad/s (:func:`transition_speed`); None when no speed of the range crosses it.
+    """
+
+    speed: np.ndarray
+    friction_coefficient: np.ndarray
+    asperity_load_share: np.ndarray
+    min_film_thickness: np.ndarray
+    min_film_ratio: np.ndarray
+    regime: tuple[str | None, ...]
+    converged: np.ndarray
+    contact: np.ndarray
+    transition_speed: float | None
+
+
+def transition_speed(speed: np.ndarray, share: np.ndarray, limit: float = TRANSITION_SHARE) -> float | None:
+    """The speed at which the asperity load share falls below ``limit`` for good, rad/s.
+
+    Between the last speed at or above the limit and the next (below it) the share is taken
+    linear in log(speed). None when the share is below the limit at the lowest speed or
+    never falls below it.
+    """
+    above = np.flatnonzero(share >= limit)
+    if above.size == 0 or above[-1] == share.size - 1:
+        return None
+    k = int(above[-1])
+    s0, s1 = float(share[k]), float(share[k + 1])
+    w = (s0 - limit) / (s0 - s1)
+    return float(math.exp((1 - w) * math.log(speed[k]) + w * math.log(speed[k + 1])))
+
+
+def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float, ...]]:
+    """Equilibria at ``speeds`` (ascending), each warm-started from the previous one."""
+    from shaftline.film.bearing import JournalBearing
+
+    out: list[tuple[float, ...]] = []
+    previous = None
+    for speed in speeds:
+        operating = replace(case.operating, speed=float(speed))
+        bearing = JournalBearing(case.geometry, operating, case.options)
+        equilibrium = bearing.equilibrium(
+            case.load_y,
+            case.load_z,
+            tilt_y=case.tilt_y,
+            tilt_z=case.tilt_z,
+            initial=None if previous is None else previous.position,
+            initial_cavitated=None if previous is None else previous.cavitated,
+        )
+        state = equilibrium.state
+        if equilibrium.converged and not equilibrium.contact:
+            previous = state
+        out.append(
+            (
+                state.friction_coefficient,
+                state.asperity_load_share,
+                state.min_film_thickness,
+                state.min_film_ratio,
+                float(equilibrium.converged),
+                float(equilibrium.contact),
+            )
+        )
+    return out
+
+
+def stribeck_curve(
+    case: BearingCase,
+    speeds: Sequence[float],
+    *,
+    backend: str | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    progress: Callable[[int, int], None] | None = None,
+    chunk_size: int = CHUNK_SIZE,
+) -> StribeckCurve:
+    """Friction coefficient, asperity share and h_min of ``case`` at each of ``speeds`` (rad/s),
+    in warm-started chunks of ``chunk_size`` speeds over :func:`shaftline.parallel.map`
+    (``backend``, ``workers``, ``scheduler`` as there; ``progress(done, total)`` per chunk).
+
+    Raises
+    ------
+    InputError
+        ``"speeds"`` for fewer than two speeds or a speed that is not finite and positive.
+    """
+    from shaftline import parallel
+    from shaftline.film.roughness import lubrication_regime
+
+    values = np.sort(np.asarray(speeds, dtype=float))
+    if values.size < 2 or not np.all(np.isfinite(values)) or values[0] <= 0.0:
+        raise InputError("speeds", list(map(float, values)), "rad/s", "two or more finite speeds > 0")
+    chunks = [values[k : k + chunk_size] for k in range(0, values.size, chunk_size)]
+    solved = parallel.map(
+        functools.partial(_solve_chunk, case),
+        chunks,
+        backend=backend,
+        workers=workers,
+        scheduler=scheduler,
+        progress=progress,
+    )
+    rows = np.array([row for chunk in solved for row in chunk])
+    share = rows[:, 1]
+    ratio = rows[:, 3]
+    rough = case.geometry.surface is not None
+    return StribeckCurve(
+        speed=values,
+        friction_coefficient=rows[:, 0],
+        asperity_load_share=share,
+        min_film_thickness=rows[:, 2],
+        min_film_ratio=ratio,
+        regime=tuple(lubrication_regime(float(v)) if rough else None for v in ratio),
+        converged=rows[:, 4].astype(bool),
+        contact=rows[:, 5].astype(bool),
+        transition_speed=transition_speed(values, share) if rough else None,
+    )

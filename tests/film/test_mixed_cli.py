@@ -1,0 +1,163 @@
+"""``[bearing.surface]`` on the command line: the mixed-lubrication results in the JSON and
+the report, ``shaftline bearing stribeck``, and bad input (exit 2, one line, nothing written)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from shaftline.film.stribeck import transition_speed
+from tests.conftest import invoke
+
+RIG = """
+[case]
+name = "rig"
+
+[bearing]
+length = "1.2 m"
+diameter = "0.323 m"
+radial_clearance = "0.55 mm"
+
+[bearing.operation]
+speed = "35 rpm"
+load = "75 kN"
+
+[bearing.lubricant]
+preset = "water"
+temperature = "25 degC"
+
+[bearing.surface]
+journal_roughness = "0.8 um"
+bore_roughness = "1.6 um"
+bore_modulus = "2320 MPa"
+bore_poisson = 0.327
+
+[bearing.stribeck]
+lowest = "20 rpm"
+highest = "300 rpm"
+points = 8
+
+[bearing.solver]
+axial_nodes = 21
+circumferential_nodes = 120
+"""
+
+
+@pytest.fixture
+def rig(tmp_path: Path) -> Path:
+    path = tmp_path / "rig.toml"
+    path.write_text(RIG)
+    return path
+
+
+def test_solve_reports_the_mixed_lubrication_results(rig: Path) -> None:
+    result = invoke("bearing", "solve", str(rig), "--json", "-", "--workers", "1")
+    assert result.exit_code == 0, result.output
+    bearing = json.loads(result.stdout)["bearing"]
+    base = bearing["cases"][0]
+    assert base["lubrication_regime"] == "boundary" and 0.0 < base["min_film_ratio"] < 1.0
+    assert 0.0 < base["asperity_load_share"] < 1.0 and base["max_asperity_pressure"] > 0.0
+    assert base["boundary_friction_force"] + base["fluid_friction_force"] == pytest.approx(base["friction_force"])
+    assert bearing["units"]["max_asperity_pressure"] == "Pa"
+    assert "stribeck" not in bearing
+
+
+def test_smooth_case_json_has_no_mixed_keys(tmp_path: Path) -> None:
+    path = tmp_path / "smooth.toml"
+    text = RIG.split("[bearing.surface]")[0] + "[bearing.solver]" + RIG.split("[bearing.solver]")[1]
+    path.write_text(text.replace('speed = "35 rpm"', 'speed = "300 rpm"'))
+    result = invoke("bearing", "solve", str(path), "--json", "-", "--workers", "1")
+    assert result.exit_code == 0, result.output
+    bearing = json.loads(result.stdout)["bearing"]
+    assert "min_film_ratio" not in bearing["cases"][0] and "asperity_load" not in bearing["units"]
+
+
+def test_stribeck_verb_writes_curve_and_figures(rig: Path, tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    result = invoke("bearing", "stribeck", str(rig), "--out", str(out), "--workers", "1")
+    assert result.exit_code == 0, result.output
+    assert "Stribeck curve of the base case" in result.stdout
+    curve = json.loads((out / "results.json").read_text())["bearing"]["stribeck"]
+    assert len(curve["speed_rpm"]) == 8 and curve["speed_rpm"][0] == pytest.approx(20.0)
+    share = np.array(curve["asperity_load_share"])
+    assert share[0] > 0.01 > share[-1]
+    assert transition_speed(np.array(curve["speed_rpm"]), share) == pytest.approx(curve["transition_speed_rpm"])
+    for name in ("bearing_stribeck.png", "bearing_0_contact.png"):
+        assert (out / "figures" / name).stat().st_size > 10_000
+
+
+def test_transition_speed_interpolates_in_log_speed() -> None:
+    speed = np.array([1.0, 10.0, 100.0])
+    # 2 % at 10, 0 % at 100: 1 % halfway in log speed, at sqrt(10 * 100).
+    assert transition_speed(speed, np.array([0.5, 0.02, 0.0])) == pytest.approx(np.sqrt(1000.0))
+    assert transition_speed(speed, np.array([0.005, 0.0, 0.0])) is None  # lifted off from the start
+    assert transition_speed(speed, np.array([0.5, 0.2, 0.1])) is None  # never lifts off
+
+
+@pytest.mark.parametrize(
+    ("replace", "field"),
+    [
+        (('bore_roughness = "1.6 um"', 'bore_roughness = "-1.6 um"'), "bearing.surface.bore_roughness"),
+        (('bore_roughness = "1.6 um"', 'bore_roughness = "300 um"'), "bearing.surface.bore_roughness"),
+        (('bore_roughness = "1.6 um"', 'bore_roughness = "0 um"\njournal_roughness = "0 um"'), None),
+        (("bore_poisson = 0.327", "bore_poisson = 0.5"), "bearing.surface.bore_poisson"),
+        (('bore_modulus = "2320 MPa"', 'bore_modulus = "-2320 MPa"'), "bearing.surface.bore_modulus"),
+        (('bore_modulus = "2320 MPa"\n', ""), "bearing.surface.bore_modulus"),
+        (('highest = "300 rpm"', 'highest = "10 rpm"'), "bearing.stribeck.highest"),
+        (("[bearing.surface]", 'surface_roughness = "2 um"\n[bearing.surface]'), "bearing.surface_roughness"),
+    ],
+)
+def test_bad_surface_input_exit_2_one_line_no_output(
+    rig: Path, tmp_path: Path, replace: tuple[str, str], field: str | None
+) -> None:
+    text = RIG.replace(*replace)
+    if field == "bearing.surface_roughness":
+        # surface_roughness belongs to [bearing], before its sub-tables.
+        text = RIG.replace('radial_clearance = "0.55 mm"', 'radial_clearance = "0.55 mm"\nsurface_roughness = "2 um"')
+    if field is None:
+        text = text.replace('journal_roughness = "0.8 um"\n', "", 1)
+        field = "bearing.surface.bore_roughness"
+    rig.write_text(text)
+    out = tmp_path / "out"
+    result = invoke("bearing", "stribeck", str(rig), "--out", str(out), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 2, result.output
+    lines = [line for line in result.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and lines[0].startswith(f"error: {field} = "), lines
+    assert result.stdout == ""
+    assert not out.exists() and not (tmp_path / "r.json").exists()
+
+
+def test_a_roughness_near_the_clearance_is_refused(rig: Path, tmp_path: Path) -> None:
+    """Composite Rq at least half the radial clearance: no film (0.55 mm clearance, 0.25 mm Ra)."""
+    rig.write_text(
+        RIG.replace('radial_clearance = "0.55 mm"', 'radial_clearance = "20 um"').replace(
+            'bore_roughness = "1.6 um"', 'bore_roughness = "15 um"'
+        )
+    )
+    result = invoke("bearing", "solve", str(rig), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 2, result.output
+    assert result.stderr.strip().startswith("error: bearing.surface.bore_roughness = ")
+    assert "half the radial clearance" in result.stderr
+    assert not (tmp_path / "r.json").exists()
+
+
+def test_stribeck_of_a_smooth_case_has_no_regimes(tmp_path: Path) -> None:
+    """Without [bearing.surface] the sweep runs (friction and h_min against speed) and has no
+    regime or transition speed: nothing in it says where asperities would touch."""
+    path = tmp_path / "smooth.toml"
+    text = RIG.split("[bearing.surface]")[0] + "[bearing.stribeck]" + RIG.split("[bearing.stribeck]")[1]
+    path.write_text(
+        text.replace('speed = "35 rpm"', 'speed = "300 rpm"')
+        .replace('lowest = "20 rpm"', 'lowest = "150 rpm"')
+        .replace("points = 8", "points = 3")
+    )
+    out = tmp_path / "out"
+    result = invoke("bearing", "stribeck", str(path), "--out", str(out), "--workers", "1")
+    assert result.exit_code == 0, result.output
+    curve = json.loads((out / "results.json").read_text())["bearing"]["stribeck"]
+    assert curve["transition_speed_rpm"] is None and curve["lubrication_regime"] == [None, None, None]
+    assert curve["min_film_ratio"] == [None, None, None]  # infinite for smooth surfaces
+    assert (out / "figures" / "bearing_stribeck.png").stat().st_size > 10_000
