@@ -151,6 +151,89 @@ def test_a_scheduler_without_workers_is_told_not_waited_for():
         assert time.perf_counter() - start < 10.0
 
 
+def test_a_worker_address_is_told_apart_from_the_scheduler(scheduler, tmp_path):
+    """The address of a real worker (or of its nanny) given as the scheduler: one line saying it is
+    not a scheduler and naming the worker's scheduler, not Dask's internal TypeError; from the
+    command line exit 2 before anything is read or written."""
+    from dask.distributed import Client
+
+    with Client(scheduler) as client:
+        workers = client.scheduler_info()["workers"]
+    worker, info = next(iter(workers.items()))
+    with pytest.raises(InputError) as error:
+        parallel.check_scheduler(worker, "--scheduler")
+    text = str(error.value)
+    assert text.startswith(f"--scheduler = '{worker}': allowed the address of a running Dask scheduler")
+    assert f"this is a Dask worker, not a scheduler; its scheduler is {scheduler}" in text
+    assert "TypeError" not in text and "\n" not in text
+    with pytest.raises(InputError, match="this is a Dask nanny .*, not a scheduler"):
+        parallel.map(abs, [1, 2], scheduler=info["nanny"])
+    from tests.conftest import invoke
+
+    out = tmp_path / "out"
+    result = invoke("design", "slopes", str(ROOT / "examples" / "ntua_slope_design.toml"), "--scheduler", worker,
+                    "--out", str(out))  # fmt: skip
+    assert result.exit_code == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert "not a scheduler" in result.stderr and not out.exists()
+
+
+@pytest.fixture
+def stopped_scheduler():
+    """A real ``dask scheduler`` process, frozen with SIGSTOP when the test says (it then accepts
+    connections, as the kernel does for it, but answers nothing: a hung or overloaded scheduler)."""
+    import socket
+
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    command = [sys.executable, "-m", "distributed.cli.dask_scheduler", "--host", "127.0.0.1", "--port", str(port),
+               "--no-dashboard"]  # fmt: skip
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    try:
+        assert process.stderr is not None
+        for line in process.stderr:  # its log says when it listens
+            if "Scheduler at:" in line:
+                break
+        address = f"tcp://127.0.0.1:{port}"
+
+        def freeze() -> None:
+            process.send_signal(signal.SIGSTOP)
+
+        yield address, freeze
+    finally:
+        process.send_signal(signal.SIGCONT)
+        process.terminate()
+        process.wait(timeout=30)
+
+
+def test_a_scheduler_that_stops_answering_ends_after_the_time_out(monkeypatch, stopped_scheduler):
+    """A real scheduler frozen before the connection, or between the probe and Dask's client (whose
+    handshake has no time-out): one line naming the address, the time-out and what to check, within
+    the time-out and its grace; never a hang or a bare TimeoutError."""
+    address, freeze = stopped_scheduler
+    monkeypatch.setattr(parallel, "_CONNECT_TIMEOUT", 1.0)
+    probe = parallel._probe
+
+    def then_freeze(where: str, timeout: float) -> object:
+        answer = probe(where, timeout)  # the real scheduler answered: freeze it now
+        freeze()
+        return answer
+
+    monkeypatch.setattr(parallel, "_probe", then_freeze)
+    start = time.perf_counter()
+    with pytest.raises(InputError) as error:
+        parallel.check_scheduler(address, "--scheduler")
+    assert time.perf_counter() - start < 8.0  # 2 x 1 s + 1 s grace for the client, and the start
+    text = str(error.value)
+    assert text.startswith(f"--scheduler = '{address}': allowed the address of a running Dask scheduler")
+    assert "no answer in Dask's protocol within 1 s: check that it is the scheduler's address" in text
+    monkeypatch.setattr(parallel, "_probe", probe)
+    start = time.perf_counter()
+    with pytest.raises(InputError, match="no answer in Dask's protocol within 1 s: check"):
+        parallel.map(abs, [1, 2], scheduler=address)  # frozen from the start
+    assert time.perf_counter() - start < 4.0
+
+
 def test_a_backend_name_is_checked_even_when_the_work_runs_here():
     from shaftline.film import sweep
     from shaftline.film.study import BearingCase

@@ -236,15 +236,17 @@ def check_scheduler(scheduler: str, field: str = "scheduler", timeout: float = _
         client.close()
 
 
-def _connect(scheduler: str, field: str) -> Any:
-    """A Dask client of the scheduler at ``scheduler``, or an :class:`InputError`."""
+def _connect(scheduler: str, field: str, timeout: float | None = None) -> Any:
+    """A Dask client of the scheduler at ``scheduler``, or an :class:`InputError` within
+    ``timeout`` seconds (default :data:`_CONNECT_TIMEOUT`)."""
+    timeout = _CONNECT_TIMEOUT if timeout is None else timeout
     try:
         from dask.distributed import Client
     except ImportError:
         raise InputError(
             field, scheduler, "", "a machine with dask.distributed (pip install 'shaftline[parallel]')"
         ) from None
-    allowed = "the address of a running Dask scheduler, e.g. tcp://10.0.0.5:8786"
+    allowed = _ADDRESS
     if not isinstance(scheduler, str) or not scheduler.strip():
         raise InputError(field, repr(scheduler), "", allowed)
     from distributed.comm.addressing import parse_address, parse_host_port
@@ -260,44 +262,124 @@ def _connect(scheduler: str, field: str) -> Any:
     except ValueError as error:
         raise InputError(field, scheduler, "", f"{allowed} ({error})") from None
     try:
-        _probe(scheduler, _CONNECT_TIMEOUT)
-        return Client(scheduler, timeout=_CONNECT_TIMEOUT)
+        identity = _probe(scheduler, timeout)
     except (KeyboardInterrupt, SystemExit):
         raise
+    except TimeoutError:
+        raise InputError(field, scheduler, "", _silent(timeout)) from None
+    except OSError as error:  # nothing listens there, or the host is unknown or unreachable
+        raise InputError(field, scheduler, "", _silent(timeout, str(error))) from None
     except Exception as error:
-        # OSError: no answer; TimeoutError: a port that answers but not in Dask's protocol;
-        # ValueError/TypeError: an address Dask cannot parse; MemoryError and others: a
-        # service that sends bytes Dask reads as a frame length.
+        # ValueError/TypeError: an address Dask cannot parse;
+        # MemoryError and others: a service that sends bytes Dask reads as a frame length.
+        raise InputError(field, scheduler, "", f"{allowed} ({type(error).__name__}: {error})") from None
+    kind = str(identity.get("type", "")) if isinstance(identity, dict) else ""
+    if "Scheduler" not in kind:
+        raise InputError(field, scheduler, "", f"{allowed} ({_not_a_scheduler(kind, identity)})")
+    try:
+        # the client's own time-out first, with room for its retries
+        return _bounded(lambda: Client(scheduler, timeout=timeout), 2.0 * timeout + 1.0, field, scheduler, timeout)
+    except (TimeoutError, OSError):
+        raise InputError(field, scheduler, "", _silent(timeout)) from None
+    except InputError:
+        raise
+    except Exception as error:
         raise InputError(field, scheduler, "", f"{allowed} ({type(error).__name__}: {error})") from None
 
 
-def _probe(scheduler: str, timeout: float) -> None:
-    """Open one connection to ``scheduler`` and close it, all within ``timeout`` seconds.
+#: What ``--scheduler`` must be (the "allowed" of its errors).
+_ADDRESS = "the address of a running Dask scheduler, e.g. tcp://10.0.0.5:8786"
+
+
+def _silent(timeout: float, why: str = "") -> str:
+    """The "allowed" of an address that did not answer as a scheduler in time: what to check."""
+    why = why or f"no answer in Dask's protocol within {timeout:g} s"
+    return (
+        f"{_ADDRESS} ({why}: check that it is the scheduler's address, port 8786 unless it was started with "
+        "another, not its dashboard's 8787; that the scheduler is running and not overloaded; and that this "
+        "machine may reach it, firewall or VPN)"
+    )
+
+
+def _not_a_scheduler(kind: str, identity: Any) -> str:
+    """Why a Dask server that answered is not a scheduler, and where its scheduler is."""
+    if kind in ("Worker", "Nanny"):
+        where = identity.get("scheduler") if kind == "Worker" else None
+        role = "a Dask worker" if kind == "Worker" else "a Dask nanny (the process that watches a worker)"
+        tail = f"; its scheduler is {where}" if where else "; give its scheduler's address"
+        return f"this is {role}, not a scheduler{tail}"
+    return f"this Dask server is a {kind or 'server that does not say what it is'}, not a scheduler"
+
+
+def _bounded(make: Callable[[], R], seconds: float, field: str, scheduler: str, timeout: float) -> R:
+    """``make()`` in a thread of its own (what it raises is raised here), given up after
+    ``seconds``: then an :class:`InputError` saying that the scheduler did not answer within
+    ``timeout``.
+
+    A Dask ``Client`` bounds its TCP connection by ``timeout`` but not the handshake and the
+    identity request that follow: a scheduler that stops answering between the probe and the
+    client (overloaded, suspended) would hold the command for ever. The thread is a daemon,
+    so one left waiting does not hold the process at exit.
+    """
+    import threading
+
+    box: dict[str, Any] = {}
+
+    def run() -> None:
+        try:
+            box["value"] = make()
+        except BaseException as error:  # handed to the caller's thread
+            box["error"] = error
+
+    thread = threading.Thread(target=run, name="shaftline-dask-connect", daemon=True)
+    thread.start()
+    thread.join(seconds)
+    if thread.is_alive():
+        raise InputError(field, scheduler, "", _silent(timeout))
+    if "error" in box:
+        raise box["error"]
+    return box["value"]
+
+
+def _probe(scheduler: str, timeout: float) -> Any:
+    """Open one connection to ``scheduler``, ask who it is and close it, all within ``timeout``
+    seconds; the answer is the server's identity (``{"type": "Scheduler", ...}``).
 
     ``Client(address, timeout=...)`` bounds the TCP connection but not Dask's handshake: on a
     port that accepts the connection and then waits for something else (a Dask dashboard's HTTP
-    port, which users give by mistake) it waits for ever. The probe runs in a thread of its own
-    so that it also works where an event loop is already running (a notebook).
+    port, which users give by mistake) it waits for ever. Asking for the identity also tells a
+    worker's address (which users give by mistake too: Client then fails inside Dask with a
+    TypeError) from a scheduler's. The probe runs in a thread of its own so that it also works
+    where an event loop is already running (a notebook).
     """
     import asyncio
     from concurrent.futures import ThreadPoolExecutor
 
     from distributed.comm import connect
 
-    async def once() -> None:
+    async def ask() -> Any:
+        comm = await connect(scheduler, timeout=timeout)
         try:
-            comm = await asyncio.wait_for(connect(scheduler, timeout=timeout), timeout)
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    async def once() -> Any:
+        try:
+            return await asyncio.wait_for(ask(), timeout)
         except TimeoutError:
             raise TimeoutError(f"no answer in Dask's protocol within {timeout:g} s") from None
-        await comm.close()
 
     with ThreadPoolExecutor(1) as thread:
-        thread.submit(asyncio.run, once()).result()
+        return thread.submit(asyncio.run, once()).result()
 
 
 def _wait_for_workers(client: Any, scheduler: str, field: str, timeout: float) -> None:
     try:
-        client.wait_for_workers(1, timeout=timeout)
+        # bounded as well: Dask's first request of it (the scheduler's identity) has no time-out
+        _bounded(lambda: client.wait_for_workers(1, timeout=timeout), timeout + _CONNECT_TIMEOUT, field, scheduler,
+                 _CONNECT_TIMEOUT)  # fmt: skip
     except TimeoutError:
         raise InputError(
             field, scheduler, "", f"a Dask scheduler with at least one worker (none joined within {timeout:g} s)"
