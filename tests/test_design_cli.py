@@ -70,6 +70,65 @@ def test_run_does_search_and_robustness(tmp_path):
     assert document["bearing"]["cases"][0]["sommerfeld_number"] == pytest.approx(0.0617644, rel=1e-4)
 
 
+def test_progress_counts_the_evaluations_of_the_search_robustness_and_sweep(tmp_path):
+    """What the command line's bar is told (shaftline.registry.Tally): the search's evaluations of
+    population x generations with the best h_min so far, then the robustness pairs (the knee at its
+    operating point and in the seed's 7 scenarios), then the sweep's evaluations over its ratios;
+    counts only grow and each step ends at its total."""
+    from shaftline.registry import Tally
+
+    case = load_case(small_case(tmp_path, extra="\n[design.sweep]\nratios = [0.2, 0.4]\n"))
+    told: list[object] = []
+    run_case(case, only=["design"], options={"design": {"workers": 1}}, progress=told.append)
+    tallies = [t for t in told if isinstance(t, Tally)]
+    steps = {label: [t for t in tallies if t.label == label] for label in ("design search", "robustness")}
+    steps["misalignment sweep"] = [t for t in tallies if t.label == "misalignment sweep"]
+    assert [t.done for t in steps["design search"]] == [6, 12] and {t.total for t in steps["design search"]} == {12}
+    assert all("best h_min" in t.detail and t.detail.endswith(" µm") for t in steps["design search"])
+    assert steps["robustness"][-1].done == steps["robustness"][-1].total == 8
+    assert [t.done for t in steps["misalignment sweep"]] == [6, 12, 18, 24]
+    assert {t.total for t in steps["misalignment sweep"]} == {24}
+    assert "psi_x 0.4 (2 of 2)" in steps["misalignment sweep"][-1].detail
+    for step in steps.values():
+        assert [t.done for t in step] == sorted(t.done for t in step)
+
+
+@pytest.mark.parametrize("kept", [True, False])
+def test_ctrl_c_in_a_search_says_where_its_evaluations_are(tmp_path, kept):
+    """A Ctrl-C that lands in the search (raised here from its progress report, after the first
+    generation) becomes shaftline.errors.Interrupted, whose note names the store and how to resume,
+    or says how to keep the evaluations next time; the store has the generation done."""
+    import pandas as pd
+
+    from shaftline.errors import Interrupted
+
+    store = tmp_path / "store"
+    overrides = {"design.search.store": str(store)} if kept else {}
+    case = load_case(small_case(tmp_path), only=["design"], overrides=overrides)
+
+    def stop(report: object) -> None:
+        if "generation 1/" in str(report):
+            raise KeyboardInterrupt
+
+    with pytest.raises(Interrupted) as interrupted:
+        run_case(case, options={"design": {"workers": 1, "task": "slopes"}}, progress=stop)
+    if kept:
+        assert f"kept in {store}: run the same command again" in interrupted.value.note
+        assert len(pd.read_parquet(store / "evaluations.parquet")) == 6
+    else:
+        assert "were not kept: give --store DIR" in interrupted.value.note and not store.exists()
+
+
+def test_no_bar_codes_in_what_a_pipe_gets(tmp_path):
+    """Standard error is not a terminal here (as in a pipe or a batch log): the run leaves no
+    bar, spinner or cursor codes there, and the JSON on standard output is whole."""
+    result = invoke("design", "slopes", str(small_case(tmp_path)), "--workers", "1", "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    assert json.loads(result.stdout)["design"]["search"]["evaluations"] == 12
+    for code in ("\x1b", "━", "\r", "design search:"):
+        assert code not in result.stderr and code not in result.stdout
+
+
 def test_design_sweep_verb(tmp_path):
     path = small_case(tmp_path, extra="\n[design.sweep]\nratios = [0.2, 0.4]\n")
     result = invoke("design", "sweep", str(path), "--json", "-")

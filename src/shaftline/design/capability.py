@@ -414,19 +414,7 @@ def slopes(
     with input_errors():
         options = parallel_options(["design"], workers, scheduler)
     options.setdefault("design", {})["task"] = "slopes"
-    try:
-        run_cases(Path(case_file), json_path, out, only=["design"], options=options, overrides=overrides, strict=strict)
-    except typer.Exit as stop:
-        if stop.exit_code == 130 and store is not None:  # Ctrl-C: the store has what was evaluated
-            from shaftline.commandline import error_console
-
-            error_console.print(
-                f"the designs evaluated so far are kept in {store}: run again with --store {store} to resume",
-                markup=False,
-                highlight=False,
-                soft_wrap=True,
-            )
-        raise
+    run_cases(Path(case_file), json_path, out, only=["design"], options=options, overrides=overrides, strict=strict)
 
 
 CAPABILITY = SlopeDesign()

@@ -14,6 +14,7 @@ change is taken as spread over the shaft without changing its misalignment (seed
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -182,6 +183,7 @@ def robustness(
     backend: str | None = None,
     workers: int | None = None,
     scheduler: str | None = None,
+    progress: Callable[[int, int], None] | None = None,
 ) -> RobustnessResult:
     """Evaluate ``designs`` at the operating point of ``problem`` and in every scenario.
 
@@ -201,6 +203,9 @@ def robustness(
         The h_min a design must keep, m (default 30 µm, the Bureau Veritas value seed 004 quotes).
     backend, workers, scheduler
         Where the (design, scenario) pairs are solved (:func:`shaftline.parallel.map`).
+    progress : callable, optional
+        ``progress(done, total)`` as the (design, scenario) pairs are solved, the operating
+        points included (:func:`shaftline.parallel.map`).
 
     Raises
     ------
@@ -228,6 +233,7 @@ def robustness(
         workers=workers,
         scheduler=scheduler,
         chunksize=max(1, math.ceil(len(pairs) / (4 * parallel.available_workers()))),
+        progress=progress,
     )
     per_design = [results[k * len(variants) : (k + 1) * len(variants)] for k in range(designs.shape[0])]
     return RobustnessResult(

@@ -15,10 +15,11 @@ from shaftline.design.problem import SlopeDesignProblem, film_state
 from shaftline.design.robustness import RobustnessResult, Scenario, robustness
 from shaftline.design.search import SearchProgress, SearchResult, search
 from shaftline.design.sweep import SweepResult, misalignment_sweep
-from shaftline.errors import located
+from shaftline.errors import Interrupted, located
 from shaftline.film.bearing import BearingState
 from shaftline.film.geometry import BentJournal, BoreSegment
 from shaftline.lubricants import Lubricant
+from shaftline.registry import Progress, Tally
 from shaftline.shaft.coupled import CoupledResult, CouplingOptions, FilmSupport
 from shaftline.shaft.model import Condition, ShaftLine
 
@@ -159,7 +160,7 @@ class DesignResult:
 
 def solve_design(
     study: DesignStudy,
-    progress: Callable[[str], None] | None = None,
+    progress: Progress | None = None,
     task: str = "all",
     workers: int | None = None,
     scheduler: str | None = None,
@@ -168,10 +169,35 @@ def solve_design(
 
     ``"robustness"`` of the knee or the front runs the search first as ``"all"`` does, without the
     sweep; of named designs (``robust_designs = "named"``) it runs no search. ``"sweep"`` runs only
-    the sweep.
+    the sweep. ``progress`` is told each step, and a :class:`~shaftline.registry.Tally` of the
+    evaluations of the search, the sweep and the robustness (the command line's bar). Ctrl-C during
+    a search raises :class:`~shaftline.errors.Interrupted`, whose note says where its evaluations
+    are kept (``store``) and how to resume, or how to keep them next time.
     """
     if task not in TASKS:
         raise ValueError(f"task {task!r}: one of {TASKS}")
+    searches = task in ("all", "slopes", "sweep") or (task == "robustness" and study.robust_designs != "named")
+    try:
+        return _solve(study, progress, task, workers, scheduler)
+    except KeyboardInterrupt as stop:
+        if isinstance(stop, Interrupted) or not searches:
+            raise
+        if study.store is not None:
+            note = (
+                f"the designs evaluated so far are kept in {study.store}: run the same command again "
+                "(the same case and search) to resume from them"
+            )
+        else:
+            note = (
+                "the designs evaluated so far were not kept: give --store DIR (or [design.search] store) to keep "
+                "them as the search goes and to resume it"
+            )
+        raise Interrupted(note) from None
+
+
+def _solve(
+    study: DesignStudy, progress: Progress | None, task: str, workers: int | None, scheduler: str | None
+) -> DesignResult:
     step = progress or (lambda _: None)
     alignment = None
     if study.shaft == "coupled" and study.coupled is not None:
@@ -184,10 +210,14 @@ def solve_design(
     if task in ("all", "slopes") or (task == "robustness" and not named):
 
         def generation(state: SearchProgress) -> None:
-            eta = f", about {state.remaining:.0f} s left" if math.isfinite(state.remaining) else ""
             step(
-                f"design search: generation {state.generation}/{state.generations}, {state.evaluations} designs, "
-                f"best h_min {state.best_min_film * 1e6:.1f} µm{eta}"
+                Tally(
+                    "design search",
+                    state.evaluations,
+                    study.population * study.generations,
+                    "evaluations",
+                    f"generation {state.generation}/{state.generations}, {_best(state)}",
+                )
             )
 
         with located("search"):
@@ -212,6 +242,11 @@ def solve_design(
         names = [("knee" if i == found.knee else f"front {k + 1}") for k, i in enumerate(chosen)]
     if task in ("all", "robustness") and names:
         step(f"robustness of {len(names)} design(s) in {len(study.scenarios)} scenarios")
+        scenarios = f"{len(names)} design(s) × {len(study.scenarios)} scenarios and the operating point"
+
+        def solved(done: int, total: int) -> None:
+            step(Tally("robustness", done, total, "evaluations", scenarios))
+
         with located("robustness"):
             tuned = robustness(
                 problem,
@@ -223,11 +258,23 @@ def solve_design(
                 limit=study.min_film,
                 workers=workers,
                 scheduler=scheduler,
+                progress=solved,
             )
     if study.ratios and task in ("all", "sweep"):
+        each = study.population * study.generations
 
         def told(ratio: float, state: SearchProgress) -> None:
-            step(f"misalignment sweep: psi_x = {ratio:g}, generation {state.generation}/{state.generations}")
+            k = study.ratios.index(ratio)
+            step(
+                Tally(
+                    "misalignment sweep",
+                    k * each + state.evaluations,
+                    len(study.ratios) * each,
+                    "evaluations",
+                    f"psi_x {ratio:g} ({k + 1} of {len(study.ratios)}), generation {state.generation}/"
+                    f"{state.generations}, {_best(state)}",
+                )
+            )
 
         swept = misalignment_sweep(
             study.problem_at(),
@@ -259,6 +306,13 @@ def solve_design(
             if state is not None:
                 profiles[label] = state
     return DesignResult(study, problem, found, tuned, swept, profiles, alignment)
+
+
+def _best(state: SearchProgress) -> str:
+    """The best h_min of a search so far, for its progress bar."""
+    if not math.isfinite(state.best_min_film):
+        return "no acceptable design yet"
+    return f"best h_min {state.best_min_film * 1e6:.1f} µm"
 
 
 def _chosen(found: SearchResult, which: str) -> np.ndarray:
