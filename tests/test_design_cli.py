@@ -246,12 +246,41 @@ def test_design_on_the_coupled_alignment(tmp_path):
     assert "the coupled alignment (aft stern tube)" in (out / "report.html").read_text()
 
 
+def test_sweep_on_the_coupled_alignment_is_of_the_linear_shaft_at_its_operating_point(tmp_path):
+    """[design.sweep] on an [alignment] film bearing (docs/theory.md §14): each psi_x is a search
+    on a straight journal tilted by psi_x 2c/L, under the coupled film force, at the coupled speed,
+    viscosity and horizontal tilt; the report and the JSON say it is the linear shaft."""
+    text = SHAFT_LINE.read_text().replace(
+        "axial_nodes = 100, circumferential_nodes = 60", "axial_nodes = 41, circumferential_nodes = 36"
+    )
+    text = text.replace("population = 40", "population = 6").replace("generations = 40", "generations = 2")
+    path = tmp_path / "line.toml"
+    path.write_text(text + "\n[design.sweep]\nratios = [0.2, 0.5]\n")
+    case = load_case(path, only=["design"])
+    result = run_case(case, options={"design": {"task": "sweep", "workers": 1}})["design"]
+    coupled = result.problem  # the operating point: the coupled film force and journal
+    g = coupled.film.geometry
+    assert g.bent_journal is not None and result.search is None
+    for ratio, searched in zip((0.2, 0.5), result.sweep.searches, strict=True):
+        swept = searched.problem
+        assert swept.tilt_y == pytest.approx(ratio * 2 * g.radial_clearance / g.length)
+        assert swept.film.geometry.bent_journal is None  # straight: the linear shaft
+        assert (swept.load_y, swept.load_z, swept.tilt_z) == (coupled.load_y, coupled.load_z, coupled.tilt_z)
+        assert swept.film.operating == coupled.film.operating
+        assert len(searched.evaluations) == 12 and len(searched.pareto) >= 1
+    out = tmp_path / "out"
+    shown = invoke("design", "sweep", str(path), "--workers", "1", "--out", str(out), "--json", "-")
+    assert shown.exit_code == 0, shown.stderr
+    design = json.loads(shown.stdout)["design"]
+    assert design["sweep_shaft"] == "linear" and [s["psi_x"] for s in design["sweep"]] == [0.2, 0.5]
+    assert "on the linear shaft at the coupled operating point of aft stern tube" in (out / "report.html").read_text()
+
+
 @pytest.mark.parametrize(
     ("extra", "message"),
     [
         ('shaft = "linear"\n', "design.shaft = 'linear'"),
         ('bearing = "intermediate"\n', "design.bearing = 'intermediate'"),
-        ("[design.sweep]\nratios = [0.2]\n", "design.sweep"),
     ],
 )
 def test_bad_design_on_an_alignment(tmp_path, extra, message):

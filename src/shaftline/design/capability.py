@@ -132,6 +132,24 @@ def _ratio(result: DesignResult) -> float:
     return result.problem.tilt_y * g.length / (2.0 * g.radial_clearance)
 
 
+def _sweep_text(result: DesignResult) -> str:
+    """What the sweep's journal is (on the coupled alignment, not the coupled journal)."""
+    study = result.study
+    load = f"{np.hypot(result.problem.load_y, result.problem.load_z) / 1e3:.1f} kN"
+    if study.coupled is None:
+        return (
+            f"One search per psi_x on the {study.shaft} shaft at the operating point of [bearing] (load {load}); "
+            "psi_x is the journal's chord tilt over 2c/L."
+        )
+    return (
+        f"One search per psi_x on the linear shaft at the coupled operating point of {study.coupled.bearing}: a "
+        f"straight journal tilted vertically by psi_x 2c/L, under the coupled film force ({load}), with the "
+        f"coupled speed, lubricant and horizontal tilt. The coupled journal itself has psi_x = {_ratio(result):.3g} "
+        "and a bend, which the sweep leaves out: it shows how the best bore moves if the misalignment differs from "
+        "the computed one (the search above is on the coupled journal)."
+    )
+
+
 def _deviation_table(result: RobustnessResult) -> Table:
     """Change of h_min and p_max from each design's operating point, % (seed 004 Tables 5-14/5-15)."""
     hmin, pmax = result.deviation("min_film_thickness"), result.deviation("max_pressure")
@@ -212,6 +230,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                 for label, state in result.profiles.items()
             }
         if result.sweep is not None:
+            out["sweep_shaft"] = "linear" if study.coupled is not None else study.shaft
             out["sweep"] = [
                 {"psi_x": ratio, "pareto": _design_rows(s, s.pareto)}
                 for ratio, s in zip(result.sweep.ratios, result.sweep.searches, strict=True)
@@ -278,9 +297,10 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                 )
             )
         if result.sweep is not None:
+            where = " (linear shaft at the coupled operating point)" if result.study.coupled is not None else ""
             blocks.append(
                 Paragraph(
-                    "Misalignment sweep: "
+                    f"Misalignment sweep{where}: "
                     + "; ".join(
                         f"psi_x {r:g}: {len(s.pareto)} non-dominated"
                         for r, s in zip(result.sweep.ratios, result.sweep.searches, strict=True)
@@ -365,7 +385,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
             ]
         if result.sweep is not None:
             sweep = result.sweep
-            blocks.append(Heading("Misalignment sweep"))
+            blocks += [Heading("Misalignment sweep"), Paragraph(_sweep_text(result))]
             blocks.append(
                 DataFile(
                     "design_sweep_fronts.csv",

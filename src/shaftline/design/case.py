@@ -118,7 +118,8 @@ class RobustnessSection(Section):
 
 
 class SweepSection(Section):
-    """One search per misalignment ratio (seed 004 Sect. 5.2)."""
+    """One search per misalignment ratio (seed 004 Sect. 5.2), with the [design] shaft model; on an [alignment]
+    case, of the linear shaft (a straight journal) at the film bearing's coupled film force, speed and lubricant."""
 
     ratios: Annotated[list[Annotated[Number, Plausible(-3.0, 3.0, "psi_x of seed 004: 0.1-0.6")]], Field(min_length=1)]
     """psi_x values (journal tilt over 2c/L), e.g. [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]."""
@@ -152,7 +153,8 @@ class DesignSection(Section):
     robustness: RobustnessSection = RobustnessSection()
     """Robustness of the chosen designs."""
     sweep: SweepSection | None = None
-    """A search per misalignment ratio."""
+    """A search per misalignment ratio; on an [alignment] case, of a straight journal (the linear shaft) at the
+    bearing's coupled film force, speed and lubricant."""
 
     @model_validator(mode="after")
     def _bounds(self) -> DesignSection:
@@ -240,10 +242,7 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         load_y, load_z, tilt_y, tilt_z = -1.0, 0.0, 0.0, 0.0
         if shaft != "coupled":
             raise InputError("shaft", shaft, "", "coupled with an [alignment] case (its journal is the coupled one)")
-        if section.sweep is not None:
-            raise InputError(
-                "sweep", "given", "", "a sweep with a [bearing] case (the coupled journal has its own tilt)"
-            )
+        # [design.sweep] here sweeps the linear shaft at the coupled operating point (DesignStudy.sweep_at)
     with located(""):
         parametrisation = SlopeParametrisation(
             section.segments,

@@ -119,6 +119,22 @@ class DesignStudy:
         g = self.problem.film.geometry
         return self.problem.tilt_y * g.length / (2.0 * g.radial_clearance)
 
+    def sweep_at(self, problem: SlopeDesignProblem) -> Callable[[float], SlopeDesignProblem]:
+        """``psi_x -> problem`` of the misalignment sweep, from the operating point ``problem``.
+
+        On a ``[bearing]`` case, the study's shaft model (:meth:`problem_at`). On the coupled
+        alignment the linear shaft at the coupled operating point: the journal straight (the
+        coupled bend left out), its vertical tilt psi_x 2c/L, its horizontal tilt and the load
+        (the film force), speed and lubricant the coupled solution's (docs/theory.md §14).
+        """
+        if self.coupled is None:
+            return self.problem_at()
+        from shaftline.design.sweep import linear_shaft
+
+        g = problem.film.geometry
+        straight = replace(problem, film=replace(problem.film, geometry=replace(g, bent_journal=None)))
+        return linear_shaft(straight)
+
     def problem_at(self) -> Callable[[float], SlopeDesignProblem]:
         """``psi_x -> problem`` with the study's shaft model."""
         from shaftline.design.shaft_models import bent_shaft, linear_shaft
@@ -277,7 +293,7 @@ def _solve(
             )
 
         swept = misalignment_sweep(
-            study.problem_at(),
+            study.sweep_at(problem),
             study.ratios,
             progress=told,
             algorithm=study.algorithm,
