@@ -173,25 +173,77 @@ def test_bad_design_input_is_one_line(tmp_path, change, field):
     assert not out.exists()
 
 
-def test_design_needs_a_bearing_and_a_temperature_model(tmp_path):
+def test_design_needs_a_bearing_without_a_bore(tmp_path):
     text = small_case(tmp_path).read_text()
     design_only = text[text.index("[design]") :]
     path = tmp_path / "alone.toml"
     path.write_text('[case]\nname = "x"\n\n' + design_only)
     result = invoke("design", "slopes", str(path))
     assert result.exit_code == 2 and "a [bearing] or [alignment] table for [design]" in result.stderr
-    constant = text[: text.index("[bearing.lubricant]")] + (
-        '[bearing.lubricant]\nviscosity = "0.07 Pa*s"\n\n' + text[text.index("[bearing.solver]") :]
-    )
-    path.write_text(constant)
-    result = invoke("design", "robustness", str(path))
-    assert result.exit_code == 2 and result.stderr.startswith("error: design.robustness.scenarios")
     bored = text.replace(
         "[bearing.operation]", "[[bearing.bore]]\nlength_fraction = 1.0\nslope_ratio = 0.3\n\n[bearing.operation]"
     )
     path.write_text(bored)
     result = invoke("design", "slopes", str(path))
     assert result.exit_code == 2 and result.stderr.startswith("error: bearing.bore = 'given'")
+
+
+def _with_lubricant(tmp_path: Path, lubricant: str, extra: str = "") -> Path:
+    text = small_case(tmp_path).read_text()
+    text = text[: text.index("[bearing.lubricant]")] + lubricant + "\n" + text[text.index("[bearing.solver]") :]
+    path = tmp_path / "lubricant.toml"
+    path.write_text(text + extra)
+    return path
+
+
+def test_a_constant_viscosity_leaves_the_default_temperature_scenarios_out_with_a_warning(tmp_path):
+    """examples/ntua_stern_tube.toml's lubricant (viscosity = "0.07 Pa*s") with the default
+    scenarios: the two temperature scenarios, which need a viscosity that follows temperature, are
+    left out, and said so before the results in the terminal, at the top of the report, in the
+    robustness section and in the JSON; the five others run."""
+    path = _with_lubricant(tmp_path, '[bearing.lubricant]\nviscosity = "0.07 Pa*s"\ndensity = "890 kg/m^3"\n')
+    out = tmp_path / "out"
+    shown = invoke("design", "robustness", str(path), "--workers", "1", "--out", str(out))
+    assert shown.exit_code == 0, shown.stderr
+    assert shown.stdout.startswith("warning: [design.robustness]: the seed's default scenarios +10 degC and +20 degC")
+    assert "constant viscosity, which does not follow temperature" in " ".join(shown.stdout.split())
+    document = json.loads((out / "results.json").read_text())
+    assert len(document["warnings"]) == 1 and "+10 degC and +20 degC were left out" in document["warnings"][0]
+    robustness = document["design"]["robustness"]
+    assert [s["name"] for s in robustness["scenarios"]] == ["+20 % speed", "-30 % speed", "+50 % load",
+                                                           "-50 % load", "+20 % load"]  # fmt: skip
+    assert [item["scenario"] for item in robustness["left_out"]] == ["+10 degC", "+20 degC"]
+    html = (out / "report.html").read_text()
+    assert html.index("Left out of the defaults") < html.index("Slope-boring design")  # at the top
+    assert "The default scenario +20 degC is left out" in html
+
+
+def test_a_temperature_scenario_asked_for_with_a_constant_viscosity_is_an_input_error(tmp_path):
+    """A temperature scenario the case lists itself is not left out: one line naming it, exit 2,
+    nothing written."""
+    scenarios = (
+        '\n[[design.robustness.scenarios]]\nname = "slow"\nspeed_factor = 0.7\n'
+        '\n[[design.robustness.scenarios]]\nname = "hot"\ntemperature_change = "10 K"\n'
+    )
+    path = _with_lubricant(tmp_path, '[bearing.lubricant]\nviscosity = "0.07 Pa*s"\n', scenarios)
+    out = tmp_path / "out"
+    result = invoke("design", "robustness", str(path), "--out", str(out))
+    assert result.exit_code == 2 and not out.exists()
+    (line,) = result.stderr.strip().splitlines()
+    assert line.startswith("error: design.robustness.scenarios[1].temperature_change = 10 K: allowed 0 here: the ")
+    assert "constant viscosity" in line
+
+
+def test_a_default_temperature_scenario_outside_the_viscosity_model_is_left_out(tmp_path):
+    """Water at 90 degC: +10 degC stays (100 degC, the edge of the water model), +20 degC would
+    take it to 110 degC, where the model does not hold, and is left out with the reason."""
+    path = _with_lubricant(tmp_path, '[bearing.lubricant]\npreset = "water"\ntemperature = "90 degC"\n')
+    case = load_case(path, only=["design"])
+    study = case.studies["design"]
+    assert [s.name for s in study.scenarios][-1] == "+10 degC"
+    (left,) = study.left_out
+    assert left[0] == "+20 degC" and "90 + 20 degC is outside the 0-100 degC" in left[1]
+    assert len(case.warnings) == 1 and "default scenario +20 degC was left out" in case.warnings[0]
 
 
 def test_every_design_in_the_report_folder_and_a_resumable_store(tmp_path):

@@ -180,6 +180,8 @@ def run_cases(
     with interruptible(), input_errors():
         case = read_and_build(case_file, only, overrides)
         check_outputs(out, json_path, case.inputs)
+        # before solving: a long run's reader sees at once what was left out
+        print_blocks(error_console if quiet else console, [Paragraph(f"warning: {w}", "warn") for w in case.warnings])
         with ProgressDisplay(error_console) as show:
             result = run_case(case, only, options, progress=show)
         # What makes the result unacceptable comes first, on standard error if the JSON goes out.

@@ -125,12 +125,17 @@ class BuildContext:
     studies : dict
         The studies built so far, by capability key: those a capability :attr:`~Capability.needs`
         are built before it (e.g. ``[design]`` takes its film from ``[bearing]``).
+    warnings : list of str
+        What a build left out of, or changed from, what the file asked for by default, that the
+        reader must not miss (e.g. default scenarios a lubricant cannot take): one sentence each,
+        shown before solving and at the top of the report and kept in the JSON.
     """
 
     case: CaseInfo
     base_dir: Path
     inputs: list[Path] = field(default_factory=list)
     studies: dict[str, Any] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
 
     def path(self, name: str) -> Path:
         """A data file named in the case, relative to the case file unless absolute; the

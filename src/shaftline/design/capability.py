@@ -219,6 +219,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
             }
         if result.robustness is not None:
             out["robustness"] = _robustness_json(result.robustness)
+            out["robustness"]["left_out"] = [{"scenario": name, "why": why} for name, why in study.left_out]
         if result.profiles:
             out["comparison"] = {
                 label: {
@@ -372,8 +373,10 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                 ),
             ]
         if result.robustness is not None:
+            blocks.append(Heading("Robustness"))
+            for name, why in study.left_out:
+                blocks.append(Paragraph(f"The default scenario {name} is left out: {why}.", "warn"))
             blocks += [
-                Heading("Robustness"),
                 _robustness_table(result.robustness),
                 _deviation_table(result.robustness),
                 Figure(

@@ -95,6 +95,9 @@ class DesignStudy:
     coupled : CoupledSource or None
         With ``shaft = "coupled"``: the alignment whose coupled solution is the operating point
         (the problem's load and tilt are then replaced by it when solved).
+    left_out : tuple of (str, str)
+        The default scenarios left out of ``scenarios`` and why (a lubricant of constant
+        viscosity has no temperature scenarios; the case's warnings say so too).
     """
 
     problem: SlopeDesignProblem
@@ -112,6 +115,7 @@ class DesignStudy:
     store: str | None = None
     coupled: CoupledSource | None = None
     named: tuple[tuple[str, tuple[float, ...]], ...] = ()
+    left_out: tuple[tuple[str, str], ...] = ()
 
     @property
     def misalignment_ratio(self) -> float:
