@@ -70,6 +70,23 @@ def test_run_does_search_and_robustness(tmp_path):
     assert document["bearing"]["cases"][0]["sommerfeld_number"] == pytest.approx(0.0617644, rel=1e-4)
 
 
+def test_design_sweep_defaults_to_the_seeds_ratios(tmp_path):
+    """Issue 12: the psi_x sweep is 0.1 ... 0.6 by default (seed 004 Sect. 5.2): `design sweep` on a
+    case without [design.sweep] sweeps them (it used to do nothing and exit 0), and an empty
+    [design.sweep] table means them (it was an error)."""
+    seed = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]
+    path = small_case(tmp_path)
+    small = path.read_text().replace("population = 6", "population = 4").replace("generations = 2", "generations = 1")
+    path.write_text(small)
+    result = invoke("design", "sweep", str(path), "--workers", "1", "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    sweep = json.loads(result.stdout)["design"]["sweep"]
+    assert [s["psi_x"] for s in sweep] == seed and all(s["pareto"] for s in sweep)
+    path.write_text(path.read_text() + "\n[design.sweep]\n")
+    assert list(load_case(path, only=["design"]).studies["design"].ratios) == seed
+    assert not load_case(small_case(tmp_path), only=["design"]).studies["design"].ratios  # run: no sweep unless asked
+
+
 def test_progress_counts_the_evaluations_of_the_search_robustness_and_sweep(tmp_path):
     """What the command line's bar is told (shaftline.registry.Tally): the search's evaluations of
     population x generations with the best h_min so far, then the robustness pairs (the knee at its

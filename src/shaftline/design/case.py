@@ -123,8 +123,11 @@ class SweepSection(Section):
     """One search per misalignment ratio (seed 004 Sect. 5.2), with the [design] shaft model; on an [alignment]
     case, of the linear shaft (a straight journal) at the film bearing's coupled film force, speed and lubricant."""
 
-    ratios: Annotated[list[Annotated[Number, Plausible(-3.0, 3.0, "psi_x of seed 004: 0.1-0.6")]], Field(min_length=1)]
-    """psi_x values (journal tilt over 2c/L), e.g. [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]."""
+    ratios: Annotated[
+        list[Annotated[Number, Plausible(-3.0, 3.0, "psi_x of seed 004: 0.1-0.6")]], Field(min_length=1)
+    ] = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]
+    """psi_x values (journal tilt over 2c/L); seed 004 Sect. 5.2's by default (`design sweep` on a case without
+    [design.sweep] sweeps these too)."""
 
 
 class DesignSection(Section):

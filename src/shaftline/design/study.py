@@ -14,7 +14,7 @@ import numpy as np
 from shaftline.design.problem import SlopeDesignProblem, film_state
 from shaftline.design.robustness import RobustnessResult, Scenario, robustness
 from shaftline.design.search import SearchProgress, SearchResult, search
-from shaftline.design.sweep import SweepResult, misalignment_sweep
+from shaftline.design.sweep import DEFAULT_RATIOS, SweepResult, misalignment_sweep
 from shaftline.errors import Interrupted, located
 from shaftline.film.bearing import BearingState
 from shaftline.film.geometry import BentJournal, BoreSegment
@@ -88,7 +88,8 @@ class DesignStudy:
     lubricant, temperature
         The case's lubricant and film temperature (degC), for temperature scenarios.
     ratios : tuple of float
-        psi_x of the misalignment sweep (empty: none).
+        psi_x of the misalignment sweep (empty: none, but the ``"sweep"`` task then sweeps the
+        seed's 0.1 ... 0.6).
     store : str or None
         Folder that keeps every evaluation of the search (and resumes it); the sweep's searches
         go into its sub-folders.
@@ -280,25 +281,27 @@ def _solve(
                 scheduler=scheduler,
                 progress=solved,
             )
-    if study.ratios and task in ("all", "sweep"):
+    # `design sweep` on a case without [design.sweep]: the seed's psi_x 0.1 ... 0.6
+    ratios = study.ratios or (DEFAULT_RATIOS if task == "sweep" else ())
+    if ratios and task in ("all", "sweep"):
         each = study.population * study.generations
 
         def told(ratio: float, state: SearchProgress) -> None:
-            k = study.ratios.index(ratio)
+            k = ratios.index(ratio)
             step(
                 Tally(
                     "misalignment sweep",
                     k * each + state.evaluations,
-                    len(study.ratios) * each,
+                    len(ratios) * each,
                     "evaluations",
-                    f"psi_x {ratio:g} ({k + 1} of {len(study.ratios)}), generation {state.generation}/"
+                    f"psi_x {ratio:g} ({k + 1} of {len(ratios)}), generation {state.generation}/"
                     f"{state.generations}, {_best(state)}",
                 )
             )
 
         swept = misalignment_sweep(
             study.sweep_at(problem),
-            study.ratios,
+            ratios,
             progress=told,
             algorithm=study.algorithm,
             population=study.population,
