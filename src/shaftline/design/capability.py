@@ -167,7 +167,11 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
     needs = ("bearing", "alignment")
     parallel = True
     verbs = (
-        Verb(("design", "sweep"), "One search per misalignment ratio of [design.sweep].", options={"task": "sweep"}),
+        Verb(
+            ("design", "sweep"),
+            "One search per misalignment ratio of [design.sweep] (default psi_x 0.1 ... 0.6).",
+            options={"task": "sweep"},
+        ),
     )
 
     def schema(self) -> type[DesignSection]:
