@@ -67,6 +67,13 @@ def test_run_does_search_and_robustness(tmp_path):
     hmin = {s["scenario"]: s["min_film_thickness"] for s in knee["scenarios"]}
     assert hmin["+20 degC"] < hmin["+10 degC"] < knee["reference"]["min_film_thickness"] < hmin["-50 % load"]
     assert knee["robust"] == all(s["passes"] for s in knee["scenarios"])
+    from shaftline.design.capability import CAPABILITY
+    from shaftline.report.blocks import Table
+
+    # the terminal shows the robustness table too, not only the count of robust designs
+    (table,) = [b for b in CAPABILITY.summary(result["design"]) if isinstance(b, Table)]
+    assert table.title == "h_min [µm] in each scenario (limit 30 µm)" and table.rows[0][0] == "knee"
+    assert table.rows[0][-1] == ("robust" if knee["robust"] else "FAILS") and len(table.rows[0]) == 10
     assert document["bearing"]["cases"][0]["sommerfeld_number"] == pytest.approx(0.0617644, rel=1e-4)
 
 
@@ -420,10 +427,16 @@ knuckles = [0.61]
     front = out / "data" / "design_evaluations.csv"
     import pandas as pd
 
-    count = int(pd.read_csv(front)["pareto"].sum())
+    table = pd.read_csv(front)
     result = invoke("design", "robustness", str(small_case(tmp_path)), "--designs", str(front), "--json", "-")
     assert result.exit_code == 0, result.stderr
-    assert len(json.loads(result.stdout)["design"]["robustness"]["designs"]) == count
+    chosen = json.loads(result.stdout)["design"]["robustness"]["designs"]
+    # named by their data row in the file (the knee as such), so that each can be found there
+    expected = ["knee" if table["knee"][k] else f"row {k + 1}" for k in table.index[table["pareto"]]]
+    assert [d["name"] for d in chosen] == expected and "knee" in expected
+    for d in chosen:
+        row = table[table["knee"]] if d["name"] == "knee" else table.iloc[[int(d["name"][4:]) - 1]]
+        assert d["x"] == row[["slope_1", "slope_2", "knuckle_1"]].iloc[0].tolist()
     bad = tmp_path / "bad.csv"
     bad.write_text("name,slope_1\\nx,0.3\\n")
     result = invoke("design", "robustness", str(small_case(tmp_path)), "--designs", str(bad))

@@ -301,6 +301,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                     "text" if robust.any() else "warn",
                 )
             )
+            blocks.append(_robustness_table(result.robustness))  # the verdict per scenario, as in the report
         if result.sweep is not None:
             where = " (linear shaft at the coupled operating point)" if result.study.coupled is not None else ""
             blocks.append(
@@ -449,7 +450,8 @@ CAPABILITY = SlopeDesign()
 
 def read_designs(path: Path, names: Sequence[str]) -> list[dict[str, Any]]:
     """Named designs from a CSV: the variable columns (``slope_1`` … ``knuckle_1`` …) and optionally
-    ``name``; a search's ``design_evaluations.csv`` gives its front (the rows marked ``pareto``)."""
+    ``name``; a search's ``design_evaluations.csv`` gives its front (the rows marked ``pareto``),
+    named by their data row in the file (``row 17``) and the knee as ``knee``."""
     import pandas as pd
 
     from shaftline.errors import InputError
@@ -470,7 +472,9 @@ def read_designs(path: Path, names: Sequence[str]) -> list[dict[str, Any]]:
     if "name" in table.columns:
         labels = table["name"].astype(str).tolist()
     else:
-        labels = [f"design {k + 1}" for k in range(len(table))]
+        # traceable to the file: its knee by name, the others by their data row (1 = the first)
+        knee = table["knee"].astype(bool) if "knee" in table.columns else [False] * len(table)
+        labels = ["knee" if is_knee else f"row {row + 1}" for row, is_knee in zip(table.index, knee, strict=True)]
     return [
         {"name": label, "slopes": [float(row[n]) for n in slopes], "knuckles": [float(row[n]) for n in knuckles]}
         for label, (_, row) in zip(labels, table.iterrows(), strict=True)
