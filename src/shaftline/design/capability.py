@@ -43,6 +43,17 @@ UNITS = {
 }
 
 
+def _mm(offset: float) -> str:
+    """A support-point offset (m) in mm to 0.01 mm: its numerical zero (1e-13 mm for the single
+    slope, centred by symmetry) reads 0.00, not 8.336e-13.
+
+    >>> _mm(8.336e-16), _mm(-1e-9), _mm(-0.0005683), _mm(float("nan"))
+    ('0.00', '0.00', '-0.57', '-')
+    """
+    text = fmt(offset, 1e3)
+    return text if text == "-" else f"{offset * 1e3 + 0.0:.2f}".replace("-0.00", "0.00")
+
+
 def _design_rows(result: SearchResult, indices: Sequence[int] | Any) -> list[dict[str, Any]]:
     names = result.problem.parametrisation.names
     rows = []
@@ -100,7 +111,7 @@ def _front_table(result: SearchResult) -> Table:
                 fmt(e.values["min_film_thickness"], 1e6),
                 fmt(e.values["max_pressure"], 1e-6),
                 fmt(e.values["power_loss"], 1e-3),
-                fmt(e.values["load_centre_offset"], 1e3),
+                _mm(e.values["load_centre_offset"]),
                 "knee" if int(i) == result.knee else "",
             ]
         )
@@ -360,7 +371,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                     fmt(state.min_film_thickness, 1e6),
                     fmt(state.max_pressure, 1e-6),
                     fmt(state.power_loss, 1e-3),
-                    fmt(state.load_centre_offset, 1e3),
+                    _mm(state.load_centre_offset),
                 ]
                 for label, state in result.profiles.items()
             ]
