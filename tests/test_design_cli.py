@@ -140,7 +140,8 @@ def test_ctrl_c_in_a_search_says_where_its_evaluations_are(tmp_path, kept):
         assert f"kept in {store}: run the same command again" in interrupted.value.note
         assert len(pd.read_parquet(store / "evaluations.parquet")) == 6
     else:
-        assert "were not kept: give --store DIR" in interrupted.value.note and not store.exists()
+        assert "were not kept: set [design.search] store = DIR in the case" in interrupted.value.note
+        assert not store.exists()
 
 
 def test_no_bar_codes_in_what_a_pipe_gets(tmp_path):

@@ -210,8 +210,8 @@ def solve_design(
             )
         else:
             note = (
-                "the designs evaluated so far were not kept: give --store DIR (or [design.search] store) to keep "
-                "them as the search goes and to resume it"
+                "the designs evaluated so far were not kept: set [design.search] store = DIR in the case (or give "
+                "design slopes --store DIR) to keep them as the search goes and to resume it"
             )
         raise Interrupted(note) from None
 
