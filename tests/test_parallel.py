@@ -13,6 +13,7 @@ import signal
 import subprocess
 import sys
 import textwrap
+import threading
 import time
 from pathlib import Path
 
@@ -196,8 +197,8 @@ def stopped_scheduler():
                 break
         address = f"tcp://127.0.0.1:{port}"
 
-        def freeze() -> None:
-            process.send_signal(signal.SIGSTOP)
+        def freeze(frozen: bool = True) -> None:
+            process.send_signal(signal.SIGSTOP if frozen else signal.SIGCONT)
 
         yield address, freeze
     finally:
@@ -227,6 +228,16 @@ def test_a_scheduler_that_stops_answering_ends_after_the_time_out(monkeypatch, s
     text = str(error.value)
     assert text.startswith(f"--scheduler = '{address}': allowed the address of a running Dask scheduler")
     assert "no answer in Dask's protocol within 1 s: check that it is the scheduler's address" in text
+    # thawed, the scheduler answers the client given up on: that client is closed, not left open
+    freeze(False)
+    deadline = time.monotonic() + 20.0
+    while any(t.name == "shaftline-dask-connect" for t in threading.enumerate()) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    from distributed import Client
+
+    mine = [c for c in list(Client._instances) if c.scheduler and c.scheduler.address == address]
+    assert all(c.status == "closed" for c in mine)
+    freeze()
     monkeypatch.setattr(parallel, "_probe", probe)
     start = time.perf_counter()
     with pytest.raises(InputError, match="no answer in Dask's protocol within 1 s: check"):

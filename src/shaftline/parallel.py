@@ -319,26 +319,43 @@ def _bounded(make: Callable[[], R], seconds: float, field: str, scheduler: str, 
     A Dask ``Client`` bounds its TCP connection by ``timeout`` but not the handshake and the
     identity request that follow: a scheduler that stops answering between the probe and the
     client (overloaded, suspended) would hold the command for ever. The thread is a daemon,
-    so one left waiting does not hold the process at exit.
+    so one left waiting does not hold the process at exit, and a client it makes after the
+    caller gave up is closed (not left registered as Dask's default client).
     """
     import threading
 
     box: dict[str, Any] = {}
+    lock = threading.Lock()
 
     def run() -> None:
         try:
-            box["value"] = make()
+            value = make()
         except BaseException as error:  # handed to the caller's thread
             box["error"] = error
+            return
+        with lock:
+            if not box.get("abandoned"):
+                box["value"] = value
+                return
+        _close_quietly(value)  # a client made after the caller gave up on it: not left open
 
     thread = threading.Thread(target=run, name="shaftline-dask-connect", daemon=True)
     thread.start()
     thread.join(seconds)
-    if thread.is_alive():
-        raise InputError(field, scheduler, "", _silent(timeout))
+    with lock:
+        if thread.is_alive():
+            box["abandoned"] = True
+            raise InputError(field, scheduler, "", _silent(timeout))
     if "error" in box:
         raise box["error"]
     return box["value"]
+
+
+def _close_quietly(value: Any) -> None:
+    try:
+        value.close()
+    except Exception:  # the scheduler that hung may be gone by now; nothing to tell anyone
+        pass
 
 
 def _probe(scheduler: str, timeout: float) -> Any:
