@@ -238,10 +238,15 @@ def test_search_on_a_dask_cluster_gives_the_same_designs():
 
     problem = ntua(21, 24)
     serial = search(problem, population=6, generations=2, seed=5, backend="serial")
+    from dask.distributed import Client
+
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster:
         remote = search(problem, population=6, generations=2, seed=5, scheduler=cluster.scheduler_address)
-    assert [e.x.tolist() for e in remote.evaluations] == [e.x.tolist() for e in serial.evaluations]
-    assert [e.values for e in remote.evaluations] == [e.values for e in serial.evaluations]
+        with Client(cluster) as client:  # the caller's own client (e.g. of a SLURM or Kubernetes cluster)
+            through_client = search(problem, population=6, generations=2, seed=5, scheduler=client)
+    for other in (remote, through_client):
+        assert [e.x.tolist() for e in other.evaluations] == [e.x.tolist() for e in serial.evaluations]
+        assert [e.values for e in other.evaluations] == [e.values for e in serial.evaluations]
 
 
 def test_best_single_slope_equals_the_misalignment():

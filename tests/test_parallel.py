@@ -62,6 +62,25 @@ def test_every_backend_returns_the_serial_results_in_input_order(scheduler):
     assert os.getpid() not in {pid for _, pid in on_dask}
 
 
+def test_a_client_of_the_callers_is_used_and_left_open(scheduler):
+    """Issue 12: a Dask cluster "when the user passes a scheduler address or a
+    dask.distributed.Client" — the caller's client runs the jobs (same results, on its workers) and
+    is still the caller's, open, afterwards; a closed one is a one-line input error."""
+    from dask.distributed import Client
+
+    items = list(range(8))
+    with Client(scheduler) as client:
+        on_client = parallel.map(slow_square, items, scheduler=client)
+        assert [r for r, _ in on_client] == [x * x for x in items]
+        assert os.getpid() not in {pid for _, pid in on_client}
+        with parallel.Pool(scheduler=client) as pool:
+            assert pool.map(abs, [-1, -2]) == [1, 2] and pool.map(abs, [-3]) == [3]
+        assert client.status == "running" and client.submit(abs, -4).result() == 4
+    closed = r"^scheduler = 'dask.distributed.Client': allowed a running dask.distributed Client \(this one is closed\)"
+    with pytest.raises(InputError, match=closed):
+        parallel.map(abs, [1], scheduler=client)
+
+
 def test_progress_counts_items_as_jobs_finish():
     told: list[tuple[int, int]] = []
     parallel.map(slow_square, range(7), workers=2, chunksize=3, progress=lambda d, t: told.append((d, t)))

@@ -15,7 +15,8 @@ named in :data:`BACKENDS` (the style of SciPy's ``method=`` choices):
     survive a fork of a process that has started them, and a forked child would inherit
     whatever solver state the parent holds.
 ``"dask"``
-    A ``dask.distributed`` cluster: the scheduler at ``scheduler`` (``"tcp://host:8786"``),
+    A ``dask.distributed`` cluster: the scheduler at ``scheduler`` (``"tcp://host:8786"``), the
+    caller's own ``dask.distributed.Client`` given as ``scheduler``,
     or a ``LocalCluster`` started for the call. Needs the optional extra ``parallel``
     (``pip install shaftline[parallel]``) and shaftline installed on every worker.
 
@@ -36,9 +37,12 @@ import os
 import signal
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_EXCEPTION, Future, ProcessPoolExecutor, wait
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from shaftline.errors import InputError
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 __all__ = ["BACKENDS", "Pool", "available_workers", "backend_name", "check_scheduler", "map"]
 
@@ -157,16 +161,38 @@ def _gather_process(
     return results
 
 
-def _dask_client(workers: int, scheduler: str | None) -> tuple[Any, Any]:
-    """A client of the scheduler at ``scheduler`` (checked to have a worker), or of a
-    ``LocalCluster`` of ``workers`` processes started for it; and that cluster (or None)."""
+def _user_client(scheduler: Any) -> bool:
+    """``scheduler`` is a ``dask.distributed.Client`` the caller made (not an address)."""
+    if scheduler is None or isinstance(scheduler, str):
+        return False
+    try:
+        from distributed import Client
+    except ImportError:
+        return False
+    return isinstance(scheduler, Client)
+
+
+def _dask_client(workers: int, scheduler: str | Client | None) -> tuple[Any, Any]:
+    """A client of the scheduler at ``scheduler`` (checked to have a worker), the caller's own
+    client (checked the same way), or one of a ``LocalCluster`` of ``workers`` processes
+    started for it; and that cluster (or None)."""
     try:
         from dask.distributed import Client, LocalCluster
     except ImportError:
         raise InputError(
             "backend", "dask", "", "an installed dask.distributed (pip install 'shaftline[parallel]')"
         ) from None
+    if _user_client(scheduler):
+        assert not isinstance(scheduler, str) and scheduler is not None
+        where = str(getattr(scheduler.scheduler, "address", None) or "dask.distributed.Client")
+        if scheduler.status != "running":
+            raise InputError(
+                "scheduler", where, "", f"a running dask.distributed Client (this one is {scheduler.status})"
+            )
+        _wait_for_workers(scheduler, where, "scheduler", _WORKER_TIMEOUT)
+        return scheduler, None
     if scheduler is not None:
+        assert isinstance(scheduler, str)
         client = _connect(scheduler, "scheduler")
         try:
             # Jobs sent to a scheduler without workers would wait for ever, silently.
@@ -212,7 +238,7 @@ def _gather_dask(
 BACKENDS = ("serial", "process", "dask")
 
 
-def backend_name(backend: str | None, workers: int | None, scheduler: str | None) -> str:
+def backend_name(backend: str | None, workers: int | None, scheduler: str | Client | None) -> str:
     """The backend that :func:`map` uses for these arguments, checked (raises
     :class:`InputError` naming ``"backend"``, ``"workers"`` or ``"scheduler"``)."""
     name = backend if backend is not None else ("dask" if scheduler is not None else "process")
@@ -221,7 +247,8 @@ def backend_name(backend: str | None, workers: int | None, scheduler: str | None
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise InputError("workers", workers if isinstance(workers, int) else repr(workers), "", "an integer >= 1")
     if scheduler is not None and name != "dask":
-        raise InputError("scheduler", scheduler, "", f"no scheduler with backend {name!r} (only with 'dask')")
+        shown = scheduler if isinstance(scheduler, str) else repr(scheduler)
+        raise InputError("scheduler", shown, "", f"no scheduler with backend {name!r} (only with 'dask')")
     return name
 
 
@@ -443,7 +470,9 @@ class Pool:
     ([1, 2], [3])
     """
 
-    def __init__(self, backend: str | None = None, workers: int | None = None, scheduler: str | None = None) -> None:
+    def __init__(
+        self, backend: str | None = None, workers: int | None = None, scheduler: str | Client | None = None
+    ) -> None:
         self.backend = backend_name(backend, workers, scheduler)
         if self.backend == "process" and workers == 1:
             self.backend = "serial"
@@ -493,12 +522,14 @@ class Pool:
         return [result for batch in results for result in batch]
 
     def close(self) -> None:
-        """End the workers (a local cluster too; a remote scheduler's workers stay)."""
+        """End the workers (a local cluster too; a remote scheduler's workers, and a client the
+        caller gave, stay)."""
         if self._executor is not None:
             self._executor.shutdown(wait=True)
             self._executor = None
         if self._client is not None:
-            self._client.close()
+            if self._client is not self.scheduler:  # the caller's own client stays theirs
+                self._client.close()
             self._client = None
         if self._cluster is not None:
             self._cluster.close()
@@ -511,7 +542,7 @@ def map(
     *,
     backend: str | None = None,
     workers: int | None = None,
-    scheduler: str | None = None,
+    scheduler: str | Client | None = None,
     chunksize: int = 1,
     progress: ProgressCallback | None = None,
 ) -> list[R]:
@@ -532,8 +563,10 @@ def map(
         ``LocalCluster`` for ``"dask"``), never more than there are jobs. With ``workers=1``
         the items run here, serially: a pool of one would only add its start-up. Ignored
         with a ``scheduler`` (the cluster has its workers).
-    scheduler : str, optional
-        Address of a running Dask scheduler, e.g. ``"tcp://10.0.0.5:8786"``.
+    scheduler : str or dask.distributed.Client, optional
+        Address of a running Dask scheduler, e.g. ``"tcp://10.0.0.5:8786"``, or a client of
+        one made by the caller (used as it is and left open: e.g. a dask-jobqueue or
+        dask-kubernetes cluster's ``Client(cluster)``).
     chunksize : int
         Items sent to a worker per job (>= 1): more amortise the transfer of short jobs.
     progress : callable, optional

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -24,6 +24,9 @@ from shaftline import parallel
 from shaftline.design.problem import DesignEvaluation, SlopeDesignProblem, evaluate_design
 from shaftline.errors import InputError, located, require_finite, require_positive
 from shaftline.lubricants import Lubricant
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 __all__ = ["SEED_SCENARIOS", "RobustnessResult", "Scenario", "robustness"]
 
@@ -182,7 +185,7 @@ def robustness(
     limit: float = 30e-6,
     backend: str | None = None,
     workers: int | None = None,
-    scheduler: str | None = None,
+    scheduler: str | Client | None = None,
     progress: Callable[[int, int], None] | None = None,
 ) -> RobustnessResult:
     """Evaluate ``designs`` at the operating point of ``problem`` and in every scenario.
@@ -202,7 +205,8 @@ def robustness(
     limit : float
         The h_min a design must keep, m (default 30 µm, the Bureau Veritas value seed 004 quotes).
     backend, workers, scheduler
-        Where the (design, scenario) pairs are solved (:func:`shaftline.parallel.map`).
+        Where the (design, scenario) pairs are solved (:func:`shaftline.parallel.map`; ``scheduler`` a
+        scheduler's address or the caller's ``dask.distributed.Client``).
     progress : callable, optional
         ``progress(done, total)`` as the (design, scenario) pairs are solved, the operating
         points included (:func:`shaftline.parallel.map`).

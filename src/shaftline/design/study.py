@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 
@@ -22,6 +22,9 @@ from shaftline.lubricants import Lubricant
 from shaftline.registry import Progress, Tally
 from shaftline.shaft.coupled import CoupledResult, CouplingOptions, FilmSupport
 from shaftline.shaft.model import Condition, ShaftLine
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 __all__ = ["TASKS", "CoupledSource", "DesignResult", "DesignStudy", "solve_design"]
 
@@ -184,7 +187,7 @@ def solve_design(
     progress: Progress | None = None,
     task: str = "all",
     workers: int | None = None,
-    scheduler: str | None = None,
+    scheduler: str | Client | None = None,
 ) -> DesignResult:
     """Run the search, the robustness of its chosen designs and the sweep (``task="all"``), or one.
 
@@ -217,7 +220,7 @@ def solve_design(
 
 
 def _solve(
-    study: DesignStudy, progress: Progress | None, task: str, workers: int | None, scheduler: str | None
+    study: DesignStudy, progress: Progress | None, task: str, workers: int | None, scheduler: str | Client | None
 ) -> DesignResult:
     step = progress or (lambda _: None)
     alignment = None
