@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 from shaftline.cases import load_case
+from shaftline.errors import InputError
 from shaftline.pipeline import results_document, run_case
 from tests.conftest import invoke
 
@@ -259,6 +260,23 @@ def test_a_temperature_scenario_asked_for_with_a_constant_viscosity_is_an_input_
     assert "constant viscosity" in line
 
 
+def test_a_listed_temperature_scenario_outside_the_viscosity_model_is_refused_before_solving(tmp_path):
+    """Issue 12's bad input "a scenario that makes the viscosity fall outside the lubricant's
+    range": one line naming the scenario, with the range and the temperature it would reach, told
+    when the case is read (not after the search), exit 2, nothing written."""
+    cold = '\n[[design.robustness.scenarios]]\nname = "arctic"\ntemperature_change = "-70 K"\n'
+    path = small_case(tmp_path, extra=cold)
+    out = tmp_path / "out"
+    result = invoke("design", "robustness", str(path), "--out", str(out))
+    assert result.exit_code == 2 and not out.exists()
+    assert result.stderr.strip() == (
+        "error: design.robustness.scenarios[0].temperature_change = -70 K: allowed a film temperature from -20 to "
+        "150 degC, where the viscosity of SAE 30 (seed 004's viscosities) is known (40 - 70 = -30 degC is outside)"
+    )
+    with pytest.raises(InputError):  # when read: the search has not begun
+        load_case(path, only=["design"])
+
+
 def test_a_default_temperature_scenario_outside_the_viscosity_model_is_left_out(tmp_path):
     """Water at 90 degC: +10 degC stays (100 degC, the edge of the water model), +20 degC would
     take it to 110 degC, where the model does not hold, and is left out with the reason."""
@@ -267,7 +285,7 @@ def test_a_default_temperature_scenario_outside_the_viscosity_model_is_left_out(
     study = case.studies["design"]
     assert [s.name for s in study.scenarios][-1] == "+10 degC"
     (left,) = study.left_out
-    assert left[0] == "+20 degC" and "90 + 20 degC is outside the 0-100 degC" in left[1]
+    assert left[0] == "+20 degC" and "90 + 20 = 110 degC is outside the 0 to 100 degC" in left[1]
     assert len(case.warnings) == 1 and "default scenario +20 degC was left out" in case.warnings[0]
 
 

@@ -200,7 +200,7 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
     film bearing of its ``[alignment]``."""
     from shaftline.design.bore import SlopeParametrisation
     from shaftline.design.problem import Constraint, SlopeDesignProblem
-    from shaftline.design.robustness import SEED_SCENARIOS, Scenario
+    from shaftline.design.robustness import SEED_SCENARIOS, VALID_TEMPERATURES, Scenario, outside_range
     from shaftline.design.study import CoupledSource, DesignStudy
     from shaftline.film.problem import BearingProblem
 
@@ -288,14 +288,22 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         )
         left_out = []
         for k, scenario in enumerate(scenarios):
-            if scenario.temperature_change and why and section.robustness.designs != "none":
+            if not scenario.temperature_change or section.robustness.designs == "none":
+                continue
+            field = f"robustness.scenarios[{k}].temperature_change"
+            if why:
                 raise InputError(
-                    f"robustness.scenarios[{k}].temperature_change",
+                    field,
                     scenario.temperature_change,
                     "K",
                     f"0 here: {why} (give the lubricant as a preset or a two-point oil at its temperature for a "
                     "temperature scenario)",
                 )
+            assert lubricant is not None and temperature is not None
+            low, high = VALID_TEMPERATURES[lubricant.model]
+            change = scenario.temperature_change
+            if not low <= temperature + change <= high:  # told now, not after the search
+                raise InputError(field, change, "K", outside_range(lubricant, temperature, change))
     search = section.search
     return DesignStudy(
         problem=problem,
@@ -342,8 +350,8 @@ def _default_scenarios(
             hot = temperature + scenario.temperature_change
             if not low <= hot <= high:
                 reason = (
-                    f"{temperature:g} + {scenario.temperature_change:g} degC is outside the {low:g}-{high:g} degC "
-                    f"where the viscosity of {lubricant.name} is known"
+                    f"{temperature:g} + {scenario.temperature_change:g} = {hot:g} degC is outside the {low:g} to "
+                    f"{high:g} degC where the viscosity of {lubricant.name} is known"
                 )
         if reason:
             left_out.append((scenario.name, reason))

@@ -131,6 +131,21 @@ class RobustnessResult:
         return pd.DataFrame(rows)
 
 
+def outside_range(lubricant: Lubricant, temperature: float, change: float) -> str:
+    """The "allowed" of a temperature change that takes ``lubricant`` out of its model's range.
+
+    >>> from shaftline.lubricants import Lubricant
+    >>> outside_range(Lubricant.preset("SAE 30"), 40.0, -70.0)
+    'a film temperature from -20 to 150 degC, where the viscosity of SAE 30 is known (40 - 70 = -30 degC is outside)'
+    """
+    low, high = VALID_TEMPERATURES[lubricant.model]
+    sign = "+" if change >= 0 else "-"
+    return (
+        f"a film temperature from {low:g} to {high:g} degC, where the viscosity of {lubricant.name} is known "
+        f"({temperature:g} {sign} {abs(change):g} = {temperature + change:g} degC is outside)"
+    )
+
+
 def _scenario_problem(
     problem: SlopeDesignProblem, scenario: Scenario, lubricant: Lubricant | None, temperature: float | None
 ) -> SlopeDesignProblem:
@@ -151,8 +166,7 @@ def _scenario_problem(
                 "temperature_change",
                 scenario.temperature_change,
                 "K",
-                f"a film temperature within {low:g}-{high:g} degC, where the viscosity of {lubricant.name} "
-                f"is known ({temperature:g} + {scenario.temperature_change:g} degC is outside)",
+                outside_range(lubricant, temperature, scenario.temperature_change),
             )
         viscosity = float(lubricant.dynamic_viscosity(hot))
         density = float(lubricant.density(hot))
