@@ -84,12 +84,13 @@ def test_design_sweep_defaults_to_the_seeds_ratios(tmp_path):
     [design.sweep] table means them (it was an error)."""
     seed = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]
     path = small_case(tmp_path)
-    small = path.read_text().replace("population = 6", "population = 4").replace("generations = 2", "generations = 1")
-    path.write_text(small)
-    result = invoke("design", "sweep", str(path), "--workers", "1", "--json", "-")
+    # the sweep takes the search options of `design slopes` (each of its searches 4 x 1 here)
+    options = ("--generations", "1", "--population", "4", "--seed", "3", "--workers", "1")
+    result = invoke("design", "sweep", str(path), *options, "--json", "-")
     assert result.exit_code == 0, result.stderr
     sweep = json.loads(result.stdout)["design"]["sweep"]
     assert [s["psi_x"] for s in sweep] == seed and all(s["pareto"] for s in sweep)
+    assert all(len(s["pareto"]) <= 4 for s in sweep)
     path.write_text(path.read_text() + "\n[design.sweep]\n")
     assert list(load_case(path, only=["design"]).studies["design"].ratios) == seed
     assert not load_case(small_case(tmp_path), only=["design"]).studies["design"].ratios  # run: no sweep unless asked

@@ -19,7 +19,7 @@ from shaftline.commandline import (
     StrictOption,
     WorkersOption,
 )
-from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, Verb, no_progress
+from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
@@ -177,13 +177,6 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
     title = "Slope-boring design"
     needs = ("bearing", "alignment")
     parallel = True
-    verbs = (
-        Verb(
-            ("design", "sweep"),
-            "One search per misalignment ratio of [design.sweep] (default psi_x 0.1 ... 0.6).",
-            options={"task": "sweep"},
-        ),
-    )
 
     def schema(self) -> type[DesignSection]:
         from shaftline.design.case import DesignSection
@@ -207,7 +200,11 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
         )
 
     def commands(self) -> Sequence[Command]:
-        return (Command(("design", "slopes"), slopes), Command(("design", "robustness"), robustness_command))
+        return (
+            Command(("design", "slopes"), slopes),
+            Command(("design", "robustness"), robustness_command),
+            Command(("design", "sweep"), sweep_command),
+        )
 
     def to_json(self, result: DesignResult) -> dict[str, Any]:
         study = result.study
@@ -419,16 +416,46 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
         return blocks
 
 
+GenerationsOption = Annotated[int | None, typer.Option("--generations", help="Generations of the search.")]
+PopulationOption = Annotated[int | None, typer.Option("--population", help="Designs per generation.")]
+AlgorithmOption = Annotated[str | None, typer.Option("--algorithm", help="nsga2, spea2, smsemoa or agemoea.")]
+SeedOption = Annotated[int | None, typer.Option("--seed", help="Random seed of the search.")]
+StoreOption = Annotated[
+    Path | None,
+    typer.Option("--store", help="Folder keeping every evaluation as it is made; run again on it to resume."),
+]
+
+
+def _search_run(
+    task: str,
+    case_file: Path,
+    search: dict[str, Any],
+    json_path: str | None,
+    out: Path | None,
+    strict: bool,
+    workers: int | None,
+    scheduler: str | None,
+) -> None:
+    """Run ``task`` of the case's [design] with the search settings given on the command line."""
+    from shaftline.commandline import input_errors, parallel_options, run_cases
+
+    store = search.pop("store", None)
+    overrides = {f"design.search.{name}": value for name, value in search.items() if value is not None}
+    if store is not None:
+        overrides["design.search.store"] = str(Path(store).resolve())
+    with input_errors():
+        options = parallel_options(["design"], workers, scheduler)
+    options.setdefault("design", {})["task"] = task
+    run_cases(Path(case_file), json_path, out, only=["design"], options=options, overrides=overrides, strict=strict)
+
+
 def slopes(
     case_file: CaseArgument,
-    generations: Annotated[int | None, typer.Option("--generations", help="Generations of the search.")] = None,
-    population: Annotated[int | None, typer.Option("--population", help="Designs per generation.")] = None,
-    algorithm: Annotated[str | None, typer.Option("--algorithm", help="nsga2, spea2, smsemoa or agemoea.")] = None,
-    seed: Annotated[int | None, typer.Option("--seed", help="Random seed of the search.")] = None,
-    store: Annotated[
-        Path | None,
-        typer.Option("--store", help="Folder keeping every evaluation as it is made; run again on it to resume."),
-    ] = None,
+    generations: GenerationsOption = None,
+    population: PopulationOption = None,
+    algorithm: AlgorithmOption = None,
+    seed: SeedOption = None,
+    store: StoreOption = None,
     json_path: JsonOption = None,
     out: OutOption = None,
     strict: StrictOption = False,
@@ -437,23 +464,27 @@ def slopes(
 ) -> None:
     """Search the slope-bored bore of the case's bearing (pymoo): every design, the non-dominated set and
     its knee (the robustness of the knee: `design robustness` or `run`)."""
-    from shaftline.commandline import input_errors, parallel_options, run_cases
+    search = {"generations": generations, "population": population, "algorithm": algorithm, "seed": seed}
+    _search_run("slopes", case_file, {**search, "store": store}, json_path, out, strict, workers, scheduler)
 
-    overrides = {
-        f"design.search.{name}": value
-        for name, value in (
-            ("generations", generations),
-            ("population", population),
-            ("algorithm", algorithm),
-            ("seed", seed),
-            ("store", None if store is None else str(store.resolve())),
-        )
-        if value is not None
-    }
-    with input_errors():
-        options = parallel_options(["design"], workers, scheduler)
-    options.setdefault("design", {})["task"] = "slopes"
-    run_cases(Path(case_file), json_path, out, only=["design"], options=options, overrides=overrides, strict=strict)
+
+def sweep_command(
+    case_file: CaseArgument,
+    generations: GenerationsOption = None,
+    population: PopulationOption = None,
+    algorithm: AlgorithmOption = None,
+    seed: SeedOption = None,
+    store: StoreOption = None,
+    json_path: JsonOption = None,
+    out: OutOption = None,
+    strict: StrictOption = False,
+    workers: WorkersOption = None,
+    scheduler: SchedulerOption = None,
+) -> None:
+    """One search per misalignment ratio of [design.sweep] (default psi_x 0.1 ... 0.6), each with the
+    search settings of [design.search] or of these options; the non-dominated designs of each."""
+    search = {"generations": generations, "population": population, "algorithm": algorithm, "seed": seed}
+    _search_run("sweep", case_file, {**search, "store": store}, json_path, out, strict, workers, scheduler)
 
 
 CAPABILITY = SlopeDesign()
