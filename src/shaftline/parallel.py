@@ -93,18 +93,17 @@ SINGLE_THREADED = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM
 def _context(function: Callable[[Any], Any]) -> Any:
     """``forkserver`` where available (fast start, no inherited threads), else ``spawn``.
 
-    The fork server imports the module of ``function`` and the compiled kernels
-    (:mod:`shaftline._compiled`) before it forks the first worker (the solver modules take
-    about half a second to import, numba's kernels as much to load), so each worker starts
-    with them loaded. The server is started once per process, with :data:`SINGLE_THREADED` in its
+    The fork server imports the module of ``function`` before it forks the first worker
+    (the solver modules take about half a second to import), so each worker starts with it
+    loaded. The server is started once per process, with :data:`SINGLE_THREADED` in its
     environment (and so in every worker's); later calls reuse it as it is.
     """
     if "forkserver" not in multiprocessing.get_all_start_methods():
         return multiprocessing.get_context("spawn")
     context = multiprocessing.get_context("forkserver")
     module = getattr(getattr(function, "func", function), "__module__", None)
-    preload = [module] if module and module != "__main__" else []
-    context.set_forkserver_preload([*preload, "shaftline._compiled"])
+    if module and module != "__main__":
+        context.set_forkserver_preload([module])
     from multiprocessing import forkserver
 
     saved = {name: os.environ.get(name) for name in SINGLE_THREADED}

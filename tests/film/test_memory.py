@@ -49,11 +49,6 @@ import numpy as np
 import scipy.sparse.linalg  # noqa: F401  (imports count in the baseline, not in the peak)
 from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions, SupplyGroove
 from shaftline.film.dynamics import dynamic_coefficients
-from shaftline.film.relaxation import projected_sor
-
-# The compiled set-prediction kernel is compiled (or loaded from numba's cache) at its first
-# call: tens of MiB once per process, whatever the grid, so not part of the film's peak.
-projected_sor(np.zeros((3, 4)), np.ones((3, 4)), np.ones((2, 4)), np.zeros((3, 4)), np.zeros((3, 4), dtype=bool))
 
 def status(key):
     with open("/proc/self/status") as file:

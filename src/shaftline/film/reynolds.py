@@ -45,7 +45,7 @@ import scipy.sparse as sp
 from shaftline.errors import SolverFailure
 from shaftline.film.geometry import coarse_shape
 from shaftline.film.problem import CAVITATION_MODELS, Cavitation
-from shaftline.film.relaxation import projected_sor
+from shaftline.film.relaxation import Relaxation
 
 __all__ = [
     "CAVITATION_MODELS",
@@ -257,6 +257,7 @@ class ReynoldsSolver:
         self._masked_factor: qdldl.Solver | None = None
         self._slot_cache: tuple[Stencil, np.ndarray] | None = None
         self._coarse_grid: CoarseGrid | None = None
+        self._relaxation: Relaxation | None = None
         self.coarse_iterations = 0
         self.pcg_iterations = 0
 
@@ -492,7 +493,7 @@ class ReynoldsSolver:
         minus the scaled complementarity multiplier where it is cavitated) changes
         sign on the cavitation boundary; interpolated bilinearly onto the fine grid it
         places that boundary to within a cell or two. A few projected over-relaxation
-        sweeps on this grid (:func:`shaftline.film.relaxation.projected_sor`), from the
+        sweeps on this grid (the red-black sweeps of :mod:`shaftline.film.relaxation`), from the
         interpolated pressure, remove that short-wavelength error: the set they leave is
         one or two nodes off the final one where the interpolated one is tens.
         """
@@ -513,11 +514,13 @@ class ReynoldsSolver:
     def predicted_set(self, stencil: Stencil, pressure: np.ndarray) -> np.ndarray:
         """Cavitated set predicted from a pressure guess (nz, nt), e.g. interpolated from a
         coarser grid or extrapolated by a Newton step: the nodes that a few projected
-        over-relaxation sweeps from it (:func:`shaftline.film.relaxation.projected_sor`)
+        over-relaxation sweeps from it (the red-black sweeps of :mod:`shaftline.film.relaxation`)
         leave at zero. The sweeps remove the guess's short-wavelength error around the
         cavitation boundary, so the set is a node or two off the final one."""
+        if self._relaxation is None:
+            self._relaxation = Relaxation(self.shape, self.fixed)
         start = np.where(self.fixed, self.fixed_pressure, np.maximum(pressure, 0.0))
-        relaxed = projected_sor(start, stencil.c_theta, stencil.c_z, stencil.rhs, self.fixed)
+        relaxed = self._relaxation.sweep(start, stencil.c_theta, stencil.c_z, stencil.rhs)
         return (relaxed <= 0.0) & ~self.fixed
 
     def _solve_reynolds_lcp(
