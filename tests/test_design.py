@@ -107,6 +107,24 @@ def test_search_keeps_every_design_and_finds_a_front(searched):
     assert (store / "evaluations.csv").exists()
 
 
+def test_design_maps_mark_the_front_and_the_knee_with_a_key(searched):
+    """The design maps (seed 004 Figs. 5-41 ff.): every variable against h_min and p_max, the
+    evaluated designs, the front and the knee told apart by a key."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from shaftline.design.figures import design_maps
+
+    _, _, result = searched
+    ax = design_maps(3)(result)
+    labels = [text.get_text() for text in ax[0, 0].get_legend().get_texts()]
+    assert labels == ["designs evaluated (24)", "non-dominated", "knee"]
+    assert ax[1, 2].get_xlabel() == "knuckle_1 [× L]" and ax[1, 2].get_ylabel() == "p_max [MPa]"
+    import matplotlib.pyplot as plt
+
+    plt.close("all")
+
+
 def test_search_is_the_same_on_a_process_pool_and_resumes_from_its_store(searched):
     """The same seed gives the same designs and values on the pool; a search started again on its
     store takes the designs it has (bit-identical) and carries on."""
@@ -220,10 +238,15 @@ def test_search_on_a_dask_cluster_gives_the_same_designs():
 
     problem = ntua(21, 24)
     serial = search(problem, population=6, generations=2, seed=5, backend="serial")
+    from dask.distributed import Client
+
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster:
         remote = search(problem, population=6, generations=2, seed=5, scheduler=cluster.scheduler_address)
-    assert [e.x.tolist() for e in remote.evaluations] == [e.x.tolist() for e in serial.evaluations]
-    assert [e.values for e in remote.evaluations] == [e.values for e in serial.evaluations]
+        with Client(cluster) as client:  # the caller's own client (e.g. of a SLURM or Kubernetes cluster)
+            through_client = search(problem, population=6, generations=2, seed=5, scheduler=client)
+    for other in (remote, through_client):
+        assert [e.x.tolist() for e in other.evaluations] == [e.x.tolist() for e in serial.evaluations]
+        assert [e.values for e in other.evaluations] == [e.values for e in serial.evaluations]
 
 
 def test_best_single_slope_equals_the_misalignment():

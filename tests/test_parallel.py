@@ -13,6 +13,7 @@ import signal
 import subprocess
 import sys
 import textwrap
+import threading
 import time
 from pathlib import Path
 
@@ -59,6 +60,25 @@ def test_every_backend_returns_the_serial_results_in_input_order(scheduler):
     on_dask = parallel.map(slow_square, items, scheduler=scheduler)
     assert [r for r, _ in on_dask] == [r for r, _ in serial]
     assert os.getpid() not in {pid for _, pid in on_dask}
+
+
+def test_a_client_of_the_callers_is_used_and_left_open(scheduler):
+    """Issue 12: a Dask cluster "when the user passes a scheduler address or a
+    dask.distributed.Client" — the caller's client runs the jobs (same results, on its workers) and
+    is still the caller's, open, afterwards; a closed one is a one-line input error."""
+    from dask.distributed import Client
+
+    items = list(range(8))
+    with Client(scheduler) as client:
+        on_client = parallel.map(slow_square, items, scheduler=client)
+        assert [r for r, _ in on_client] == [x * x for x in items]
+        assert os.getpid() not in {pid for _, pid in on_client}
+        with parallel.Pool(scheduler=client) as pool:
+            assert pool.map(abs, [-1, -2]) == [1, 2] and pool.map(abs, [-3]) == [3]
+        assert client.status == "running" and client.submit(abs, -4).result() == 4
+    closed = r"^scheduler = 'dask.distributed.Client': allowed a running dask.distributed Client \(this one is closed\)"
+    with pytest.raises(InputError, match=closed):
+        parallel.map(abs, [1], scheduler=client)
 
 
 def test_progress_counts_items_as_jobs_finish():
@@ -149,6 +169,99 @@ def test_a_scheduler_without_workers_is_told_not_waited_for():
         with pytest.raises(InputError, match="at least one worker"):
             parallel.check_scheduler(cluster.scheduler_address, timeout=1.0)
         assert time.perf_counter() - start < 10.0
+
+
+def test_a_worker_address_is_told_apart_from_the_scheduler(scheduler, tmp_path):
+    """The address of a real worker (or of its nanny) given as the scheduler: one line saying it is
+    not a scheduler and naming the worker's scheduler, not Dask's internal TypeError; from the
+    command line exit 2 before anything is read or written."""
+    from dask.distributed import Client
+
+    with Client(scheduler) as client:
+        workers = client.scheduler_info()["workers"]
+    worker, info = next(iter(workers.items()))
+    with pytest.raises(InputError) as error:
+        parallel.check_scheduler(worker, "--scheduler")
+    text = str(error.value)
+    assert text.startswith(f"--scheduler = '{worker}': allowed the address of a running Dask scheduler")
+    assert f"this is a Dask worker, not a scheduler; its scheduler is {scheduler}" in text
+    assert "TypeError" not in text and "\n" not in text
+    with pytest.raises(InputError, match="this is a Dask nanny .*, not a scheduler"):
+        parallel.map(abs, [1, 2], scheduler=info["nanny"])
+    from tests.conftest import invoke
+
+    out = tmp_path / "out"
+    result = invoke("design", "slopes", str(ROOT / "examples" / "ntua_slope_design.toml"), "--scheduler", worker,
+                    "--out", str(out))  # fmt: skip
+    assert result.exit_code == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert "not a scheduler" in result.stderr and not out.exists()
+
+
+@pytest.fixture
+def stopped_scheduler():
+    """A real ``dask scheduler`` process, frozen with SIGSTOP when the test says (it then accepts
+    connections, as the kernel does for it, but answers nothing: a hung or overloaded scheduler)."""
+    import socket
+
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    command = [sys.executable, "-m", "distributed.cli.dask_scheduler", "--host", "127.0.0.1", "--port", str(port),
+               "--no-dashboard"]  # fmt: skip
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    try:
+        assert process.stderr is not None
+        for line in process.stderr:  # its log says when it listens
+            if "Scheduler at:" in line:
+                break
+        address = f"tcp://127.0.0.1:{port}"
+
+        def freeze(frozen: bool = True) -> None:
+            process.send_signal(signal.SIGSTOP if frozen else signal.SIGCONT)
+
+        yield address, freeze
+    finally:
+        process.send_signal(signal.SIGCONT)
+        process.terminate()
+        process.wait(timeout=30)
+
+
+def test_a_scheduler_that_stops_answering_ends_after_the_time_out(monkeypatch, stopped_scheduler):
+    """A real scheduler frozen before the connection, or between the probe and Dask's client (whose
+    handshake has no time-out): one line naming the address, the time-out and what to check, within
+    the time-out and its grace; never a hang or a bare TimeoutError."""
+    address, freeze = stopped_scheduler
+    monkeypatch.setattr(parallel, "_CONNECT_TIMEOUT", 1.0)
+    probe = parallel._probe
+
+    def then_freeze(where: str, timeout: float) -> object:
+        answer = probe(where, timeout)  # the real scheduler answered: freeze it now
+        freeze()
+        return answer
+
+    monkeypatch.setattr(parallel, "_probe", then_freeze)
+    start = time.perf_counter()
+    with pytest.raises(InputError) as error:
+        parallel.check_scheduler(address, "--scheduler")
+    assert time.perf_counter() - start < 8.0  # 2 x 1 s + 1 s grace for the client, and the start
+    text = str(error.value)
+    assert text.startswith(f"--scheduler = '{address}': allowed the address of a running Dask scheduler")
+    assert "no answer in Dask's protocol within 1 s: check that it is the scheduler's address" in text
+    # thawed, the scheduler answers the client given up on: that client is closed, not left open
+    freeze(False)
+    deadline = time.monotonic() + 20.0
+    while any(t.name == "shaftline-dask-connect" for t in threading.enumerate()) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    from distributed import Client
+
+    mine = [c for c in list(Client._instances) if c.scheduler and c.scheduler.address == address]
+    assert all(c.status == "closed" for c in mine)
+    freeze()
+    monkeypatch.setattr(parallel, "_probe", probe)
+    start = time.perf_counter()
+    with pytest.raises(InputError, match="no answer in Dask's protocol within 1 s: check"):
+        parallel.map(abs, [1, 2], scheduler=address)  # frozen from the start
+    assert time.perf_counter() - start < 4.0
 
 
 def test_a_backend_name_is_checked_even_when_the_work_runs_here():

@@ -16,7 +16,7 @@ from typing import Annotated, Any, NoReturn
 import typer
 from rich.console import Console
 
-from shaftline.errors import InputError
+from shaftline.errors import InputError, Interrupted
 
 console = Console()
 error_console = Console(stderr=True)
@@ -69,15 +69,18 @@ def input_errors() -> Iterator[None]:
 
 @contextmanager
 def interruptible() -> Iterator[None]:
-    """Ctrl-C ends the command with exit status 130 and one line, a solver that fails on
-    accepted inputs with 3 and one line; outputs are written all at once at the end
-    (:mod:`shaftline.outputs`), so nothing half-written is left."""
+    """Ctrl-C ends the command with exit status 130 and one line (and the note of an
+    :class:`~shaftline.errors.Interrupted`: where a search keeps what it evaluated), a solver
+    that fails on accepted inputs with 3 and one line; outputs are written all at once at the
+    end (:mod:`shaftline.outputs`), so nothing half-written is left."""
     from shaftline.errors import SolverFailure
 
     try:
         yield
-    except KeyboardInterrupt:
-        error_console.print("interrupted: nothing was written", markup=False, highlight=False)
+    except KeyboardInterrupt as stop:
+        # an Interrupted run kept something elsewhere (a search's store): its note says where
+        text = f"interrupted: no results were written; {stop.note}" if isinstance(stop, Interrupted) else ""
+        error_console.print(text or "interrupted: nothing was written", markup=False, highlight=False, soft_wrap=True)
         raise typer.Exit(code=130) from None
     except SolverFailure as failure:
         error_console.print(f"not solved: {failure}; nothing was written", markup=False, highlight=False)
@@ -140,7 +143,16 @@ def deliver(
     text = dumps(document) + "\n"
     if out is not None:
         with error_console.status("writing the report") as status:
-            write_folder(out, document, list(sections), title, description, source, source_label, status.update)
+            write_folder(
+                out,
+                document,
+                list(sections),
+                title,
+                description,
+                source,
+                source_label,
+                lambda text: status.update(str(text)),
+            )
     if json_path not in (None, "-"):
         write_text(Path(str(json_path)), text)
     if json_path == "-":
@@ -160,6 +172,7 @@ def run_cases(
     the findings and summaries, write the report folder and the JSON; exit with status 3
     when the result is not acceptable (with ``strict`` also when a design criterion fails)."""
     from shaftline.pipeline import acceptable, findings_blocks, report_sections, results_document, run_case
+    from shaftline.progress import ProgressDisplay
     from shaftline.report.blocks import Paragraph
     from shaftline.report.terminal import print_blocks
 
@@ -167,8 +180,10 @@ def run_cases(
     with interruptible(), input_errors():
         case = read_and_build(case_file, only, overrides)
         check_outputs(out, json_path, case.inputs)
-        with error_console.status("solving") as status:
-            result = run_case(case, only, options, progress=lambda text: status.update(text))
+        # before solving: a long run's reader sees at once what was left out
+        print_blocks(error_console if quiet else console, [Paragraph(f"warning: {w}", "warn") for w in case.warnings])
+        with ProgressDisplay(error_console) as show:
+            result = run_case(case, only, options, progress=show)
         # What makes the result unacceptable comes first, on standard error if the JSON goes out.
         notes = findings_blocks(result)
         if case.unusual:

@@ -93,6 +93,15 @@ def located(prefix: str, renames: Mapping[str, str] | None = None) -> Iterator[N
         raise error.within(prefix, renames) from None
 
 
+class Interrupted(KeyboardInterrupt):
+    """Ctrl-C during a run that kept something on disk: ``note`` says where and how to go on
+    (the command line prints it under its "interrupted" line)."""
+
+    def __init__(self, note: str) -> None:
+        super().__init__(note)
+        self.note = note
+
+
 class SolverFailure(RuntimeError):
     """A numerical method did not reach a solution for inputs it accepted (the command line
     reports it in one line with exit status 3: nothing to show, nothing written)."""

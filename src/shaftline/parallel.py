@@ -15,7 +15,8 @@ named in :data:`BACKENDS` (the style of SciPy's ``method=`` choices):
     survive a fork of a process that has started them, and a forked child would inherit
     whatever solver state the parent holds.
 ``"dask"``
-    A ``dask.distributed`` cluster: the scheduler at ``scheduler`` (``"tcp://host:8786"``),
+    A ``dask.distributed`` cluster: the scheduler at ``scheduler`` (``"tcp://host:8786"``), the
+    caller's own ``dask.distributed.Client`` given as ``scheduler``,
     or a ``LocalCluster`` started for the call. Needs the optional extra ``parallel``
     (``pip install shaftline[parallel]``) and shaftline installed on every worker.
 
@@ -36,9 +37,12 @@ import os
 import signal
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_EXCEPTION, Future, ProcessPoolExecutor, wait
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from shaftline.errors import InputError
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 __all__ = ["BACKENDS", "Pool", "available_workers", "backend_name", "check_scheduler", "map"]
 
@@ -156,16 +160,38 @@ def _gather_process(
     return results
 
 
-def _dask_client(workers: int, scheduler: str | None) -> tuple[Any, Any]:
-    """A client of the scheduler at ``scheduler`` (checked to have a worker), or of a
-    ``LocalCluster`` of ``workers`` processes started for it; and that cluster (or None)."""
+def _user_client(scheduler: Any) -> bool:
+    """``scheduler`` is a ``dask.distributed.Client`` the caller made (not an address)."""
+    if scheduler is None or isinstance(scheduler, str):
+        return False
+    try:
+        from distributed import Client
+    except ImportError:
+        return False
+    return isinstance(scheduler, Client)
+
+
+def _dask_client(workers: int, scheduler: str | Client | None) -> tuple[Any, Any]:
+    """A client of the scheduler at ``scheduler`` (checked to have a worker), the caller's own
+    client (checked the same way), or one of a ``LocalCluster`` of ``workers`` processes
+    started for it; and that cluster (or None)."""
     try:
         from dask.distributed import Client, LocalCluster
     except ImportError:
         raise InputError(
             "backend", "dask", "", "an installed dask.distributed (pip install 'shaftline[parallel]')"
         ) from None
+    if _user_client(scheduler):
+        assert not isinstance(scheduler, str) and scheduler is not None
+        where = str(getattr(scheduler.scheduler, "address", None) or "dask.distributed.Client")
+        if scheduler.status != "running":
+            raise InputError(
+                "scheduler", where, "", f"a running dask.distributed Client (this one is {scheduler.status})"
+            )
+        _wait_for_workers(scheduler, where, "scheduler", _WORKER_TIMEOUT)
+        return scheduler, None
     if scheduler is not None:
+        assert isinstance(scheduler, str)
         client = _connect(scheduler, "scheduler")
         try:
             # Jobs sent to a scheduler without workers would wait for ever, silently.
@@ -211,7 +237,7 @@ def _gather_dask(
 BACKENDS = ("serial", "process", "dask")
 
 
-def backend_name(backend: str | None, workers: int | None, scheduler: str | None) -> str:
+def backend_name(backend: str | None, workers: int | None, scheduler: str | Client | None) -> str:
     """The backend that :func:`map` uses for these arguments, checked (raises
     :class:`InputError` naming ``"backend"``, ``"workers"`` or ``"scheduler"``)."""
     name = backend if backend is not None else ("dask" if scheduler is not None else "process")
@@ -220,7 +246,8 @@ def backend_name(backend: str | None, workers: int | None, scheduler: str | None
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise InputError("workers", workers if isinstance(workers, int) else repr(workers), "", "an integer >= 1")
     if scheduler is not None and name != "dask":
-        raise InputError("scheduler", scheduler, "", f"no scheduler with backend {name!r} (only with 'dask')")
+        shown = scheduler if isinstance(scheduler, str) else repr(scheduler)
+        raise InputError("scheduler", shown, "", f"no scheduler with backend {name!r} (only with 'dask')")
     return name
 
 
@@ -236,15 +263,17 @@ def check_scheduler(scheduler: str, field: str = "scheduler", timeout: float = _
         client.close()
 
 
-def _connect(scheduler: str, field: str) -> Any:
-    """A Dask client of the scheduler at ``scheduler``, or an :class:`InputError`."""
+def _connect(scheduler: str, field: str, timeout: float | None = None) -> Any:
+    """A Dask client of the scheduler at ``scheduler``, or an :class:`InputError` within
+    ``timeout`` seconds (default :data:`_CONNECT_TIMEOUT`)."""
+    timeout = _CONNECT_TIMEOUT if timeout is None else timeout
     try:
         from dask.distributed import Client
     except ImportError:
         raise InputError(
             field, scheduler, "", "a machine with dask.distributed (pip install 'shaftline[parallel]')"
         ) from None
-    allowed = "the address of a running Dask scheduler, e.g. tcp://10.0.0.5:8786"
+    allowed = _ADDRESS
     if not isinstance(scheduler, str) or not scheduler.strip():
         raise InputError(field, repr(scheduler), "", allowed)
     from distributed.comm.addressing import parse_address, parse_host_port
@@ -260,44 +289,141 @@ def _connect(scheduler: str, field: str) -> Any:
     except ValueError as error:
         raise InputError(field, scheduler, "", f"{allowed} ({error})") from None
     try:
-        _probe(scheduler, _CONNECT_TIMEOUT)
-        return Client(scheduler, timeout=_CONNECT_TIMEOUT)
+        identity = _probe(scheduler, timeout)
     except (KeyboardInterrupt, SystemExit):
         raise
+    except TimeoutError:
+        raise InputError(field, scheduler, "", _silent(timeout)) from None
+    except OSError as error:  # nothing listens there, or the host is unknown or unreachable
+        raise InputError(field, scheduler, "", _silent(timeout, str(error))) from None
     except Exception as error:
-        # OSError: no answer; TimeoutError: a port that answers but not in Dask's protocol;
-        # ValueError/TypeError: an address Dask cannot parse; MemoryError and others: a
-        # service that sends bytes Dask reads as a frame length.
+        # ValueError/TypeError: an address Dask cannot parse;
+        # MemoryError and others: a service that sends bytes Dask reads as a frame length.
+        raise InputError(field, scheduler, "", f"{allowed} ({type(error).__name__}: {error})") from None
+    kind = str(identity.get("type", "")) if isinstance(identity, dict) else ""
+    if "Scheduler" not in kind:
+        raise InputError(field, scheduler, "", f"{allowed} ({_not_a_scheduler(kind, identity)})")
+    try:
+        # the client's own time-out first, with room for its retries
+        return _bounded(lambda: Client(scheduler, timeout=timeout), 2.0 * timeout + 1.0, field, scheduler, timeout)
+    except (TimeoutError, OSError):
+        raise InputError(field, scheduler, "", _silent(timeout)) from None
+    except InputError:
+        raise
+    except Exception as error:
         raise InputError(field, scheduler, "", f"{allowed} ({type(error).__name__}: {error})") from None
 
 
-def _probe(scheduler: str, timeout: float) -> None:
-    """Open one connection to ``scheduler`` and close it, all within ``timeout`` seconds.
+#: What ``--scheduler`` must be (the "allowed" of its errors).
+_ADDRESS = "the address of a running Dask scheduler, e.g. tcp://10.0.0.5:8786"
+
+
+def _silent(timeout: float, why: str = "") -> str:
+    """The "allowed" of an address that did not answer as a scheduler in time: what to check."""
+    why = why or f"no answer in Dask's protocol within {timeout:g} s"
+    return (
+        f"{_ADDRESS} ({why}: check that it is the scheduler's address, port 8786 unless it was started with "
+        "another, not its dashboard's 8787; that the scheduler is running and not overloaded; and that this "
+        "machine may reach it, firewall or VPN)"
+    )
+
+
+def _not_a_scheduler(kind: str, identity: Any) -> str:
+    """Why a Dask server that answered is not a scheduler, and where its scheduler is."""
+    if kind in ("Worker", "Nanny"):
+        where = identity.get("scheduler") if kind == "Worker" else None
+        role = "a Dask worker" if kind == "Worker" else "a Dask nanny (the process that watches a worker)"
+        tail = f"; its scheduler is {where}" if where else "; give its scheduler's address"
+        return f"this is {role}, not a scheduler{tail}"
+    return f"this Dask server is a {kind or 'server that does not say what it is'}, not a scheduler"
+
+
+def _bounded(make: Callable[[], R], seconds: float, field: str, scheduler: str, timeout: float) -> R:
+    """``make()`` in a thread of its own (what it raises is raised here), given up after
+    ``seconds``: then an :class:`InputError` saying that the scheduler did not answer within
+    ``timeout``.
+
+    A Dask ``Client`` bounds its TCP connection by ``timeout`` but not the handshake and the
+    identity request that follow: a scheduler that stops answering between the probe and the
+    client (overloaded, suspended) would hold the command for ever. The thread is a daemon,
+    so one left waiting does not hold the process at exit, and a client it makes after the
+    caller gave up is closed (not left registered as Dask's default client).
+    """
+    import threading
+
+    box: dict[str, Any] = {}
+    lock = threading.Lock()
+
+    def run() -> None:
+        try:
+            value = make()
+        except BaseException as error:  # handed to the caller's thread
+            box["error"] = error
+            return
+        with lock:
+            if not box.get("abandoned"):
+                box["value"] = value
+                return
+        _close_quietly(value)  # a client made after the caller gave up on it: not left open
+
+    thread = threading.Thread(target=run, name="shaftline-dask-connect", daemon=True)
+    thread.start()
+    thread.join(seconds)
+    with lock:
+        if thread.is_alive():
+            box["abandoned"] = True
+            raise InputError(field, scheduler, "", _silent(timeout))
+    if "error" in box:
+        raise box["error"]
+    return box["value"]
+
+
+def _close_quietly(value: Any) -> None:
+    try:
+        value.close()
+    except Exception:  # the scheduler that hung may be gone by now; nothing to tell anyone
+        pass
+
+
+def _probe(scheduler: str, timeout: float) -> Any:
+    """Open one connection to ``scheduler``, ask who it is and close it, all within ``timeout``
+    seconds; the answer is the server's identity (``{"type": "Scheduler", ...}``).
 
     ``Client(address, timeout=...)`` bounds the TCP connection but not Dask's handshake: on a
     port that accepts the connection and then waits for something else (a Dask dashboard's HTTP
-    port, which users give by mistake) it waits for ever. The probe runs in a thread of its own
-    so that it also works where an event loop is already running (a notebook).
+    port, which users give by mistake) it waits for ever. Asking for the identity also tells a
+    worker's address (which users give by mistake too: Client then fails inside Dask with a
+    TypeError) from a scheduler's. The probe runs in a thread of its own so that it also works
+    where an event loop is already running (a notebook).
     """
     import asyncio
     from concurrent.futures import ThreadPoolExecutor
 
     from distributed.comm import connect
 
-    async def once() -> None:
+    async def ask() -> Any:
+        comm = await connect(scheduler, timeout=timeout)
         try:
-            comm = await asyncio.wait_for(connect(scheduler, timeout=timeout), timeout)
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    async def once() -> Any:
+        try:
+            return await asyncio.wait_for(ask(), timeout)
         except TimeoutError:
             raise TimeoutError(f"no answer in Dask's protocol within {timeout:g} s") from None
-        await comm.close()
 
     with ThreadPoolExecutor(1) as thread:
-        thread.submit(asyncio.run, once()).result()
+        return thread.submit(asyncio.run, once()).result()
 
 
 def _wait_for_workers(client: Any, scheduler: str, field: str, timeout: float) -> None:
     try:
-        client.wait_for_workers(1, timeout=timeout)
+        # bounded as well: Dask's first request of it (the scheduler's identity) has no time-out
+        _bounded(lambda: client.wait_for_workers(1, timeout=timeout), timeout + _CONNECT_TIMEOUT, field, scheduler,
+                 _CONNECT_TIMEOUT)  # fmt: skip
     except TimeoutError:
         raise InputError(
             field, scheduler, "", f"a Dask scheduler with at least one worker (none joined within {timeout:g} s)"
@@ -343,7 +469,9 @@ class Pool:
     ([1, 2], [3])
     """
 
-    def __init__(self, backend: str | None = None, workers: int | None = None, scheduler: str | None = None) -> None:
+    def __init__(
+        self, backend: str | None = None, workers: int | None = None, scheduler: str | Client | None = None
+    ) -> None:
         self.backend = backend_name(backend, workers, scheduler)
         if self.backend == "process" and workers == 1:
             self.backend = "serial"
@@ -393,12 +521,14 @@ class Pool:
         return [result for batch in results for result in batch]
 
     def close(self) -> None:
-        """End the workers (a local cluster too; a remote scheduler's workers stay)."""
+        """End the workers (a local cluster too; a remote scheduler's workers, and a client the
+        caller gave, stay)."""
         if self._executor is not None:
             self._executor.shutdown(wait=True)
             self._executor = None
         if self._client is not None:
-            self._client.close()
+            if self._client is not self.scheduler:  # the caller's own client stays theirs
+                self._client.close()
             self._client = None
         if self._cluster is not None:
             self._cluster.close()
@@ -411,7 +541,7 @@ def map(
     *,
     backend: str | None = None,
     workers: int | None = None,
-    scheduler: str | None = None,
+    scheduler: str | Client | None = None,
     chunksize: int = 1,
     progress: ProgressCallback | None = None,
 ) -> list[R]:
@@ -432,8 +562,10 @@ def map(
         ``LocalCluster`` for ``"dask"``), never more than there are jobs. With ``workers=1``
         the items run here, serially: a pool of one would only add its start-up. Ignored
         with a ``scheduler`` (the cluster has its workers).
-    scheduler : str, optional
-        Address of a running Dask scheduler, e.g. ``"tcp://10.0.0.5:8786"``.
+    scheduler : str or dask.distributed.Client, optional
+        Address of a running Dask scheduler, e.g. ``"tcp://10.0.0.5:8786"``, or a client of
+        one made by the caller (used as it is and left open: e.g. a dask-jobqueue or
+        dask-kubernetes cluster's ``Client(cluster)``).
     chunksize : int
         Items sent to a worker per job (>= 1): more amortise the transfer of short jobs.
     progress : callable, optional

@@ -47,6 +47,10 @@ class Case:
         Fields whose plausibility guard the case lowered (``[case] unusual``: dotted
         case-file paths such as ``"bearing.length"``), in the order given; the report should
         say so, as their values were accepted outside the plausible range.
+    warnings : tuple of str
+        What building the case left out of its defaults (:attr:`BuildContext.warnings`): the
+        command line shows them before solving, the report at its top, the JSON under
+        ``warnings`` (only when there are some).
     """
 
     name: str
@@ -57,6 +61,7 @@ class Case:
     tables: Mapping[str, Any] = field(default_factory=dict)
     fingerprints: tuple[tuple[str, str, int], ...] = ()
     unusual: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
 
     def __getitem__(self, key: str) -> Any:
         return self.studies[key]
@@ -148,6 +153,8 @@ def results_document(result: CaseResult) -> dict[str, Any]:
             {"capability": key, "text": item.text, "criterion": item.criterion} for key, item in result.findings
         ],
     }
+    if result.case.warnings:
+        document["warnings"] = list(result.case.warnings)
     for capability, value in result.capabilities():
         document[capability.key] = capability.to_json(value)
     return document
@@ -178,6 +185,9 @@ def report_sections(result: CaseResult) -> list[Any]:
             "lists them under [case] unusual: " + ", ".join(result.case.unusual) + "."
         )
         sections.append(Section("unusual", "Values accepted outside the plausible range", [Paragraph(text, "warn")]))
+    if result.case.warnings:
+        blocks = [Paragraph(text, "warn") for text in result.case.warnings]
+        sections.append(Section("warnings", "Left out of the defaults", blocks))
     blocks = findings_blocks(result)
     if blocks:
         unacceptable = not acceptable(result)

@@ -36,11 +36,45 @@ CAPABILITY_MODULES: tuple[str, ...] = (
     "shaftline.design.capability",
 )
 
-#: A callback that reports what is being solved (the command line shows it).
-Progress = Callable[[str], None]
+
+@dataclass(frozen=True)
+class Tally:
+    """A progress report that counts: ``done`` of ``total`` items of one step of a long run
+    (the evaluations of a design search); the command line draws it as a bar with an ETA.
+
+    Attributes
+    ----------
+    label : str
+        The step, e.g. ``"design search"``; a new label starts a new bar.
+    done, total : int
+        Items finished and items in the step.
+    unit : str
+        What is counted (plural), e.g. ``"evaluations"``.
+    detail : str
+        What the items found so far, with units, e.g. ``"best h_min 41.2 µm"``.
+
+    Examples
+    --------
+    >>> str(Tally("design search", 80, 1600, "evaluations", "best h_min 41.2 µm"))
+    'design search: 80/1600 evaluations, best h_min 41.2 µm'
+    """
+
+    label: str
+    done: int
+    total: int
+    unit: str = "evaluations"
+    detail: str = ""
+
+    def __str__(self) -> str:
+        return f"{self.label}: {self.done}/{self.total} {self.unit}" + (f", {self.detail}" if self.detail else "")
 
 
-def no_progress(_: str) -> None:
+#: A callback that reports what is being solved (the command line shows it): a short text, or
+#: a :class:`Tally` from a step that counts its items.
+Progress = Callable[[str | Tally], None]
+
+
+def no_progress(_: str | Tally) -> None:
     """A :data:`Progress` that shows nothing."""
 
 
@@ -92,12 +126,17 @@ class BuildContext:
     studies : dict
         The studies built so far, by capability key: those a capability :attr:`~Capability.needs`
         are built before it (e.g. ``[design]`` takes its film from ``[bearing]``).
+    warnings : list of str
+        What a build left out of, or changed from, what the file asked for by default, that the
+        reader must not miss (e.g. default scenarios a lubricant cannot take): one sentence each,
+        shown before solving and at the top of the report and kept in the JSON.
     """
 
     case: CaseInfo
     base_dir: Path
     inputs: list[Path] = field(default_factory=list)
     studies: dict[str, Any] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
 
     def path(self, name: str) -> Path:
         """A data file named in the case, relative to the case file unless absolute; the

@@ -287,6 +287,7 @@ def parse_case(
         tables=tables,
         fingerprints=_fingerprints(inputs),
         unusual=lowered,
+        warnings=tuple(dict.fromkeys(context.warnings)),
     )
 
 

@@ -19,7 +19,7 @@ from shaftline.commandline import (
     StrictOption,
     WorkersOption,
 )
-from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, Verb, no_progress
+from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
@@ -41,6 +41,17 @@ UNITS = {
     "slope_k": "share of 2c/L (bore slope of segment k, aft first)",
     "knuckle_k": "share of L from the aft edge",
 }
+
+
+def _mm(offset: float) -> str:
+    """A support-point offset (m) in mm to 0.01 mm: its numerical zero (1e-13 mm for the single
+    slope, centred by symmetry) reads 0.00, not 8.336e-13.
+
+    >>> _mm(8.336e-16), _mm(-1e-9), _mm(-0.0005683), _mm(float("nan"))
+    ('0.00', '0.00', '-0.57', '-')
+    """
+    text = fmt(offset, 1e3)
+    return text if text == "-" else f"{offset * 1e3 + 0.0:.2f}".replace("-0.00", "0.00")
 
 
 def _design_rows(result: SearchResult, indices: Sequence[int] | Any) -> list[dict[str, Any]]:
@@ -100,7 +111,7 @@ def _front_table(result: SearchResult) -> Table:
                 fmt(e.values["min_film_thickness"], 1e6),
                 fmt(e.values["max_pressure"], 1e-6),
                 fmt(e.values["power_loss"], 1e-3),
-                fmt(e.values["load_centre_offset"], 1e3),
+                _mm(e.values["load_centre_offset"]),
                 "knee" if int(i) == result.knee else "",
             ]
         )
@@ -132,6 +143,24 @@ def _ratio(result: DesignResult) -> float:
     return result.problem.tilt_y * g.length / (2.0 * g.radial_clearance)
 
 
+def _sweep_text(result: DesignResult) -> str:
+    """What the sweep's journal is (on the coupled alignment, not the coupled journal)."""
+    study = result.study
+    load = f"{np.hypot(result.problem.load_y, result.problem.load_z) / 1e3:.1f} kN"
+    if study.coupled is None:
+        return (
+            f"One search per psi_x on the {study.shaft} shaft at the operating point of [bearing] (load {load}); "
+            "psi_x is the journal's chord tilt over 2c/L."
+        )
+    return (
+        f"One search per psi_x on the linear shaft at the coupled operating point of {study.coupled.bearing}: a "
+        f"straight journal tilted vertically by psi_x 2c/L, under the coupled film force ({load}), with the "
+        f"coupled speed, lubricant and horizontal tilt. The coupled journal itself has psi_x = {_ratio(result):.3g} "
+        "and a bend, which the sweep leaves out: it shows how the best bore moves if the misalignment differs from "
+        "the computed one (the search above is on the coupled journal)."
+    )
+
+
 def _deviation_table(result: RobustnessResult) -> Table:
     """Change of h_min and p_max from each design's operating point, % (seed 004 Tables 5-14/5-15)."""
     hmin, pmax = result.deviation("min_film_thickness"), result.deviation("max_pressure")
@@ -148,9 +177,6 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
     title = "Slope-boring design"
     needs = ("bearing", "alignment")
     parallel = True
-    verbs = (
-        Verb(("design", "sweep"), "One search per misalignment ratio of [design.sweep].", options={"task": "sweep"}),
-    )
 
     def schema(self) -> type[DesignSection]:
         from shaftline.design.case import DesignSection
@@ -174,7 +200,11 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
         )
 
     def commands(self) -> Sequence[Command]:
-        return (Command(("design", "slopes"), slopes), Command(("design", "robustness"), robustness_command))
+        return (
+            Command(("design", "slopes"), slopes),
+            Command(("design", "robustness"), robustness_command),
+            Command(("design", "sweep"), sweep_command),
+        )
 
     def to_json(self, result: DesignResult) -> dict[str, Any]:
         study = result.study
@@ -201,6 +231,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
             }
         if result.robustness is not None:
             out["robustness"] = _robustness_json(result.robustness)
+            out["robustness"]["left_out"] = [{"scenario": name, "why": why} for name, why in study.left_out]
         if result.profiles:
             out["comparison"] = {
                 label: {
@@ -212,6 +243,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                 for label, state in result.profiles.items()
             }
         if result.sweep is not None:
+            out["sweep_shaft"] = "linear" if study.coupled is not None else study.shaft
             out["sweep"] = [
                 {"psi_x": ratio, "pareto": _design_rows(s, s.pareto)}
                 for ratio, s in zip(result.sweep.ratios, result.sweep.searches, strict=True)
@@ -277,10 +309,12 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                     "text" if robust.any() else "warn",
                 )
             )
+            blocks.append(_robustness_table(result.robustness))  # the verdict per scenario, as in the report
         if result.sweep is not None:
+            where = " (linear shaft at the coupled operating point)" if result.study.coupled is not None else ""
             blocks.append(
                 Paragraph(
-                    "Misalignment sweep: "
+                    f"Misalignment sweep{where}: "
                     + "; ".join(
                         f"psi_x {r:g}: {len(s.pareto)} non-dominated"
                         for r, s in zip(result.sweep.ratios, result.sweep.searches, strict=True)
@@ -334,7 +368,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                     fmt(state.min_film_thickness, 1e6),
                     fmt(state.max_pressure, 1e-6),
                     fmt(state.power_loss, 1e-3),
-                    fmt(state.load_centre_offset, 1e3),
+                    _mm(state.load_centre_offset),
                 ]
                 for label, state in result.profiles.items()
             ]
@@ -352,8 +386,10 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
                 ),
             ]
         if result.robustness is not None:
+            blocks.append(Heading("Robustness"))
+            for name, why in study.left_out:
+                blocks.append(Paragraph(f"The default scenario {name} is left out: {why}.", "warn"))
             blocks += [
-                Heading("Robustness"),
                 _robustness_table(result.robustness),
                 _deviation_table(result.robustness),
                 Figure(
@@ -365,7 +401,7 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
             ]
         if result.sweep is not None:
             sweep = result.sweep
-            blocks.append(Heading("Misalignment sweep"))
+            blocks += [Heading("Misalignment sweep"), Paragraph(_sweep_text(result))]
             blocks.append(
                 DataFile(
                     "design_sweep_fronts.csv",
@@ -380,16 +416,46 @@ class SlopeDesign(Capability["DesignSection", "DesignStudy", "DesignResult"]):
         return blocks
 
 
+GenerationsOption = Annotated[int | None, typer.Option("--generations", help="Generations of the search.")]
+PopulationOption = Annotated[int | None, typer.Option("--population", help="Designs per generation.")]
+AlgorithmOption = Annotated[str | None, typer.Option("--algorithm", help="nsga2, spea2, smsemoa or agemoea.")]
+SeedOption = Annotated[int | None, typer.Option("--seed", help="Random seed of the search.")]
+StoreOption = Annotated[
+    Path | None,
+    typer.Option("--store", help="Folder keeping every evaluation as it is made; run again on it to resume."),
+]
+
+
+def _search_run(
+    task: str,
+    case_file: Path,
+    search: dict[str, Any],
+    json_path: str | None,
+    out: Path | None,
+    strict: bool,
+    workers: int | None,
+    scheduler: str | None,
+) -> None:
+    """Run ``task`` of the case's [design] with the search settings given on the command line."""
+    from shaftline.commandline import input_errors, parallel_options, run_cases
+
+    store = search.pop("store", None)
+    overrides = {f"design.search.{name}": value for name, value in search.items() if value is not None}
+    if store is not None:
+        overrides["design.search.store"] = str(Path(store).resolve())
+    with input_errors():
+        options = parallel_options(["design"], workers, scheduler)
+    options.setdefault("design", {})["task"] = task
+    run_cases(Path(case_file), json_path, out, only=["design"], options=options, overrides=overrides, strict=strict)
+
+
 def slopes(
     case_file: CaseArgument,
-    generations: Annotated[int | None, typer.Option("--generations", help="Generations of the search.")] = None,
-    population: Annotated[int | None, typer.Option("--population", help="Designs per generation.")] = None,
-    algorithm: Annotated[str | None, typer.Option("--algorithm", help="nsga2, spea2, smsemoa or agemoea.")] = None,
-    seed: Annotated[int | None, typer.Option("--seed", help="Random seed of the search.")] = None,
-    store: Annotated[
-        Path | None,
-        typer.Option("--store", help="Folder keeping every evaluation as it is made; run again on it to resume."),
-    ] = None,
+    generations: GenerationsOption = None,
+    population: PopulationOption = None,
+    algorithm: AlgorithmOption = None,
+    seed: SeedOption = None,
+    store: StoreOption = None,
     json_path: JsonOption = None,
     out: OutOption = None,
     strict: StrictOption = False,
@@ -398,35 +464,27 @@ def slopes(
 ) -> None:
     """Search the slope-bored bore of the case's bearing (pymoo): every design, the non-dominated set and
     its knee (the robustness of the knee: `design robustness` or `run`)."""
-    from shaftline.commandline import input_errors, parallel_options, run_cases
+    search = {"generations": generations, "population": population, "algorithm": algorithm, "seed": seed}
+    _search_run("slopes", case_file, {**search, "store": store}, json_path, out, strict, workers, scheduler)
 
-    overrides = {
-        f"design.search.{name}": value
-        for name, value in (
-            ("generations", generations),
-            ("population", population),
-            ("algorithm", algorithm),
-            ("seed", seed),
-            ("store", None if store is None else str(store.resolve())),
-        )
-        if value is not None
-    }
-    with input_errors():
-        options = parallel_options(["design"], workers, scheduler)
-    options.setdefault("design", {})["task"] = "slopes"
-    try:
-        run_cases(Path(case_file), json_path, out, only=["design"], options=options, overrides=overrides, strict=strict)
-    except typer.Exit as stop:
-        if stop.exit_code == 130 and store is not None:  # Ctrl-C: the store has what was evaluated
-            from shaftline.commandline import error_console
 
-            error_console.print(
-                f"the designs evaluated so far are kept in {store}: run again with --store {store} to resume",
-                markup=False,
-                highlight=False,
-                soft_wrap=True,
-            )
-        raise
+def sweep_command(
+    case_file: CaseArgument,
+    generations: GenerationsOption = None,
+    population: PopulationOption = None,
+    algorithm: AlgorithmOption = None,
+    seed: SeedOption = None,
+    store: StoreOption = None,
+    json_path: JsonOption = None,
+    out: OutOption = None,
+    strict: StrictOption = False,
+    workers: WorkersOption = None,
+    scheduler: SchedulerOption = None,
+) -> None:
+    """One search per misalignment ratio of [design.sweep] (default psi_x 0.1 ... 0.6), each with the
+    search settings of [design.search] or of these options; the non-dominated designs of each."""
+    search = {"generations": generations, "population": population, "algorithm": algorithm, "seed": seed}
+    _search_run("sweep", case_file, {**search, "store": store}, json_path, out, strict, workers, scheduler)
 
 
 CAPABILITY = SlopeDesign()
@@ -434,7 +492,8 @@ CAPABILITY = SlopeDesign()
 
 def read_designs(path: Path, names: Sequence[str]) -> list[dict[str, Any]]:
     """Named designs from a CSV: the variable columns (``slope_1`` … ``knuckle_1`` …) and optionally
-    ``name``; a search's ``design_evaluations.csv`` gives its front (the rows marked ``pareto``)."""
+    ``name``; a search's ``design_evaluations.csv`` gives its front (the rows marked ``pareto``),
+    named by their data row in the file (``row 17``) and the knee as ``knee``."""
     import pandas as pd
 
     from shaftline.errors import InputError
@@ -455,7 +514,9 @@ def read_designs(path: Path, names: Sequence[str]) -> list[dict[str, Any]]:
     if "name" in table.columns:
         labels = table["name"].astype(str).tolist()
     else:
-        labels = [f"design {k + 1}" for k in range(len(table))]
+        # traceable to the file: its knee by name, the others by their data row (1 = the first)
+        knee = table["knee"].astype(bool) if "knee" in table.columns else [False] * len(table)
+        labels = ["knee" if is_knee else f"row {row + 1}" for row, is_knee in zip(table.index, knee, strict=True)]
     return [
         {"name": label, "slopes": [float(row[n]) for n in slopes], "knuckles": [float(row[n]) for n in knuckles]}
         for label, (_, row) in zip(labels, table.iterrows(), strict=True)

@@ -32,7 +32,9 @@ from shaftline.errors import InputError, located
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
+    from shaftline.design.robustness import Scenario
     from shaftline.design.study import DesignStudy
+    from shaftline.lubricants import Lubricant
 
 ObjectiveName = Literal["min_film_thickness", "max_pressure", "power_loss", "side_leakage", "support_offset"]
 ShaftModel = Literal["linear", "bent", "coupled"]
@@ -118,10 +120,14 @@ class RobustnessSection(Section):
 
 
 class SweepSection(Section):
-    """One search per misalignment ratio (seed 004 Sect. 5.2)."""
+    """One search per misalignment ratio (seed 004 Sect. 5.2), with the [design] shaft model; on an [alignment]
+    case, of the linear shaft (a straight journal) at the film bearing's coupled film force, speed and lubricant."""
 
-    ratios: Annotated[list[Annotated[Number, Plausible(-3.0, 3.0, "psi_x of seed 004: 0.1-0.6")]], Field(min_length=1)]
-    """psi_x values (journal tilt over 2c/L), e.g. [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]."""
+    ratios: Annotated[
+        list[Annotated[Number, Plausible(-3.0, 3.0, "psi_x of seed 004: 0.1-0.6")]], Field(min_length=1)
+    ] = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]
+    """psi_x values (journal tilt over 2c/L); seed 004 Sect. 5.2's by default (`design sweep` on a case without
+    [design.sweep] sweeps these too)."""
 
 
 class DesignSection(Section):
@@ -152,7 +158,8 @@ class DesignSection(Section):
     robustness: RobustnessSection = RobustnessSection()
     """Robustness of the chosen designs."""
     sweep: SweepSection | None = None
-    """A search per misalignment ratio."""
+    """A search per misalignment ratio; on an [alignment] case, of a straight journal (the linear shaft) at the
+    bearing's coupled film force, speed and lubricant."""
 
     @model_validator(mode="after")
     def _bounds(self) -> DesignSection:
@@ -193,7 +200,7 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
     film bearing of its ``[alignment]``."""
     from shaftline.design.bore import SlopeParametrisation
     from shaftline.design.problem import Constraint, SlopeDesignProblem
-    from shaftline.design.robustness import SEED_SCENARIOS, Scenario
+    from shaftline.design.robustness import SEED_SCENARIOS, VALID_TEMPERATURES, Scenario, outside_range
     from shaftline.design.study import CoupledSource, DesignStudy
     from shaftline.film.problem import BearingProblem
 
@@ -240,10 +247,7 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         load_y, load_z, tilt_y, tilt_z = -1.0, 0.0, 0.0, 0.0
         if shaft != "coupled":
             raise InputError("shaft", shaft, "", "coupled with an [alignment] case (its journal is the coupled one)")
-        if section.sweep is not None:
-            raise InputError(
-                "sweep", "given", "", "a sweep with a [bearing] case (the coupled journal has its own tilt)"
-            )
+        # [design.sweep] here sweeps the linear shaft at the coupled operating point (DesignStudy.sweep_at)
     with located(""):
         parametrisation = SlopeParametrisation(
             section.segments,
@@ -264,23 +268,42 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         objectives=tuple(section.objectives),
         constraints=tuple(constraints),
     )
-    scenarios = (
-        SEED_SCENARIOS
-        if section.robustness.scenarios is None
-        else tuple(
+    where = "[bearing]" if coupled is None else f"the film bearing {coupled.bearing!r} of [alignment]"
+    why = _fixed_viscosity(lubricant, temperature, where)
+    if section.robustness.scenarios is None:
+        scenarios, left_out = _default_scenarios(SEED_SCENARIOS, lubricant, temperature, why)
+        if left_out and section.robustness.designs != "none":
+            dropped = " and ".join(name for name, _ in left_out)
+            reasons = "; ".join(dict.fromkeys(reason for _, reason in left_out))
+            several = len(left_out) > 1
+            context.warnings.append(
+                f"[design.robustness]: the seed's default scenario{'s' if several else ''} {dropped} "
+                f"{'were' if several else 'was'} left out ({reasons}); to have {'them' if several else 'it'}, give "
+                "the lubricant as a preset or a two-point oil at its temperature, or list the scenarios in "
+                "[[design.robustness.scenarios]]."
+            )
+    else:
+        scenarios = tuple(
             Scenario(s.name, s.speed_factor, s.load_factor, s.temperature_change) for s in section.robustness.scenarios
         )
-    )
-    uses_temperature = section.robustness.designs != "none" and any(s.temperature_change for s in scenarios)
-    if uses_temperature and (lubricant is None or temperature is None):
-        raise InputError(
-            "design.robustness.scenarios",
-            "a temperature change",
-            "",
-            "a lubricant with a preset or two-point oil and its temperature (its viscosity must follow "
-            "temperature), or scenarios without temperature_change",
-            in_file=True,
-        )
+        left_out = []
+        for k, scenario in enumerate(scenarios):
+            if not scenario.temperature_change or section.robustness.designs == "none":
+                continue
+            field = f"robustness.scenarios[{k}].temperature_change"
+            if why:
+                raise InputError(
+                    field,
+                    scenario.temperature_change,
+                    "K",
+                    f"0 here: {why} (give the lubricant as a preset or a two-point oil at its temperature for a "
+                    "temperature scenario)",
+                )
+            assert lubricant is not None and temperature is not None
+            low, high = VALID_TEMPERATURES[lubricant.model]
+            change = scenario.temperature_change
+            if not low <= temperature + change <= high:  # told now, not after the search
+                raise InputError(field, change, "K", outside_range(lubricant, temperature, change))
     search = section.search
     return DesignStudy(
         problem=problem,
@@ -291,6 +314,7 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         seed=search.seed,
         robust_designs=section.robustness.designs,
         named=tuple((d.name, (*d.slopes, *d.knuckles)) for d in section.robustness.named),
+        left_out=tuple(left_out),
         min_film=section.robustness.min_film,
         scenarios=scenarios,
         lubricant=lubricant,
@@ -299,3 +323,38 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
         store=None if search.store is None else str(context.base_dir / Path(search.store).expanduser()),
         coupled=coupled,
     )
+
+
+def _fixed_viscosity(lubricant: Lubricant | None, temperature: float | None, where: str) -> str:
+    """Why the lubricant of ``where`` cannot take a temperature scenario ("" when it can)."""
+    if lubricant is None or temperature is None or lubricant.model == "constant":
+        return f"the lubricant of {where} is a constant viscosity, which does not follow temperature"
+    return ""
+
+
+def _default_scenarios(
+    scenarios: tuple[Scenario, ...], lubricant: Lubricant | None, temperature: float | None, why: str
+) -> tuple[tuple[Scenario, ...], list[tuple[str, str]]]:
+    """The default scenarios this lubricant can take, and (name, reason) of those left out: the
+    temperature scenarios of a constant viscosity, or those that take the oil outside the range of
+    its viscosity model."""
+    from shaftline.design.robustness import VALID_TEMPERATURES
+
+    kept, left_out = [], []
+    for scenario in scenarios:
+        reason = ""
+        if scenario.temperature_change and why:
+            reason = why
+        elif scenario.temperature_change and lubricant is not None and temperature is not None:
+            low, high = VALID_TEMPERATURES[lubricant.model]
+            hot = temperature + scenario.temperature_change
+            if not low <= hot <= high:
+                reason = (
+                    f"{temperature:g} + {scenario.temperature_change:g} = {hot:g} degC is outside the {low:g} to "
+                    f"{high:g} degC where the viscosity of {lubricant.name} is known"
+                )
+        if reason:
+            left_out.append((scenario.name, reason))
+        else:
+            kept.append(scenario)
+    return tuple(kept), left_out

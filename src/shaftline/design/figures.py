@@ -56,7 +56,7 @@ def pareto_front(result: SearchResult, references: Mapping[str, BearingState] | 
 def design_maps(variables: int) -> FigureFunction:
     """The figure function of the design maps of a search with ``variables`` design variables:
     each variable against h_min (top row) and against p_max (bottom row), as seed 004
-    Figs. 5-41 ff., the non-dominated designs dark."""
+    Figs. 5-41 ff., the non-dominated designs dark and the knee starred, with a key."""
     return FigureFunction(_design_maps, (2, variables), (4.0 * variables, 7.0), False)
 
 
@@ -72,10 +72,13 @@ def _design_maps(result: SearchResult, *, ax: Any) -> Any:
     for row, (value, label) in enumerate(quantities):
         for k, name in enumerate(names):
             axis = grid[row, k]
-            axis.scatter(x[ok, k], value[ok], s=6, color="0.7")
-            axis.scatter(x[result.pareto, k], value[result.pareto], s=10, color="C0")
+            axis.scatter(x[ok, k], value[ok], s=6, color="0.7", label=f"designs evaluated ({int(ok.sum())})")
+            axis.scatter(x[result.pareto, k], value[result.pareto], s=10, color="C0", label="non-dominated")
+            if result.knee is not None:
+                axis.scatter(x[result.knee, k], value[result.knee], s=90, marker="*", color="C3", label="knee")
             axis.set_xlabel(name + (" [× 2c/L]" if name.startswith("slope") else " [× L]"))
             axis.set_ylabel(label)
+    grid[0, 0].legend(fontsize="small")  # one key for all the maps: the same marks in each
     return ax
 
 

@@ -14,8 +14,9 @@ change is taken as spread over the shaft without changing its misalignment (seed
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -23,6 +24,9 @@ from shaftline import parallel
 from shaftline.design.problem import DesignEvaluation, SlopeDesignProblem, evaluate_design
 from shaftline.errors import InputError, located, require_finite, require_positive
 from shaftline.lubricants import Lubricant
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 __all__ = ["SEED_SCENARIOS", "RobustnessResult", "Scenario", "robustness"]
 
@@ -127,6 +131,21 @@ class RobustnessResult:
         return pd.DataFrame(rows)
 
 
+def outside_range(lubricant: Lubricant, temperature: float, change: float) -> str:
+    """The "allowed" of a temperature change that takes ``lubricant`` out of its model's range.
+
+    >>> from shaftline.lubricants import Lubricant
+    >>> outside_range(Lubricant.preset("SAE 30"), 40.0, -70.0)
+    'a film temperature from -20 to 150 degC, where the viscosity of SAE 30 is known (40 - 70 = -30 degC is outside)'
+    """
+    low, high = VALID_TEMPERATURES[lubricant.model]
+    sign = "+" if change >= 0 else "-"
+    return (
+        f"a film temperature from {low:g} to {high:g} degC, where the viscosity of {lubricant.name} is known "
+        f"({temperature:g} {sign} {abs(change):g} = {temperature + change:g} degC is outside)"
+    )
+
+
 def _scenario_problem(
     problem: SlopeDesignProblem, scenario: Scenario, lubricant: Lubricant | None, temperature: float | None
 ) -> SlopeDesignProblem:
@@ -147,8 +166,7 @@ def _scenario_problem(
                 "temperature_change",
                 scenario.temperature_change,
                 "K",
-                f"a film temperature within {low:g}-{high:g} degC, where the viscosity of {lubricant.name} "
-                f"is known ({temperature:g} + {scenario.temperature_change:g} degC is outside)",
+                outside_range(lubricant, temperature, scenario.temperature_change),
             )
         viscosity = float(lubricant.dynamic_viscosity(hot))
         density = float(lubricant.density(hot))
@@ -181,7 +199,8 @@ def robustness(
     limit: float = 30e-6,
     backend: str | None = None,
     workers: int | None = None,
-    scheduler: str | None = None,
+    scheduler: str | Client | None = None,
+    progress: Callable[[int, int], None] | None = None,
 ) -> RobustnessResult:
     """Evaluate ``designs`` at the operating point of ``problem`` and in every scenario.
 
@@ -200,7 +219,11 @@ def robustness(
     limit : float
         The h_min a design must keep, m (default 30 µm, the Bureau Veritas value seed 004 quotes).
     backend, workers, scheduler
-        Where the (design, scenario) pairs are solved (:func:`shaftline.parallel.map`).
+        Where the (design, scenario) pairs are solved (:func:`shaftline.parallel.map`; ``scheduler`` a
+        scheduler's address or the caller's ``dask.distributed.Client``).
+    progress : callable, optional
+        ``progress(done, total)`` as the (design, scenario) pairs are solved, the operating
+        points included (:func:`shaftline.parallel.map`).
 
     Raises
     ------
@@ -228,6 +251,7 @@ def robustness(
         workers=workers,
         scheduler=scheduler,
         chunksize=max(1, math.ceil(len(pairs) / (4 * parallel.available_workers()))),
+        progress=progress,
     )
     per_design = [results[k * len(variants) : (k + 1) * len(variants)] for k in range(designs.shape[0])]
     return RobustnessResult(

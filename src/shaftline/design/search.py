@@ -26,13 +26,16 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from shaftline import parallel
 from shaftline.design.problem import OBJECTIVES, DesignEvaluation, SlopeDesignProblem, evaluate_design
 from shaftline.errors import InputError
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 __all__ = ["ALGORITHMS", "SearchProgress", "SearchResult", "knee_point", "non_dominated", "search"]
 
@@ -239,7 +242,7 @@ def search(
     *,
     backend: str | None = None,
     workers: int | None = None,
-    scheduler: str | None = None,
+    scheduler: str | Client | None = None,
     store: str | os.PathLike[str] | None = None,
     progress: Callable[[SearchProgress], None] | None = None,
 ) -> SearchResult:
@@ -255,7 +258,8 @@ def search(
     seed : int
         Random seed: the same seed gives the same designs on every backend.
     backend, workers, scheduler
-        Where the designs of a generation are evaluated (:func:`shaftline.parallel.map`).
+        Where the designs of a generation are evaluated (:func:`shaftline.parallel.map`; ``scheduler`` a
+        scheduler's address or the caller's ``dask.distributed.Client``).
     store : path, optional
         Folder for ``evaluations.parquet``/``.csv`` (written after each generation) and the
         search's settings; an existing folder of the same search resumes it.

@@ -7,20 +7,24 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 
 from shaftline.design.problem import SlopeDesignProblem, film_state
 from shaftline.design.robustness import RobustnessResult, Scenario, robustness
 from shaftline.design.search import SearchProgress, SearchResult, search
-from shaftline.design.sweep import SweepResult, misalignment_sweep
-from shaftline.errors import located
+from shaftline.design.sweep import DEFAULT_RATIOS, SweepResult, misalignment_sweep
+from shaftline.errors import Interrupted, located
 from shaftline.film.bearing import BearingState
 from shaftline.film.geometry import BentJournal, BoreSegment
 from shaftline.lubricants import Lubricant
+from shaftline.registry import Progress, Tally
 from shaftline.shaft.coupled import CoupledResult, CouplingOptions, FilmSupport
 from shaftline.shaft.model import Condition, ShaftLine
+
+if TYPE_CHECKING:
+    from distributed import Client
 
 __all__ = ["TASKS", "CoupledSource", "DesignResult", "DesignStudy", "solve_design"]
 
@@ -87,13 +91,17 @@ class DesignStudy:
     lubricant, temperature
         The case's lubricant and film temperature (degC), for temperature scenarios.
     ratios : tuple of float
-        psi_x of the misalignment sweep (empty: none).
+        psi_x of the misalignment sweep (empty: none, but the ``"sweep"`` task then sweeps the
+        seed's 0.1 ... 0.6).
     store : str or None
         Folder that keeps every evaluation of the search (and resumes it); the sweep's searches
         go into its sub-folders.
     coupled : CoupledSource or None
         With ``shaft = "coupled"``: the alignment whose coupled solution is the operating point
         (the problem's load and tilt are then replaced by it when solved).
+    left_out : tuple of (str, str)
+        The default scenarios left out of ``scenarios`` and why (a lubricant of constant
+        viscosity has no temperature scenarios; the case's warnings say so too).
     """
 
     problem: SlopeDesignProblem
@@ -111,12 +119,29 @@ class DesignStudy:
     store: str | None = None
     coupled: CoupledSource | None = None
     named: tuple[tuple[str, tuple[float, ...]], ...] = ()
+    left_out: tuple[tuple[str, str], ...] = ()
 
     @property
     def misalignment_ratio(self) -> float:
         """psi_x of the case: the journal tilt over 2c/L."""
         g = self.problem.film.geometry
         return self.problem.tilt_y * g.length / (2.0 * g.radial_clearance)
+
+    def sweep_at(self, problem: SlopeDesignProblem) -> Callable[[float], SlopeDesignProblem]:
+        """``psi_x -> problem`` of the misalignment sweep, from the operating point ``problem``.
+
+        On a ``[bearing]`` case, the study's shaft model (:meth:`problem_at`). On the coupled
+        alignment the linear shaft at the coupled operating point: the journal straight (the
+        coupled bend left out), its vertical tilt psi_x 2c/L, its horizontal tilt and the load
+        (the film force), speed and lubricant the coupled solution's (docs/theory.md §14).
+        """
+        if self.coupled is None:
+            return self.problem_at()
+        from shaftline.design.sweep import linear_shaft
+
+        g = problem.film.geometry
+        straight = replace(problem, film=replace(problem.film, geometry=replace(g, bent_journal=None)))
+        return linear_shaft(straight)
 
     def problem_at(self) -> Callable[[float], SlopeDesignProblem]:
         """``psi_x -> problem`` with the study's shaft model."""
@@ -159,19 +184,44 @@ class DesignResult:
 
 def solve_design(
     study: DesignStudy,
-    progress: Callable[[str], None] | None = None,
+    progress: Progress | None = None,
     task: str = "all",
     workers: int | None = None,
-    scheduler: str | None = None,
+    scheduler: str | Client | None = None,
 ) -> DesignResult:
     """Run the search, the robustness of its chosen designs and the sweep (``task="all"``), or one.
 
     ``"robustness"`` of the knee or the front runs the search first as ``"all"`` does, without the
     sweep; of named designs (``robust_designs = "named"``) it runs no search. ``"sweep"`` runs only
-    the sweep.
+    the sweep. ``progress`` is told each step, and a :class:`~shaftline.registry.Tally` of the
+    evaluations of the search, the sweep and the robustness (the command line's bar). Ctrl-C during
+    a search raises :class:`~shaftline.errors.Interrupted`, whose note says where its evaluations
+    are kept (``store``) and how to resume, or how to keep them next time.
     """
     if task not in TASKS:
         raise ValueError(f"task {task!r}: one of {TASKS}")
+    searches = task in ("all", "slopes", "sweep") or (task == "robustness" and study.robust_designs != "named")
+    try:
+        return _solve(study, progress, task, workers, scheduler)
+    except KeyboardInterrupt as stop:
+        if isinstance(stop, Interrupted) or not searches:
+            raise
+        if study.store is not None:
+            note = (
+                f"the designs evaluated so far are kept in {study.store}: run the same command again "
+                "(the same case and search) to resume from them"
+            )
+        else:
+            note = (
+                "the designs evaluated so far were not kept: set [design.search] store = DIR in the case (or give "
+                "design slopes --store DIR) to keep them as the search goes and to resume it"
+            )
+        raise Interrupted(note) from None
+
+
+def _solve(
+    study: DesignStudy, progress: Progress | None, task: str, workers: int | None, scheduler: str | Client | None
+) -> DesignResult:
     step = progress or (lambda _: None)
     alignment = None
     if study.shaft == "coupled" and study.coupled is not None:
@@ -184,10 +234,14 @@ def solve_design(
     if task in ("all", "slopes") or (task == "robustness" and not named):
 
         def generation(state: SearchProgress) -> None:
-            eta = f", about {state.remaining:.0f} s left" if math.isfinite(state.remaining) else ""
             step(
-                f"design search: generation {state.generation}/{state.generations}, {state.evaluations} designs, "
-                f"best h_min {state.best_min_film * 1e6:.1f} µm{eta}"
+                Tally(
+                    "design search",
+                    state.evaluations,
+                    study.population * study.generations,
+                    "evaluations",
+                    f"generation {state.generation}/{state.generations}, {_best(state)}",
+                )
             )
 
         with located("search"):
@@ -212,6 +266,11 @@ def solve_design(
         names = [("knee" if i == found.knee else f"front {k + 1}") for k, i in enumerate(chosen)]
     if task in ("all", "robustness") and names:
         step(f"robustness of {len(names)} design(s) in {len(study.scenarios)} scenarios")
+        scenarios = f"{len(names)} design(s) × {len(study.scenarios)} scenarios and the operating point"
+
+        def solved(done: int, total: int) -> None:
+            step(Tally("robustness", done, total, "evaluations", scenarios))
+
         with located("robustness"):
             tuned = robustness(
                 problem,
@@ -223,15 +282,29 @@ def solve_design(
                 limit=study.min_film,
                 workers=workers,
                 scheduler=scheduler,
+                progress=solved,
             )
-    if study.ratios and task in ("all", "sweep"):
+    # `design sweep` on a case without [design.sweep]: the seed's psi_x 0.1 ... 0.6
+    ratios = study.ratios or (DEFAULT_RATIOS if task == "sweep" else ())
+    if ratios and task in ("all", "sweep"):
+        each = study.population * study.generations
 
         def told(ratio: float, state: SearchProgress) -> None:
-            step(f"misalignment sweep: psi_x = {ratio:g}, generation {state.generation}/{state.generations}")
+            k = ratios.index(ratio)
+            step(
+                Tally(
+                    "misalignment sweep",
+                    k * each + state.evaluations,
+                    len(ratios) * each,
+                    "evaluations",
+                    f"psi_x {ratio:g} ({k + 1} of {len(ratios)}), generation {state.generation}/"
+                    f"{state.generations}, {_best(state)}",
+                )
+            )
 
         swept = misalignment_sweep(
-            study.problem_at(),
-            study.ratios,
+            study.sweep_at(problem),
+            ratios,
             progress=told,
             algorithm=study.algorithm,
             population=study.population,
@@ -259,6 +332,13 @@ def solve_design(
             if state is not None:
                 profiles[label] = state
     return DesignResult(study, problem, found, tuned, swept, profiles, alignment)
+
+
+def _best(state: SearchProgress) -> str:
+    """The best h_min of a search so far, for its progress bar."""
+    if not math.isfinite(state.best_min_film):
+        return "no acceptable design yet"
+    return f"best h_min {state.best_min_film * 1e6:.1f} µm"
 
 
 def _chosen(found: SearchResult, which: str) -> np.ndarray:
