@@ -184,17 +184,36 @@ def model_shape(line: object, bearing: str, stations: np.ndarray) -> np.ndarray:
     return deflection - chord
 
 
-def seed_objective(fitted: np.ndarray, measured: np.ndarray, scale: float) -> float:
+def seed_objective(fitted: np.ndarray, measured: np.ndarray, scale: float) -> np.ndarray:
     """The seed's objective: RMSE (over ``scale``) less the correlation coefficient.
 
     Seed 001 Sect. 5.3 takes "the difference between the root-mean-square error and the
     correlation coefficient"; the RMSE is divided by ``scale`` (the radial clearance) so
     that the two terms are both dimensionless (our reading). Lower is better; -1 is a
     perfect fit.
+
+    Parameters
+    ----------
+    fitted : ndarray (n,) or (n, S)
+        Fitted values, m; a column per candidate.
+    measured : ndarray (n,)
+        Measured values, m.
+    scale : float
+        Length the RMSE is divided by, m.
+
+    Returns
+    -------
+    ndarray () or (S,)
+        The objective of each candidate.
     """
-    error = float(np.sqrt(np.mean((fitted - measured) ** 2))) / scale
-    spread = float(np.std(fitted) * np.std(measured))
-    correlation = float(np.mean((fitted - fitted.mean()) * (measured - measured.mean())) / spread) if spread else 0.0
+    fitted = np.asarray(fitted, dtype=float)
+    measured = np.asarray(measured, dtype=float)
+    target = measured.reshape((-1,) + (1,) * (fitted.ndim - 1))
+    error = np.sqrt(np.mean((fitted - target) ** 2, axis=0)) / scale
+    spread = fitted.std(axis=0) * measured.std()
+    covariance = np.mean((fitted - fitted.mean(axis=0)) * (target - measured.mean()), axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        correlation = np.where(spread > 0, covariance / np.where(spread > 0, spread, 1.0), 0.0)
     return error - correlation
 
 
@@ -255,11 +274,14 @@ def model_line(
         (-reach, reach),
     ]
 
-    def objective(x: np.ndarray) -> float:
-        fitted = np.concatenate([x[:3] @ values, x[3:] @ values])
+    def objective(x: np.ndarray) -> np.ndarray:
+        # x is (6,) or (6, S): a whole population per call (vectorised differential evolution).
+        fitted = np.concatenate([values.T @ x[:3], values.T @ x[3:]])
         return seed_objective(fitted, mean, clearance)
 
-    result = differential_evolution(objective, bounds, seed=seed, tol=1e-12, atol=1e-12, maxiter=600, polish=True)
+    result = differential_evolution(
+        objective, bounds, seed=seed, tol=1e-10, maxiter=2000, polish=True, vectorized=True, updating="deferred"
+    )
     static_y, static_z = result.x[:3], result.x[3:]
     # Motion about the mean: offset and tilt of a rigid journal at every sample.
     rigid = np.linalg.pinv(values[:2].T)  # (2, n)

@@ -132,7 +132,7 @@ class RigCase:
     layout: ProbeLayout = field(default_factory=seed001_layout)
     load: float = RIG_LOAD
     viscosity: float = 8.904e-4
-    misalignment: float = 4e-6
+    misalignment: float = 2e-6
     bend_scale: float = 0.1
     whirl: float = 1e-6
     whirl_speed: float = 215 * 2 * math.pi / 60

@@ -353,5 +353,5 @@ def _check_block(layout: ProbeLayout, gaps: np.ndarray) -> np.ndarray:
     gaps = np.asarray(gaps, dtype=float)
     channels = len(layout.channels)
     if gaps.ndim != 2 or gaps.shape[1] != channels or gaps.shape[0] < 1:
-        raise InputError("gaps", str(gaps.shape), "m", f"a (samples, {channels}) block in channel order")
+        raise InputError("gaps", gaps.shape, "m", f"a (samples, {channels}) block in channel order")
     return gaps

@@ -213,7 +213,7 @@ def compensate_runout(gaps: np.ndarray, phase: np.ndarray, profile: np.ndarray) 
     gaps = np.asarray(gaps, dtype=float)
     profile = np.asarray(profile, dtype=float)
     if profile.ndim != 2 or profile.shape[1] != gaps.shape[1]:
-        raise InputError("profile", str(profile.shape), "m", f"(bins, {gaps.shape[1]})")
+        raise InputError("profile", profile.shape, "m", f"(bins, {gaps.shape[1]})")
     bins = profile.shape[0]
     centres = (np.arange(bins) + 0.5) * 2 * math.pi / bins
     wrapped = np.asarray(phase) % (2 * math.pi)

@@ -257,7 +257,7 @@ class ProbeLayout:
         signals = np.asarray(signals, dtype=float)
         probes = [p for s in self.sections for p in s.probes]
         if signals.ndim != 2 or signals.shape[1] != len(probes):
-            raise InputError("signals", str(signals.shape), "V", f"(samples, {len(probes)}) in channel order")
+            raise InputError("signals", signals.shape, "V", f"(samples, {len(probes)}) in channel order")
         zero = np.array([p.zero for p in probes])
         scale = np.array([p.sign / p.sensitivity for p in probes])
         return zero + signals * scale

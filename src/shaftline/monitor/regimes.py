@@ -89,7 +89,7 @@ def regime_lengths(z: np.ndarray, min_film: np.ndarray, layout: ProbeLayout) -> 
     if z.ndim != 1 or z.size < 2 or np.any(np.diff(z) <= 0):
         raise InputError("z", z.size, "m", "at least 2 increasing stations")
     if h.shape[-1] != z.size:
-        raise InputError("min_film", str(h.shape), "m", f"(samples, {z.size})")
+        raise InputError("min_film", h.shape, "m", f"(samples, {z.size})")
     low, high = thresholds(layout)
     below_low = _length_below(z, h, low)
     below_high = _length_below(z, h, high)
