@@ -191,3 +191,16 @@ def test_bad_forward_inputs():
         RigCase(noise=-1e-7)
     with pytest.raises(InputError, match=r"^speed = 0 rad/s: allowed > 0"):
         simulate(RigCase(), 0.0)
+
+
+def test_journal_moves_up_and_to_the_left_with_speed(rig):
+    """Seed 001 Sect. 5.2, Fig. 12: with speed each section's centre moves to the upper left and its
+    eccentricity falls (left: against the direction of rotation at the bottom of the bore)."""
+    case, _, runs = rig
+    for index in range(len(case.layout.sections)):
+        orbits = [runs[rpm][1]["orbits"][index] for rpm in SPEEDS]
+        up = [float(o.ey.mean()) for o in orbits]
+        right = [float(case.layout.rotation * o.ez.mean()) for o in orbits]
+        eccentricity = [float(o.eccentricity.mean()) for o in orbits]
+        assert up[0] < up[1] < up[2] and right[0] > right[1] > right[2]
+        assert eccentricity[0] > eccentricity[1] > eccentricity[2]
