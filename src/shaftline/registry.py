@@ -33,6 +33,7 @@ CAPABILITY_MODULES: tuple[str, ...] = (
     "shaftline.cpp.capability",
     # after film: [design] builds on [bearing] (Capability.needs)
     "shaftline.design.capability",
+    "shaftline.monitor.capability",
 )
 
 #: A callback that reports what is being solved (the command line shows it).

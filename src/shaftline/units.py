@@ -59,6 +59,8 @@ SI_UNITS: dict[str, str] = {
     "rotational_stiffness": "N*m",
     "rotational_damping": "N*m*s",
     "memory": "byte",
+    # output of a displacement probe per unit gap (shaftline.monitor): "8 mV/um"
+    "sensitivity": "V/m",
 }
 
 #: How an SI unit is written in messages and tables.

@@ -106,6 +106,8 @@ class RigCase:
         journal rises going away from the loaded end.
     bend_scale : float
         Share of the shaft model's bending inside the bearing that the journal carries.
+    overhung_mass : float
+        Counterweight of the rig's shaft model (:func:`rig_shaft_line`), kg.
     whirl : float
         1X forward whirl, zero-to-peak, at ``whirl_speed``, m (grows with the speed squared).
     whirl_speed : float
@@ -134,6 +136,7 @@ class RigCase:
     viscosity: float = 8.904e-4
     misalignment: float = 2e-6
     bend_scale: float = 0.1
+    overhung_mass: float = RIG_OVERHUNG_MASS
     whirl: float = 1e-6
     whirl_speed: float = 215 * 2 * math.pi / 60
     runout: tuple[float, float] = (0.3e-6, 0.15e-6)
@@ -151,6 +154,7 @@ class RigCase:
         require_positive("viscosity", self.viscosity, "Pa*s")
         require_finite("misalignment", self.misalignment, "rad")
         require_finite("bend_scale", self.bend_scale)
+        require_positive("overhung_mass", self.overhung_mass, "kg")
         for name in ("whirl", "noise", "sleeve_wear"):
             if not require_finite(name, getattr(self, name), "m") >= 0.0:
                 raise InputError(name, getattr(self, name), "m", ">= 0")
@@ -217,15 +221,22 @@ class Recording:
         return film_between_circles(ey, ez, np.asarray(theta, dtype=float), layout, wear)
 
 
+def rig_shape_for(case: RigCase) -> tuple[np.ndarray, np.ndarray]:
+    """The rig's bending shape stretched to the layout's bearing length: stations (m from the
+    loaded end) and shape (m, at the model's scale)."""
+    z, shape = rig_bending_shape(case.overhung_mass)
+    stretch = case.layout.length / 1.2
+    return np.asarray(z) * stretch, np.asarray(shape) * stretch
+
+
 def equilibrium_line(case: RigCase, speed: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool, float]:
     """Static journal centre line from the bearing solver: stations, ey, ez (m), contact, h_min (m)."""
     from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
     from shaftline.film.geometry import BentJournal
 
     layout = case.layout
-    z, shape = rig_bending_shape()
-    bend = case.bend_scale * np.asarray(shape) * layout.length / 1.2
-    stations = np.asarray(z) * layout.length / 1.2
+    stations, shape = rig_shape_for(case)
+    bend = case.bend_scale * shape
     geometry = BearingGeometry(
         length=layout.length,
         diameter=2.0 * layout.radius,
