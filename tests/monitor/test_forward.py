@@ -204,3 +204,30 @@ def test_journal_moves_up_and_to_the_left_with_speed(rig):
         eccentricity = [float(o.eccentricity.mean()) for o in orbits]
         assert up[0] < up[1] < up[2] and right[0] > right[1] > right[2]
         assert eccentricity[0] > eccentricity[1] > eccentricity[2]
+
+
+def test_chunks_with_a_fixed_reference_give_the_whole_windows_orbits(rig):
+    """A reader feeds a long recording in chunks with the reference point of stable running fixed:
+    each chunk's orbit is the whole window's at the same samples (to round-off)."""
+    from shaftline.monitor.study import identify_window
+
+    case, profile, runs = rig
+    layout = case.layout
+    recording = runs[175.0][0]
+    whole = identify_window(layout, recording.signals, recording.keyphasor, case.sample_rate, profile)
+    first_mark = revolution_marks(recording.keyphasor)[0]
+    half = recording.signals.shape[0] // 2
+    for start, stop in ((0, half), (half, recording.signals.shape[0])):
+        part = identify_window(
+            layout,
+            recording.signals[start:stop],
+            recording.keyphasor[start:stop],
+            case.sample_rate,
+            profile,
+            references=whole.references,
+        )
+        marks = revolution_marks(recording.keyphasor[start:stop])
+        begin = start + marks[0] - first_mark
+        for piece, full in zip(part.orbits, whole.orbits, strict=True):
+            assert piece.ey == pytest.approx(full.ey[begin : begin + piece.ey.size], abs=1e-15)
+            assert piece.ez == pytest.approx(full.ez[begin : begin + piece.ez.size], abs=1e-15)

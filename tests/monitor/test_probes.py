@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from shaftline.errors import InputError
-from shaftline.monitor.probes import Probe, ProbeLayout, Section, seed001_layout
+from shaftline.monitor.probes import Probe, ProbeLayout, Section, seed001_layout, within_range
 
 
 def _one_line(error: pytest.ExceptionInfo[InputError]) -> str:
@@ -97,3 +97,13 @@ def test_two_probe_section_is_valid():
     probes = (Probe("a", math.radians(315.0), 1e-3), Probe("b", math.radians(45.0), 1e-3))
     layout = ProbeLayout((Section("S", 0.5, probes),), length=1.0, radius=0.1, radial_clearance=2e-4)
     assert layout.journal_radius == pytest.approx(0.0998)
+
+
+def test_readings_beyond_a_probes_range_are_flagged():
+    layout = seed001_layout()
+    gaps = np.tile([1.5e-3, 1.5e-3, 0.2e-3] * 3, (4, 1))
+    gaps[1, 0] = 3.31e-3  # probe 1: zero 0.3 mm + range 3 mm = 3.3 mm
+    gaps[2, 2] = 0.04e-3  # probe 3: below its zero point 0.05 mm
+    gaps[3, 5] = np.nan
+    mask = within_range(layout, gaps)
+    assert (~mask).sum() == 3 and not mask[1, 0] and not mask[2, 2] and not mask[3, 5]

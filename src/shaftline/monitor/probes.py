@@ -263,6 +263,30 @@ class ProbeLayout:
         return zero + signals * scale
 
 
+def within_range(layout: ProbeLayout, gaps: np.ndarray) -> np.ndarray:
+    """Which gaps each probe can measure: ``zero <= g <= zero + measuring_range`` (and finite).
+
+    Parameters
+    ----------
+    layout : ProbeLayout
+    gaps : ndarray (N, channels)
+        Gaps in the column order of ``layout.channels``, m.
+
+    Returns
+    -------
+    ndarray of bool (N, channels)
+        False where a reading is beyond the probe's range (saturated) or not a number, so that
+        a reader can mask and count such samples.
+    """
+    gaps = np.asarray(gaps, dtype=float)
+    probes = [p for s in layout.sections for p in s.probes]
+    if gaps.ndim != 2 or gaps.shape[1] != len(probes):
+        raise InputError("gaps", gaps.shape, "m", f"(samples, {len(probes)}) in channel order")
+    low = np.array([p.zero for p in probes])
+    high = low + np.array([p.measuring_range for p in probes])
+    return np.isfinite(gaps) & (gaps >= low) & (gaps <= high)
+
+
 def seed001_layout(
     radial_clearance: float = 0.55e-3,
     mounting_distances: tuple[float, float, float] = (1.2e-3, 1.2e-3, 0.15e-3),

@@ -106,6 +106,7 @@ def identify_window(
     runout: np.ndarray | None = None,
     shape: tuple[np.ndarray, np.ndarray] | None = None,
     correction: bool = True,
+    references: tuple[SectionReference, ...] | None = None,
 ) -> WindowResult:
     """Film, orbits, regimes and descriptors of one window of probe outputs.
 
@@ -125,6 +126,9 @@ def identify_window(
         without it the centre line is the least-squares polynomial.
     correction : bool
         Identify the correction factor k from three or more probes per section.
+    references : tuple of SectionReference, optional
+        Reference points and k fixed from an earlier window of stable running (the seed's
+        reference point); without them this window's mean gaps give them.
     """
     gaps = layout.gaps(signals)
     marks = revolution_marks(keyphasor)
@@ -133,7 +137,8 @@ def identify_window(
         gaps = compensate_runout(gaps, phase, runout)
     window = whole_revolutions(marks)
     gaps, phase = gaps[window], phase[window]
-    references = reference_points(layout, gaps, correction=correction)
+    if references is None:
+        references = reference_points(layout, gaps, correction=correction)
     results = probe_films(layout, gaps, references, theta=FILM_ANGLES)
     orbits = tuple(orbit for orbit, _ in results)
     films = tuple(film for _, film in results)
