@@ -44,9 +44,16 @@ BORE_DIAMETER = Plausible(
 )
 SMALL_LENGTH = Plausible(
     0.0,
-    0.05,
+    0.02,
     f"probe mounting distances, ranges and zero points of tenths of a mm to a few mm ({_SEED} Table 2: 0.5 and 3 mm "
-    "ranges, zero points 0.05 and 0.3 mm); 50 mm is beyond any eddy-current probe; mm written as m is above",
+    "ranges, zero points 0.05 and 0.3 mm); 20 mm is beyond the eddy-current probes used in bearings; mm written as "
+    "m is above",
+)
+FINE = Plausible(
+    0.0,
+    5e-6,
+    f"probe resolutions and noise of hundredths to tenths of a um ({_SEED} Table 2: 0.025 and 0.15 um); 5 um would "
+    "hide a film of a few um (engineering judgement); um written as mm is above",
 )
 MOTION = Plausible(
     0.0,
@@ -83,7 +90,7 @@ class ProbeSection(Section):
     """+1: the output grows with the gap; -1: it falls."""
     measuring_range: Annotated[PositiveLength, SMALL_LENGTH] | None = None
     """Gap span the probe measures above its zero point (none: not checked)."""
-    resolution: Annotated[NonNegativeLength, MOTION] = 0.0
+    resolution: Annotated[NonNegativeLength, FINE] = 0.0
     """Smallest gap step the probe resolves (quantisation of the synthetic signals)."""
 
 
@@ -109,19 +116,33 @@ class SimulateSection(Section):
     """Speed of the slow-roll recording that measures the runout."""
     load: Annotated[
         PositiveForce,
-        Plausible(10.0, 3e7, f"bearing loads of N to MN ({_SEED} Table 3: 75 kN) (engineering judgement)"),
+        Plausible(
+            1e3,
+            3e7,
+            f"bearing loads of kN to MN ({_SEED} Table 3: 75 kN) (engineering judgement); kN written as N is below",
+        ),
     ] = 75e3
     """Load on the bearing (downwards)."""
     temperature: Temperature = 25.0
     """Water temperature (viscosity from the water model)."""
     misalignment: Annotated[
-        Angle, Plausible(-0.01, 0.01, "relative slopes of a bearing are below 1 mrad; mrad written as rad is beyond")
+        Angle,
+        Plausible(
+            -1e-3,
+            1e-3,
+            "a misalignment a film carries is below 1 mrad (engineering judgement); urad written as mrad is beyond",
+        ),
     ] = 2e-6
     """Journal tilt relative to the bore, + rising away from the loaded end."""
     bend_scale: Annotated[float, Quantity("dimensionless", ge=0, le=10)] = 0.1
     """Share of the shaft model's bending inside the bearing that the journal carries."""
     overhung_mass: Annotated[
-        PositiveMass, Plausible(1.0, 2e5, f"overhung masses of kg to 200 t ({_SEED}: 7.5 t) (engineering judgement)")
+        PositiveMass,
+        Plausible(
+            50.0,
+            2e5,
+            f"overhung masses of 50 kg to 200 t ({_SEED}: 7.5 t) (engineering judgement); t written as kg is below",
+        ),
     ] = 7500.0
     """Counterweight at the overhung end of the rig's shaft model."""
     whirl: Annotated[NonNegativeLength, MOTION] = 1e-6
@@ -130,7 +151,7 @@ class SimulateSection(Section):
     """Speed at which the whirl has that amplitude."""
     runout: Annotated[list[Annotated[NonNegativeLength, MOTION]], Field(min_length=2, max_length=2)] = [0.3e-6, 0.15e-6]
     """1X and 2X runout amplitudes seen by every probe (random phases, the same at every speed)."""
-    noise: Annotated[NonNegativeLength, MOTION] = 0.05e-6
+    noise: Annotated[NonNegativeLength, FINE] = 0.05e-6
     """Standard deviation of white noise on each gap."""
     sleeve_wear: Annotated[NonNegativeLength, MOTION] = 0.0
     """Uniform wear of the journal sleeve (the correction factor k should find it)."""
