@@ -19,12 +19,16 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from shaftline.errors import InputError
 from shaftline.monitor.identification import SectionOrbit, film_between_circles
 from shaftline.monitor.probes import ProbeLayout
+
+if TYPE_CHECKING:
+    from shaftline.shaft import ShaftLine
 
 
 @dataclass(frozen=True, eq=False)
@@ -148,7 +152,7 @@ def least_squares_line(orbits: Sequence[SectionOrbit], degree: int = 2, origin: 
     return CentreLine(basis, basis, ey @ inverse.T, ez @ inverse.T, positions, corrections)
 
 
-def model_shape(line: object, bearing: str, stations: np.ndarray) -> np.ndarray:
+def model_shape(line: ShaftLine, bearing: str, stations: np.ndarray) -> np.ndarray:
     """Bending of the journal inside a bearing from the shaft model, less its chord, m.
 
     Solves the line's first condition with the project's alignment model
