@@ -109,7 +109,8 @@ def film_map(theta: np.ndarray, z: np.ndarray, film: np.ndarray, layout: ProbeLa
     film = np.asarray(film, dtype=float) * MICRO
     degrees = np.degrees(np.asarray(theta, dtype=float))
     positive = np.clip(film, 0.1, None)
-    mesh = ax.pcolormesh(degrees, np.asarray(z) * 1e3, positive, shading="nearest", norm=LogNorm())
+    # Rasterised: as vector paths the cells of a fine map make a slow, huge SVG.
+    mesh = ax.pcolormesh(degrees, np.asarray(z) * 1e3, positive, shading="nearest", norm=LogNorm(), rasterized=True)
     ax.figure.colorbar(mesh, ax=ax, label="film [µm]")
     levels = [level * MICRO for level in thresholds(layout)]
     contours = ax.contour(degrees, np.asarray(z) * 1e3, film, levels=levels, colors=["w", "k"], linewidths=1.0)
