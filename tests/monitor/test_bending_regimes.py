@@ -128,3 +128,14 @@ def test_regime_lengths_of_a_linear_film_are_exact_on_a_coarse_grid():
     )
     flat = regime_lengths(z, np.full(4, 4e-6), layout)
     assert (flat.boundary[0], flat.mixed[0], flat.hydrodynamic[0]) == (0.0, pytest.approx(1.2), 0.0)
+
+
+def test_one_section_gives_a_parallel_journal_and_the_model_shape_needs_three():
+    positions = np.array([0.4])
+    ey, ez = np.array([[-5e-4], [-4e-4]]), np.array([[1e-5], [2e-5]])
+    line = least_squares_line(_orbits(positions, ey, ez))
+    assert line.at(np.array([0.0, 1.2]))[0] == pytest.approx(np.array([[-5e-4, -5e-4], [-4e-4, -4e-4]]), abs=1e-18)
+    z, shape = rig_bending_shape()
+    two = _orbits(np.array([0.3, 0.9]), np.zeros((1, 2)), np.zeros((1, 2)))
+    with pytest.raises(InputError, match="^orbits = 2 sections: allowed at least 3"):
+        model_line(two, z, shape, 0.55e-3, 1.2)

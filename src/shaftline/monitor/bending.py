@@ -118,9 +118,11 @@ class CentreLine:
         return np.interp(np.asarray(z, dtype=float), self.positions, self.corrections)
 
 
-def _section_centres(orbits: Sequence[SectionOrbit]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    if len(orbits) < 2:
-        raise InputError("orbits", len(orbits), "", "at least 2 measured sections for a centre line")
+def _section_centres(
+    orbits: Sequence[SectionOrbit], minimum: int = 1
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    if len(orbits) < minimum:
+        raise InputError("orbits", len(orbits), "sections", f"at least {minimum} measured sections")
     sizes = {o.ey.size for o in orbits}
     if len(sizes) != 1:
         raise InputError("orbits", sorted(sizes), "samples", "the same samples at every section")
@@ -136,7 +138,7 @@ def least_squares_line(orbits: Sequence[SectionOrbit], degree: int = 2, origin: 
     Parameters
     ----------
     orbits : sequence of SectionOrbit
-        At least two sections over the same samples.
+        Sections over the same samples (one gives a journal parallel to the bore).
     degree : int
         Polynomial degree, reduced to (sections - 1) when larger; 1 is the straight tilted
         journal of Eq. 8, 2 the seed's bending curve through three sections.
@@ -245,7 +247,7 @@ def model_line(
     Parameters
     ----------
     orbits : sequence of SectionOrbit
-        At least two sections over the same samples.
+        At least three sections over the same samples.
     shape_z, shape : ndarray
         The bending shape (:func:`model_shape`) at stations from the loaded end, m.
     clearance, length : float
@@ -257,7 +259,8 @@ def model_line(
     """
     from scipy.optimize import differential_evolution
 
-    positions, ey, ez, corrections = _section_centres(orbits)
+    # Three coefficients a plane: two sections leave the fit undetermined (use least squares).
+    positions, ey, ez, corrections = _section_centres(orbits, minimum=3)
     shape_z = np.asarray(shape_z, dtype=float)
     shape = np.asarray(shape, dtype=float)
     if shape_z.shape != shape.shape or shape.ndim != 1 or shape.size < 2 or np.any(np.diff(shape_z) <= 0):

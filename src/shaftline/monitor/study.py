@@ -122,8 +122,9 @@ def identify_window(
     runout : ndarray (bins, channels), optional
         Slow-roll runout profile (:func:`shaftline.monitor.orbits.runout_profile`).
     shape : (stations, shape), optional
-        Bending shape from the shaft model (:func:`shaftline.monitor.bending.model_shape`);
-        without it the centre line is the least-squares polynomial.
+        Bending shape from the shaft model (:func:`shaftline.monitor.bending.model_shape`),
+        used with three sections or more; otherwise the centre line is the least-squares
+        polynomial (with one section, a journal parallel to the bore).
     correction : bool
         Identify the correction factor k from three or more probes per section.
     references : tuple of SectionReference, optional
@@ -142,7 +143,7 @@ def identify_window(
     results = probe_films(layout, gaps, references, theta=FILM_ANGLES)
     orbits = tuple(orbit for orbit, _ in results)
     films = tuple(film for _, film in results)
-    if shape is not None and len(orbits) >= 2:
+    if shape is not None and len(orbits) >= 3:
         line = model_line(orbits, shape[0], shape[1], layout.radial_clearance, layout.length)
     else:
         line = least_squares_line(orbits)
