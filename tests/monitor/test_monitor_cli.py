@@ -69,3 +69,39 @@ def test_simulate_defaults_are_the_forward_models():
     ):
         assert SimulateSection.model_fields[name].default == pytest.approx(getattr(RigCase(), name)), name
     assert tuple(SimulateSection.model_fields["runout"].default) == pytest.approx(RigCase().runout)
+
+
+def test_shaft_model_case_gives_the_rigs_bending_shape():
+    """examples/monitor_rig_shaft.toml (the rig as an [alignment] case) against forward.rig_shaft_line: the same
+    shape to round-off, so the example's identification uses the shape its forward model bent the journal with."""
+    import numpy as np
+
+    from shaftline.cases import load_case
+    from shaftline.monitor.forward import rig_bending_shape
+
+    study = load_case(EXAMPLE).studies["monitor"]
+    z, shape = rig_bending_shape()
+    assert study.shape[0] == pytest.approx(z, abs=1e-15)
+    assert study.shape[1] == pytest.approx(shape, abs=1e-15)
+    assert np.shares_memory(study.rig.shape[1], study.shape[1]) or study.rig.shape[1] == pytest.approx(shape)
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        ('shaft_bearing = "stern"', 'shaft_bearing = "aft"', "monitor.shaft_bearing = 'aft': allowed one of stern"),
+        ('shaft_bearing = "stern"\n', "", "monitor.shaft_bearing = 'missing'"),
+        (
+            'shaft_model = "monitor_rig_shaft.toml"',
+            'shaft_model = "monitor_rig.toml"',
+            "monitor.shaft_model = 'monitor_rig.toml': allowed a case file with an [alignment] table",
+        ),
+    ],
+)
+def test_shaft_model_errors_are_one_line(tmp_path, old, new, message):
+    for name in ("monitor_rig.toml", "monitor_rig_shaft.toml"):
+        text = (ROOT / "examples" / name).read_text()
+        (tmp_path / name).write_text(text.replace(old, new) if name == "monitor_rig.toml" else text)
+    result = invoke("monitor", "simulate", str(tmp_path / "monitor_rig.toml"))
+    assert result.exit_code == 2
+    assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1

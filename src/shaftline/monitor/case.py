@@ -33,6 +33,8 @@ from shaftline.errors import located
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from shaftline.monitor.study import MonitorStudy
 
 _SEED = "seed 001"
@@ -186,6 +188,11 @@ class MonitorSection(Section):
     """Sense of rotation seen from aft."""
     sections: Annotated[list[MeasurementSection], Field(min_length=1)]
     """Measurement sections from the loaded end forward."""
+    shaft_model: str | None = None
+    """Case file whose [alignment] table models the machine's shaft line (path relative to this case): the
+    bending shape of the journal in the bearing comes from it (none: seed 001's rig)."""
+    shaft_bearing: str | None = None
+    """Name of the monitored bearing in that [alignment] table (needed with shaft_model)."""
     simulate: SimulateSection | None = None
     """Synthetic recordings of seed 001's rig."""
 
@@ -230,6 +237,9 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
         rq_factor=section.rq_factor,
         rotation=1 if section.rotation == "clockwise" else -1,
     )
+    shape = None
+    if section.shaft_model is not None:
+        shape = model_bending_shape(section.shaft_model, section.shaft_bearing, layout.length, context)
     rig = None
     if section.simulate is not None:
         sim = section.simulate
@@ -250,8 +260,47 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
                 sample_rate=sim.sample_rate,
                 revolutions=sim.revolutions,
                 seed=sim.seed,
+                shape=shape,
             )
     speeds = tuple(section.simulate.speeds) if section.simulate is not None else ()
     slow_roll = section.simulate.slow_roll_speed if section.simulate is not None else 0.0
     write = section.simulate.write_recordings if section.simulate is not None else False
-    return MonitorStudy(layout, rig, speeds, slow_roll, write)
+    return MonitorStudy(layout, rig, speeds, slow_roll, write, shape)
+
+
+#: Stations of a bending shape along the bearing.
+SHAPE_STATIONS = 49
+
+
+def model_bending_shape(
+    path: str, bearing: str | None, length: float, context: BuildContext
+) -> tuple[np.ndarray, np.ndarray]:
+    """Stations (m from the loaded end) and the bending shape (m) of the journal in ``bearing``
+    of the ``[alignment]`` table of the case file ``path``."""
+    import numpy as np
+
+    from shaftline.cases import load_case
+    from shaftline.errors import InputError
+    from shaftline.monitor.bending import model_shape
+
+    if bearing is None:
+        raise InputError("shaft_bearing", "missing", "", "the name of the monitored bearing in the shaft model")
+    file = context.path(path)
+    try:
+        case = load_case(file, only=["alignment"])
+    except InputError as error:
+        raise InputError("shaft_model", path, "", f"a case file with a valid [alignment] table ({error})") from None
+    if "alignment" not in case.studies:
+        raise InputError("shaft_model", path, "", "a case file with an [alignment] table")
+    line = case.studies["alignment"].line
+    names = [b.name for b in line.bearings]
+    if bearing not in names:
+        raise InputError("shaft_bearing", bearing, "", "one of " + ", ".join(names))
+    modelled = line.bearings[names.index(bearing)].length
+    if abs(modelled - length) > 0.01 * length:
+        raise InputError(
+            "shaft_bearing", bearing, "", f"a bearing of the monitored length {length:g} m, not {modelled:g} m"
+        )
+    stations = np.linspace(0.0, length, SHAPE_STATIONS)
+    with located("shaft_bearing"):
+        return stations, model_shape(line, bearing, stations)

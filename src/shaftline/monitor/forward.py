@@ -108,6 +108,9 @@ class RigCase:
         Share of the shaft model's bending inside the bearing that the journal carries.
     overhung_mass : float
         Counterweight of the rig's shaft model (:func:`rig_shaft_line`), kg.
+    shape : (stations, shape) or None
+        Bending shape of the journal in the bearing (m from the loaded end, m) from another
+        shaft model (:func:`shaftline.monitor.bending.model_shape`); None: the rig's.
     whirl : float
         1X forward whirl, zero-to-peak, at ``whirl_speed``, m (grows with the speed squared).
     whirl_speed : float
@@ -148,6 +151,7 @@ class RigCase:
     seed: int = 1
     axial_nodes: int = 41
     circumferential_nodes: int = 120
+    shape: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         require_positive("load", self.load, "N")
@@ -222,8 +226,10 @@ class Recording:
 
 
 def rig_shape_for(case: RigCase) -> tuple[np.ndarray, np.ndarray]:
-    """The rig's bending shape stretched to the layout's bearing length: stations (m from the
-    loaded end) and shape (m, at the model's scale)."""
+    """The case's bending shape (``case.shape``), or the rig's stretched to the layout's bearing
+    length: stations (m from the loaded end) and shape (m, at the model's scale)."""
+    if case.shape is not None:
+        return np.asarray(case.shape[0], dtype=float), np.asarray(case.shape[1], dtype=float)
     z, shape = rig_bending_shape(case.overhung_mass)
     stretch = case.layout.length / 1.2
     return np.asarray(z) * stretch, np.asarray(shape) * stretch

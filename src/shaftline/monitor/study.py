@@ -188,6 +188,8 @@ class MonitorStudy:
         Speed of the slow-roll recording, rad/s.
     write_recordings : bool
         Keep the recordings for CSV files beside the report.
+    shape : (stations, shape) or None
+        Bending shape of the journal from the machine's shaft model (None: the rig's).
     """
 
     layout: ProbeLayout
@@ -195,6 +197,7 @@ class MonitorStudy:
     speeds: tuple[float, ...]
     slow_roll_speed: float
     write_recordings: bool
+    shape: tuple[np.ndarray, np.ndarray] | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -252,7 +255,7 @@ def solve_monitor(study: MonitorStudy, progress: Callable[[str], None] | None = 
     marks = revolution_marks(slow.keyphasor)
     window = whole_revolutions(marks)
     runout = runout_profile(gaps[window], shaft_phase(gaps.shape[0], marks)[window])
-    shape = rig_shape_for(rig)
+    shape = study.shape if study.shape is not None else rig_shape_for(rig)
     points = []
     for speed in study.speeds:
         if progress is not None:
