@@ -70,6 +70,17 @@ def film_between_circles(
     -------
     ndarray (..., m)
         Film thickness, m; negative where the circles overlap (contact, seed 001 Sect. 5.1).
+
+    Examples
+    --------
+    The seed's bearing (c = 0.55 mm) with the journal 0.5 mm below the bore centre: the film
+    at the top and the bottom, and 90 deg round, where the exact form adds e^2 / (2 R_j):
+
+    >>> import numpy as np
+    >>> from shaftline.monitor.probes import seed001_layout
+    >>> h = film_between_circles(np.array(-5e-4), np.array(0.0), np.radians([0.0, 90.0, 180.0]), seed001_layout())
+    >>> (h * 1e6).round(3).tolist()
+    [1050.0, 550.774, 50.0]
     """
     along, normal = directions(theta, layout.rotation)
     ey = np.asarray(ey, dtype=float)[..., None]
