@@ -31,6 +31,7 @@ CAPABILITY_MODULES: tuple[str, ...] = (
     "shaftline.shaft.capability",
     "shaftline.wear.capability",
     "shaftline.cpp.capability",
+    "shaftline.contact.capability",
     # after film: [design] builds on [bearing] (Capability.needs)
     "shaftline.design.capability",
     "shaftline.monitor.capability",

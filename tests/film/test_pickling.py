@@ -100,12 +100,18 @@ def test_deep_and_shallow_copies_of_a_solved_bearing_solve_the_same():
 
 
 def test_warm_start_is_not_carried_but_the_solution_is_the_same():
-    """After unpickling, the first warm solve starts cold: same active set and pressures,
-    more active-set iterations."""
+    """After unpickling, the first warm solve starts cold: it is, iterations and every bit of
+    the pressure included, the solve of a bearing made afresh. Against the original
+    bearing's warm solve: the same active set, and the pressures to rounding (the warm solve
+    factorises on the node set kept from the last position, whose ordering differs; the set,
+    hence the solution, is unique)."""
     bearing = JournalBearing.from_problem(_problem())
     bearing.solve_at(JournalPosition(ey=-0.6e-4, ez=0.3e-4, tilt_y=TILT_Y))
     nearby = JournalPosition(ey=-0.61e-4, ez=0.31e-4, tilt_y=TILT_Y)
     restored = pickle.loads(pickle.dumps(bearing))
     warm, cold = bearing.solve_at(nearby), restored.solve_at(nearby)
-    assert np.array_equal(warm.pressure, cold.pressure)
-    assert warm.iterations < cold.iterations
+    fresh = JournalBearing.from_problem(_problem()).solve_at(nearby)
+    assert cold.iterations == fresh.iterations
+    assert np.array_equal(cold.pressure, fresh.pressure)
+    assert np.array_equal(warm.cavitated, cold.cavitated)
+    np.testing.assert_allclose(warm.pressure, cold.pressure, rtol=1e-12, atol=1e-12 * np.abs(cold.pressure).max())

@@ -472,7 +472,9 @@ class JournalBearing:
         with its kept factorisations depend on the length, diameter, clearance, sense of
         rotation, operating point and options, not on the bore profile, the bent journal or a
         film profile, so a bearing that differs only in those reuses them (the coarse bearing
-        of the grid continuation is built again: it carries the geometry).
+        of the grid continuation is built again: it carries the geometry). The kept factors
+        are dropped, so that its results do not depend on what the shared solver solved
+        before (their orderings would round differently).
 
         Raises
         ------
@@ -490,6 +492,7 @@ class JournalBearing:
             shared = copy.copy(self._cache)
             shared.coarse_bearing = None
             shared.last_cavitated = None
+            shared.reynolds.drop_factors()
             other._cache = shared
         return other
 
@@ -576,11 +579,15 @@ class JournalBearing:
         start: np.ndarray | None = None,
         geometry: BearingGeometry | None = None,
         tilt_rates: tuple[float, float] = (0.0, 0.0),
+        start_pressure: np.ndarray | None = None,
     ) -> _Evaluation:
         """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
         bent journal of :meth:`film_load`); ``tilt_rates`` (rad/s, dy/dx and dz/dx per second)
         add the squeeze of a tilting journal, ``dh/dt = -(z - L/2)(w_y cos + s w_z sin)``
-        (the position carries only the centre's velocities)."""
+        (the position carries only the centre's velocities). ``start_pressure`` (relative,
+        dimensionless), a guess of the pressure, gives the start set of the Reynolds
+        condition's active set instead of ``start``
+        (:meth:`~shaftline.film.reynolds.ReynoldsSolver.predicted_set`)."""
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(geometry or self.geometry, grid, position)
@@ -598,6 +605,8 @@ class JournalBearing:
             rate = (2.0 / self.operating.speed) * dh_dt / c
         stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate)
         solver = cache.reynolds
+        if start_pressure is not None and self.options.cavitation == "reynolds":
+            start = solver.predicted_set(stencil, start_pressure)
         if start is None and warm:
             start = cache.last_cavitated
         solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
@@ -1117,8 +1126,8 @@ class JournalBearing:
             alpha *= 0.5
         while alpha > 1e-8:
             try:
-                start = self._predicted_cavitation(evaluation, response, alpha * step)
-                trial = self._evaluate(self._moved(position, alpha * step), start=start)
+                start, guess = self._predicted_cavitation(evaluation, response, alpha * step)
+                trial = self._evaluate(self._moved(position, alpha * step), start=start, start_pressure=guess)
             except _NegativeFilm:
                 alpha *= 0.5
                 continue
@@ -1129,27 +1138,23 @@ class JournalBearing:
 
     def _predicted_cavitation(
         self, evaluation: _Evaluation, response: tuple[np.ndarray, np.ndarray], step: np.ndarray
-    ) -> np.ndarray | None:
-        """Cavitated set after the journal moves by ``step`` (m), predicted to first order.
+    ) -> tuple[np.ndarray | None, np.ndarray | None]:
+        """Start of the active set after the journal moves by ``step`` (m): a set, or a
+        pressure guess from which the solver predicts it.
 
-        The film is linear in the offsets, so the residual change ``dR`` and the pressure
-        change ``dP`` with the set frozen are those per metre of ey and ez (``response``, from
-        the Jacobian's own solves) combined by the step. A free node whose predicted pressure
-        ``P + dP`` is negative cavitates; a cavitated node whose predicted multiplier
-        ``w + dR + A dP`` (``w = A P - b``) is negative fills. None for the half-Sommerfeld
-        model, which has no active set, and for the mass-conserving model, whose own solver
-        predicts the set of a warm start (a chord step of its last factor,
-        :func:`shaftline.film.jfo.solve_jfo`) and whose multipliers are not these.
+        The film is linear in the offsets, so the pressure change ``dP`` with the set frozen
+        is that per metre of ey and ez (``response``, from the Jacobian's own solves) combined
+        by the step: ``P + dP`` is the guess for the Reynolds condition, whose solver sharpens
+        the set it implies with a few projected over-relaxation sweeps on the new film
+        (:meth:`~shaftline.film.reynolds.ReynoldsSolver.predicted_set`). (None, None) for the
+        half-Sommerfeld model, which has no active set, and for the mass-conserving model,
+        whose own solver predicts the set of a warm start (a chord step of its last factor,
+        :func:`shaftline.film.jfo.solve_jfo`).
         """
         if self.options.cavitation in ("half_sommerfeld", "jfo"):
-            return None
-        stencil, solution = evaluation.stencil, evaluation.solution
-        d_residual = np.tensordot(step, response[0], axes=1)
+            return None, None
         d_pressure = np.tensordot(step, response[1], axes=1)
-        pressure = evaluation.relative_pressure
-        multiplier = apply_operator(stencil.c_theta, stencil.c_z, pressure + d_pressure) - stencil.rhs + d_residual
-        predicted = np.where(solution.cavitated, multiplier > 0.0, pressure + d_pressure < 0.0)
-        return predicted & ~self._solver_state().reynolds.fixed
+        return None, evaluation.relative_pressure + d_pressure
 
     def _limit_step(self, step: np.ndarray, c: float) -> np.ndarray:
         length = float(np.hypot(*step))

@@ -45,10 +45,13 @@ import scipy.sparse as sp
 from shaftline.errors import SolverFailure
 from shaftline.film.geometry import coarse_shape
 from shaftline.film.problem import CAVITATION_MODELS, Cavitation
+from shaftline.film.relaxation import Relaxation
 
 __all__ = [
     "CAVITATION_MODELS",
     "CoarseGrid",
+    "NODE_SET_MARGIN",
+    "NODE_SET_SLACK",
     "MAX_ACTIVE_SET_ITERATIONS",
     "ReynoldsConvergenceError",
     "ReynoldsSolution",
@@ -62,10 +65,13 @@ __all__ = [
 
 #: Active-set iterations allowed before the solver gives up.
 MAX_ACTIVE_SET_ITERATIONS = 200
-#: Factors kept per grid, keyed by active set. One: the active-set iteration visits 4-7 sets on
-#: each grid in turn, so a few more would all be evicted before their set came back, and the
-#: memory estimate (film/problem.py) counts one factor per grid.
-FACTOR_CACHE = 1
+#: Cells added around the free nodes, in each direction, when a kept factor's node set is
+#: chosen: the cavitation boundary of the next trial sets, Newton steps and nearby films moves
+#: by a few cells, and every set inside the node set reuses its ordering and symbolic analysis.
+NODE_SET_MARGIN = 3
+#: A kept node set is chosen again when it holds more than this many times the free nodes:
+#: its factor then costs noticeably more than a factor of the free nodes alone.
+NODE_SET_SLACK = 1.35
 #: Conjugate-gradient solves of the trial active sets, preconditioned by the factor of a nearby
 #: set: given up for a factorisation after this many iterations (a few dozen triangular solves
 #: cost about one factorisation), and converged when the energy-norm error is below this
@@ -243,20 +249,27 @@ class ReynoldsSolver:
         self.fixed = np.asarray(fixed, dtype=bool)
         self.fixed_pressure = np.where(self.fixed, fixed_pressure, 0.0)
         self.pattern = _pattern(*shape)
-        self._factor: qdldl.Solver | None = None
+        self._factor: _NodeSetFactor | None = None
         #: Factorise the full periodic pattern with the held rows and columns zeroed (one
         #: symbolic analysis for every set) instead of the free sub-matrix: set on the small
         #: coarse grids that only predict the cavitated set.
         self.masked = False
         self._masked_factor: qdldl.Solver | None = None
-        self._factors: dict[bytes, tuple[qdldl.Solver, Stencil]] = {}
         self._slot_cache: tuple[Stencil, np.ndarray] | None = None
-        self._cache_size = FACTOR_CACHE
-        self._factor_mask: np.ndarray | None = None
-        self._factor_stencil: Stencil | None = None
         self._coarse_grid: CoarseGrid | None = None
+        self._relaxation: Relaxation | None = None
         self.coarse_iterations = 0
         self.pcg_iterations = 0
+
+    def drop_factors(self) -> None:
+        """Forget the kept node-set factors (and those of the coarser grids), keeping the
+        sparsity patterns and coarse grids: the next solutions then round the same whatever
+        this solver solved before (a design search shares one solver across bores, and its
+        results must not depend on which worker evaluated which design before). The masked
+        factor stays: its pattern is fixed, so its results depend on the matrix only."""
+        self._factor = None
+        if self._coarse_grid is not None:
+            self._coarse_grid.solver.drop_factors()
 
     # -- symmetric masked system -------------------------------------------------
     def _masked_values(self, stencil: Stencil, held: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -278,22 +291,6 @@ class ReynoldsSolver:
         values[~is_diag & ~both_free] = 0.0
         return values, diag
 
-    def _free_matrix(self, stencil: Stencil, free: np.ndarray) -> sp.csc_matrix:
-        """Upper triangle of ``A[free, free]`` in CSC form, free nodes numbered in node order.
-
-        Filtered from the slots of the full periodic pattern: renumbering the kept rows and
-        columns in node order keeps them sorted, so no sort or format conversion is needed.
-        """
-        pattern = self.pattern
-        keep = free[pattern.slot_row] & free[pattern.slot_col]
-        index = np.cumsum(free) - 1
-        values = self._slot_values(stencil)[keep]
-        rows = index[pattern.slot_row[keep]]
-        count = int(index[-1]) + 1 if free.size else 0
-        indptr = np.zeros(count + 1, dtype=np.int64)
-        np.cumsum(np.bincount(index[pattern.slot_col[keep]], minlength=count), out=indptr[1:])
-        return sp.csc_matrix((values, rows, indptr), shape=(count, count))
-
     def _slot_values(self, stencil: Stencil) -> np.ndarray:
         """Values of A on every slot of the full pattern (upper triangle), kept per stencil:
         an active-set iteration builds several sub-matrices of one film."""
@@ -311,37 +308,31 @@ class ReynoldsSolver:
         self._slot_cache = (stencil, values)
         return values
 
-    def _factorise(self, stencil: Stencil, held: np.ndarray) -> Any:
-        """LDL^T factor of the free sub-matrix ``A[free, free]`` (qdldl, AMD of that graph).
+    def _factorise(self, stencil: Stencil, held: np.ndarray) -> _NodeSetFactor | None:
+        """LDL^T factor of the free sub-matrix ``A[free, free]`` (qdldl), kept between calls.
 
-        The factors of the last :data:`FACTOR_CACHE` active sets are kept, each with its
-        ordering and symbolic analysis, keyed by the set: the same set again (a Newton step
-        that does not move the cavitation boundary) costs only the numeric factorisation,
-        and the same set and film (the frozen-set derivatives after a solution) nothing. The factor
-        depends only on the matrix, so a solution computed with it does not depend on the
-        path that found the set. Returns None when no node is free.
+        The factor is that of a kept node set holding the free nodes and a few cells around
+        them (:data:`NODE_SET_MARGIN`), with the held nodes inside it decoupled (their rows
+        and columns zeroed, their diagonals kept): so ``x = 0`` there, and on the free nodes
+        the solution is that of ``A[free, free]`` itself. Every active set inside the kept
+        node set reuses its AMD ordering and symbolic analysis and costs only qdldl's numeric
+        factorisation; the same set and film again (the frozen-set derivatives after a
+        solution) cost nothing. A set with a free node outside it, or one much smaller than
+        it (:data:`NODE_SET_SLACK`), gets a new node set. Returns None when no node is free.
         """
-        if not (~held).any():
-            self._factor, self._factor_mask, self._factor_stencil = None, None, None
+        free = ~held.ravel()
+        if not free.any():
+            self._factor = None
             return None
-        key = np.packbits(held).tobytes()
-        entry = self._factors.pop(key, None)
-        if entry is not None and entry[1] is stencil:
-            solver = entry[0]
-        else:
-            matrix = self._free_matrix(stencil, ~held.ravel())
-            if entry is not None:
-                solver = entry[0]
-                solver.update(matrix, upper=True)
-            else:
-                # Drop the oldest factor first: factors of a fine grid need not fit in memory twice.
-                while len(self._factors) >= self._cache_size:
-                    self._factors.pop(next(iter(self._factors)))
-                self._factor = None
-                solver = qdldl.Solver(matrix, upper=True)
-        self._factors[key] = (solver, stencil)
-        self._factor, self._factor_mask, self._factor_stencil = solver, held.copy(), stencil
-        return solver
+        factor = self._factor
+        if factor is not None and factor.is_for(stencil, free):
+            return factor
+        if factor is None or not factor.holds(free):
+            self._factor = None  # a fine grid's factors need not fit in memory twice
+            factor = _NodeSetFactor.around(self.pattern, free, self.shape, NODE_SET_MARGIN)
+        factor.factorise(self._slot_values(stencil), stencil, free)
+        self._factor = factor
+        return factor
 
     def _solve_free(
         self, stencil: Stencil, held: np.ndarray, rhs: np.ndarray, guess: np.ndarray | None, direct: bool
@@ -360,15 +351,15 @@ class ReynoldsSolver:
             return out
         if self.masked:
             return self._masked_factorisation(stencil, held).solve(np.where(free, rhs.ravel(), 0.0))
-        iterative = free.size >= PCG_MIN_NODES and self._factor is not None and self._factor_mask is not None
+        iterative = free.size >= PCG_MIN_NODES and self._factor is not None
         if iterative and not direct:
             solution = self._pcg(stencil, free, rhs.ravel()[free], None if guess is None else guess[free])
             if solution is not None:
                 out[free] = solution
                 return out
         factor = self._factorise(stencil, held)
-        out[free] = factor.solve(rhs.ravel()[free])
-        return out
+        assert factor is not None
+        return factor.solve(np.where(free, rhs.ravel(), 0.0))
 
     def _masked_factorisation(self, stencil: Stencil, held: np.ndarray) -> Any:
         """Factor of the full pattern with the held rows and columns zeroed, their diagonals
@@ -386,8 +377,7 @@ class ReynoldsSolver:
         """Whether the kept factor is that of ``stencil`` and ``held`` (or no node is free)."""
         if held.all() or self.masked:
             return True  # a masked solve is always a direct solve of that set's own matrix
-        mask = self._factor_mask
-        return self._factor_stencil is stencil and mask is not None and np.array_equal(mask, held)
+        return self._factor is not None and self._factor.is_for(stencil, ~held.ravel())
 
     def _pcg(self, stencil: Stencil, free: np.ndarray, rhs: np.ndarray, guess: np.ndarray | None) -> np.ndarray | None:
         """Conjugate gradients on ``A[free, free]`` preconditioned by the kept factor.
@@ -402,16 +392,15 @@ class ReynoldsSolver:
         ``PCG_TOLERANCE`` of the solution's energy norm; None when it does not within
         ``PCG_MAX_ITERATIONS``.
         """
-        assert self._factor is not None and self._factor_mask is not None
         factor = self._factor
-        free_kept = ~self._factor_mask.ravel()
+        assert factor is not None and factor.free is not None
+        kept_free = factor.free
         size = free.size
-        in_kept = free_kept[free]  # free now and in the kept factor
-        kept_pos = (np.cumsum(free_kept) - 1)[free][in_kept]  # their places in the factor
-        kept_count = int(np.count_nonzero(free_kept))
+        in_kept = kept_free[free]  # free now and in the kept factor
         diag = stencil_diagonal(stencil).ravel()[free]
         extra = ~in_kept
         shape = self.shape
+        both = free & kept_free
 
         def operator(x: np.ndarray) -> np.ndarray:
             full = np.zeros(size)
@@ -419,10 +408,10 @@ class ReynoldsSolver:
             return apply_operator(stencil.c_theta, stencil.c_z, full.reshape(shape)).ravel()[free]
 
         def precondition(r: np.ndarray) -> np.ndarray:
-            z = r / diag
-            kept_rhs = np.zeros(kept_count)
-            kept_rhs[kept_pos] = r[in_kept]
-            z[in_kept] = factor.solve(kept_rhs)[kept_pos]
+            z = np.empty_like(r)
+            kept_rhs = np.zeros(size)
+            kept_rhs[both] = r[in_kept]
+            z[in_kept] = factor.solve(kept_rhs)[both]
             z[extra] = r[extra] / diag[extra]
             return z
 
@@ -497,13 +486,16 @@ class ReynoldsSolver:
             self._coarse_grid = CoarseGrid.under(self, halved)
         return self._coarse_grid
 
-    def _nested_start(self, film: np.ndarray) -> np.ndarray | None:
+    def _nested_start(self, film: np.ndarray, stencil: Stencil) -> np.ndarray | None:
         """Cavitated set predicted by solving the same problem on the coarser grid.
 
         The coarse indicator ``P - w / diag(A)`` (pressure where the film is full,
         minus the scaled complementarity multiplier where it is cavitated) changes
         sign on the cavitation boundary; interpolated bilinearly onto the fine grid it
-        places that boundary to within a fraction of a fine cell.
+        places that boundary to within a cell or two. A few projected over-relaxation
+        sweeps on this grid (the red-black sweeps of :mod:`shaftline.film.relaxation`), from the
+        interpolated pressure, remove that short-wavelength error: the set they leave is
+        one or two nodes off the final one where the interpolated one is tens.
         """
         coarse = self.coarse_grid()
         if coarse is None:
@@ -517,7 +509,19 @@ class ReynoldsSolver:
         multiplier = apply_operator(stencil_c.c_theta, stencil_c.c_z, solution.pressure) - stencil_c.rhs
         indicator = np.where(solution.cavitated, -np.maximum(multiplier, 0.0) / diag, solution.pressure)
         indicator = np.where(solver.fixed, 0.0, indicator)
-        return (coarse.prolong(indicator) < 0.0) & ~self.fixed
+        return self.predicted_set(stencil, coarse.prolong(indicator))
+
+    def predicted_set(self, stencil: Stencil, pressure: np.ndarray) -> np.ndarray:
+        """Cavitated set predicted from a pressure guess (nz, nt), e.g. interpolated from a
+        coarser grid or extrapolated by a Newton step: the nodes that a few projected
+        over-relaxation sweeps from it (the red-black sweeps of :mod:`shaftline.film.relaxation`)
+        leave at zero. The sweeps remove the guess's short-wavelength error around the
+        cavitation boundary, so the set is a node or two off the final one."""
+        if self._relaxation is None:
+            self._relaxation = Relaxation(self.shape, self.fixed)
+        start = np.where(self.fixed, self.fixed_pressure, np.maximum(pressure, 0.0))
+        relaxed = self._relaxation.sweep(start, stencil.c_theta, stencil.c_z, stencil.rhs)
+        return (relaxed <= 0.0) & ~self.fixed
 
     def _solve_reynolds_lcp(
         self,
@@ -536,7 +540,7 @@ class ReynoldsSolver:
         """
         iterations = 0
         if initial_cavitated is None and film is not None and stencil.rhs.shape == film.shape:
-            initial_cavitated = self._nested_start(film)
+            initial_cavitated = self._nested_start(film, stencil)
         if initial_cavitated is None:
             pressure = self.solve_linear(stencil)
             iterations += 1
@@ -578,6 +582,94 @@ class ReynoldsSolver:
         columns = np.atleast_2d(rhs_change.reshape(-1, self.shape[0] * self.shape[1]))
         out = np.array([self._solve_free(stencil, held, -column, None, direct=True) for column in columns])
         return out.reshape((-1,) + self.shape)
+
+
+@dataclass(eq=False)
+class _NodeSetFactor:
+    """qdldl factor of the Reynolds operator on a kept node set, for a free set inside it.
+
+    Attributes
+    ----------
+    nodes : ndarray of bool (n,)
+        The node set (flat grid order).
+    slots : ndarray of bool
+        Slots of the full pattern with both ends in the node set.
+    slot_diagonal : ndarray of bool
+        Of those slots, the diagonal ones.
+    slot_row, slot_col : ndarray of int
+        Grid nodes at both ends of those slots.
+    structure : tuple
+        ``(indices, indptr, size)`` of the upper triangle of ``A[nodes, nodes]`` (CSC).
+    solver : qdldl.Solver or None
+        The factor, with the ordering and symbolic analysis of the node set.
+    free, stencil
+        The free set and film last factorised.
+    """
+
+    nodes: np.ndarray
+    slots: np.ndarray
+    slot_diagonal: np.ndarray
+    slot_row: np.ndarray
+    slot_col: np.ndarray
+    structure: tuple[np.ndarray, np.ndarray, int]
+    solver: Any = None
+    free: np.ndarray | None = None
+    stencil: Stencil | None = None
+
+    @classmethod
+    def around(cls, pattern: _Pattern, free: np.ndarray, shape: tuple[int, int], margin: int) -> _NodeSetFactor:
+        """A node set holding ``free`` (flat bool) and ``margin`` cells around it."""
+        grid = free.reshape(shape)
+        for _ in range(margin):
+            grown = grid | np.roll(grid, 1, axis=1) | np.roll(grid, -1, axis=1)
+            grown[1:] |= grid[:-1]
+            grown[:-1] |= grid[1:]
+            grid = grown
+        nodes = grid.ravel()
+        slots = nodes[pattern.slot_row] & nodes[pattern.slot_col]
+        index = np.cumsum(nodes) - 1
+        size = int(index[-1]) + 1
+        indptr = np.zeros(size + 1, dtype=np.int64)
+        np.cumsum(np.bincount(index[pattern.slot_col[slots]], minlength=size), out=indptr[1:])
+        return cls(
+            nodes=nodes,
+            slots=slots,
+            slot_diagonal=pattern.slot_kind[slots] == 0,
+            slot_row=pattern.slot_row[slots],
+            slot_col=pattern.slot_col[slots],
+            structure=(index[pattern.slot_row[slots]], indptr, size),
+        )
+
+    def holds(self, free: np.ndarray) -> bool:
+        """Whether ``free`` lies inside the node set and fills enough of it."""
+        count = int(np.count_nonzero(free))
+        return not (free & ~self.nodes).any() and int(self.structure[2]) <= NODE_SET_SLACK * count
+
+    def is_for(self, stencil: Stencil, free: np.ndarray) -> bool:
+        """Whether the factor is that of ``stencil`` with the free set ``free``."""
+        return self.stencil is stencil and self.free is not None and np.array_equal(self.free, free)
+
+    def factorise(self, slot_values: np.ndarray, stencil: Stencil, free: np.ndarray) -> None:
+        """Numeric factorisation for ``free`` (inside the node set); the first builds the solver."""
+        values = slot_values[self.slots].copy()
+        # Held nodes inside the set are decoupled: zero links, own diagonal kept (well scaled).
+        values[~self.slot_diagonal & ~(free[self.slot_row] & free[self.slot_col])] = 0.0
+        indices, indptr, size = self.structure
+        matrix = sp.csc_matrix((values, indices, indptr), shape=(size, size))
+        self.free, self.stencil = None, None
+        if self.solver is None:
+            self.solver = qdldl.Solver(matrix, upper=True)
+        else:
+            self.solver.update(matrix, upper=True)
+        self.free, self.stencil = free.copy(), stencil
+
+    def solve(self, rhs: np.ndarray) -> np.ndarray:
+        """``x`` (flat grid) with ``A[free, free] x[free] = rhs[free]``, zero elsewhere.
+
+        ``rhs`` must be zero off the free nodes."""
+        out = np.zeros(self.nodes.size)
+        out[self.nodes] = self.solver.solve(rhs[self.nodes])
+        return out
 
 
 @dataclass(frozen=True, eq=False)
