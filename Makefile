@@ -39,6 +39,7 @@ bench:
 	.venv-bench/bin/python benchmarks/bench_coupled.py
 	.venv-bench/bin/python benchmarks/bench_ntua_line.py
 	.venv-bench/bin/python benchmarks/bench_design.py 10
+	.venv-bench/bin/python benchmarks/bench_monitor.py
 	.venv-bench/bin/python benchmarks/bench_startup.py
 
 clean:

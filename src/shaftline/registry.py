@@ -34,6 +34,7 @@ CAPABILITY_MODULES: tuple[str, ...] = (
     "shaftline.contact.capability",
     # after film: [design] builds on [bearing] (Capability.needs)
     "shaftline.design.capability",
+    "shaftline.monitor.capability",
 )
 
 

@@ -61,6 +61,8 @@ SI_UNITS: dict[str, str] = {
     "memory": "byte",
     # surface speed of a contact (issue 14); "speed" is a shaft's angular speed
     "velocity": "m/s",
+    # output of a displacement probe per unit gap (shaftline.monitor): "8 mV/um"
+    "sensitivity": "V/m",
 }
 
 #: How an SI unit is written in messages and tables.

@@ -1,0 +1,306 @@
+"""The ``[monitor]`` table of a case file: eddy-current probes in a journal bearing and, for
+now, synthetic recordings of seed 001's rig (issue 13, part A).
+
+Layout::
+
+    [monitor]                       bearing length, diameter, clearance, roughness, rotation
+    [[monitor.sections]]            measurement sections from the loaded end
+    [[monitor.sections.probes]]     probes: angle, mounting distance, calibration
+    [monitor.simulate]              forward model of seed 001's rig: speeds, load, noise...
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Annotated, Literal
+
+from pydantic import BeforeValidator, Field, StrictBool
+
+from shaftline.cases.types import (
+    SHAFT_SPEED,
+    Angle,
+    NonNegativeLength,
+    Plausible,
+    PositiveForce,
+    PositiveFrequency,
+    PositiveLength,
+    PositiveMass,
+    PositiveSpeed,
+    Quantity,
+    Section,
+    Temperature,
+)
+from shaftline.errors import located
+from shaftline.registry import BuildContext
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from shaftline.monitor.study import MonitorStudy
+
+_SEED = "seed 001"
+BEARING_LENGTH = Plausible(
+    0.02, 4.0, f"stern-tube bearings of 0.02 to 4 m ({_SEED}: 1.2 m); mm written as m is above (engineering judgement)"
+)
+BORE_DIAMETER = Plausible(
+    0.02, 2.0, f"journals of 20 mm to 2 m ({_SEED}: 323 mm); mm written as m is above (engineering judgement)"
+)
+SMALL_LENGTH = Plausible(
+    0.0,
+    0.02,
+    f"probe mounting distances, ranges and zero points of tenths of a mm to a few mm ({_SEED} Table 2: 0.5 and 3 mm "
+    "ranges, zero points 0.05 and 0.3 mm); 20 mm is beyond the eddy-current probes used in bearings; mm written as "
+    "m is above",
+)
+FINE = Plausible(
+    0.0,
+    5e-6,
+    f"probe resolutions and noise of hundredths to tenths of a um ({_SEED} Table 2: 0.025 and 0.15 um); 5 um would "
+    "hide a film of a few um (engineering judgement); um written as mm is above",
+)
+MOTION = Plausible(
+    0.0,
+    1e-4,
+    "orbit, runout and noise amplitudes of hundredths of a um to some tens of um (engineering judgement); um written "
+    "as mm is above",
+)
+ROTATION_ALIASES = {"cw": "clockwise", "ccw": "anticlockwise", "counterclockwise": "anticlockwise"}
+
+
+def _rotation_alias(value: object) -> object:
+    if isinstance(value, str):
+        key = value.strip().lower()
+        return ROTATION_ALIASES.get(key, key)
+    return value
+
+
+class ProbeSection(Section):
+    """An eddy-current displacement probe."""
+
+    name: str
+    """Channel name (a recording's column)."""
+    angle: Annotated[
+        Angle, Plausible(-6.3, 6.3, "an angle within a turn; deg written as a bare number (rad) is beyond")
+    ]
+    """Bearing angle of the probe axis from the top, in the direction of rotation."""
+    mounting_distance: Annotated[NonNegativeLength, SMALL_LENGTH]
+    """Distance from the probe face back to the bore surface (0: flush)."""
+    sensitivity: Annotated[float, Quantity("sensitivity", gt=0)] = 1.0
+    """Output per unit gap (e.g. "8 mV/um")."""
+    zero: Annotated[NonNegativeLength, SMALL_LENGTH] = 0.0
+    """Gap at which the output is zero (the sensor's zero point)."""
+    sign: Literal[1, -1] = 1
+    """+1: the output grows with the gap; -1: it falls."""
+    measuring_range: Annotated[PositiveLength, SMALL_LENGTH] | None = None
+    """Gap span the probe measures above its zero point (none: not checked)."""
+    resolution: Annotated[NonNegativeLength, FINE] = 0.0
+    """Smallest gap step the probe resolves (quantisation of the synthetic signals)."""
+
+
+class MeasurementSection(Section):
+    """A measurement section: two or more probes in one plane across the bearing."""
+
+    name: str
+    """Label (seed 001: D1, D2, D3)."""
+    position: Annotated[NonNegativeLength, BEARING_LENGTH]
+    """Axial position from the loaded (aft) end of the bearing."""
+    probes: Annotated[list[ProbeSection], Field(min_length=2)]
+    """The probes, at least two with axes not on one line."""
+
+
+class SimulateSection(Section):
+    """Synthetic recordings of seed 001's rig (shaftline.monitor.forward): the journal from the bearing
+    solver and the shaft model, whirl, runout, noise and quantisation. The defaults are those of
+    ``RigCase`` (not imported here: the schema stays cheap to import; a test keeps them equal)."""
+
+    speeds: Annotated[list[Annotated[PositiveSpeed, SHAFT_SPEED]], Field(min_length=1)]
+    """Shaft speeds of the recordings (e.g. ["135 rpm", "215 rpm"])."""
+    slow_roll_speed: Annotated[PositiveSpeed, SHAFT_SPEED] = 15 * 3.141592653589793 / 30
+    """Speed of the slow-roll recording that measures the runout."""
+    load: Annotated[
+        PositiveForce,
+        Plausible(
+            1e3,
+            3e7,
+            f"bearing loads of kN to MN ({_SEED} Table 3: 75 kN) (engineering judgement); kN written as N is below",
+        ),
+    ] = 75e3
+    """Load on the bearing (downwards)."""
+    temperature: Temperature = 25.0
+    """Water temperature (viscosity from the water model)."""
+    misalignment: Annotated[
+        Angle,
+        Plausible(
+            -1e-3,
+            1e-3,
+            "a misalignment a film carries is below 1 mrad (engineering judgement); urad written as mrad is beyond",
+        ),
+    ] = 2e-6
+    """Journal tilt relative to the bore, + rising away from the loaded end."""
+    bend_scale: Annotated[float, Quantity("dimensionless", ge=0, le=10)] = 0.1
+    """Share of the shaft model's bending inside the bearing that the journal carries."""
+    overhung_mass: Annotated[
+        PositiveMass,
+        Plausible(
+            50.0,
+            2e5,
+            f"overhung masses of 50 kg to 200 t ({_SEED}: 7.5 t) (engineering judgement); t written as kg is below",
+        ),
+    ] = 7500.0
+    """Counterweight at the overhung end of the rig's shaft model."""
+    whirl: Annotated[NonNegativeLength, MOTION] = 1e-6
+    """1X forward whirl, zero-to-peak, at whirl_speed (grows with the speed squared)."""
+    whirl_speed: Annotated[PositiveSpeed, SHAFT_SPEED] = 215 * 3.141592653589793 / 30
+    """Speed at which the whirl has that amplitude."""
+    runout: Annotated[list[Annotated[NonNegativeLength, MOTION]], Field(min_length=2, max_length=2)] = [0.3e-6, 0.15e-6]
+    """1X and 2X runout amplitudes seen by every probe (random phases, the same at every speed)."""
+    noise: Annotated[NonNegativeLength, FINE] = 0.05e-6
+    """Standard deviation of white noise on each gap."""
+    sleeve_wear: Annotated[NonNegativeLength, MOTION] = 0.0
+    """Uniform wear of the journal sleeve (the correction factor k should find it)."""
+    sample_rate: Annotated[
+        PositiveFrequency, Plausible(10.0, 1e6, "data acquisition at 10 Hz to 1 MHz (engineering judgement)")
+    ] = 2048.0
+    """Samples per second."""
+    revolutions: Annotated[float, Quantity("dimensionless", ge=2, le=1000)] = 8.0
+    """Length of each recording in shaft revolutions."""
+    seed: Annotated[int, Field(ge=0)] = 1
+    """Seed of the random phases and noise."""
+    write_recordings: StrictBool = True
+    """Write each recording as CSV (time, channels in volts, keyphasor) beside the report."""
+
+
+class MonitorSection(Section):
+    """Film-thickness monitoring with eddy-current probes (seed 001)."""
+
+    length: Annotated[PositiveLength, BEARING_LENGTH]
+    """Bearing length."""
+    diameter: Annotated[PositiveLength, BORE_DIAMETER]
+    """Bore diameter."""
+    radial_clearance: PositiveLength
+    """Radial clearance (after break-in); checked against the radius for a unit slip."""
+    roughness_bearing: PositiveLength = 1.6e-6
+    """Arithmetic mean roughness Ra of the bore (liner)."""
+    roughness_journal: PositiveLength = 0.8e-6
+    """Arithmetic mean roughness Ra of the journal (sleeve)."""
+    rq_factor: Annotated[float, Quantity("dimensionless", ge=1.2, le=1.26)] = 1.25
+    """Rq / Ra (seed 001: 1.20 to 1.25)."""
+    rotation: Annotated[Literal["clockwise", "anticlockwise"], BeforeValidator(_rotation_alias)] = "clockwise"
+    """Sense of rotation seen from aft."""
+    sections: Annotated[list[MeasurementSection], Field(min_length=1)]
+    """Measurement sections from the loaded end forward."""
+    shaft_model: str | None = None
+    """Case file whose [alignment] table models the machine's shaft line (path relative to this case): the
+    bending shape of the journal in the bearing comes from it (none: seed 001's rig)."""
+    shaft_bearing: str | None = None
+    """Name of the monitored bearing in that [alignment] table (needed with shaft_model)."""
+    simulate: SimulateSection | None = None
+    """Synthetic recordings of seed 001's rig."""
+
+
+def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
+    """The monitoring study in SI domain objects."""
+    import math
+
+    from shaftline.lubricants import Lubricant
+    from shaftline.monitor.forward import RigCase
+    from shaftline.monitor.probes import Probe, ProbeLayout
+    from shaftline.monitor.probes import Section as ProbeSectionDomain
+    from shaftline.monitor.study import MonitorStudy
+
+    sections = tuple(
+        ProbeSectionDomain(
+            s.name,
+            s.position,
+            tuple(
+                Probe(
+                    p.name,
+                    p.angle,
+                    p.mounting_distance,
+                    p.sensitivity,
+                    p.zero,
+                    p.sign,
+                    math.inf if p.measuring_range is None else p.measuring_range,
+                    p.resolution,
+                )
+                for p in s.probes
+            ),
+        )
+        for s in section.sections
+    )
+    layout = ProbeLayout(
+        sections,
+        length=section.length,
+        radius=0.5 * section.diameter,
+        radial_clearance=section.radial_clearance,
+        roughness_bearing=section.roughness_bearing,
+        roughness_journal=section.roughness_journal,
+        rq_factor=section.rq_factor,
+        rotation=1 if section.rotation == "clockwise" else -1,
+    )
+    shape = None
+    if section.shaft_model is not None:
+        shape = model_bending_shape(section.shaft_model, section.shaft_bearing, layout.length, context)
+    rig = None
+    if section.simulate is not None:
+        sim = section.simulate
+        with located("simulate"):
+            viscosity = float(Lubricant.preset("water").dynamic_viscosity(sim.temperature))
+            rig = RigCase(
+                layout=layout,
+                load=sim.load,
+                viscosity=viscosity,
+                misalignment=sim.misalignment,
+                bend_scale=sim.bend_scale,
+                overhung_mass=sim.overhung_mass,
+                whirl=sim.whirl,
+                whirl_speed=sim.whirl_speed,
+                runout=(sim.runout[0], sim.runout[1]),
+                noise=sim.noise,
+                sleeve_wear=sim.sleeve_wear,
+                sample_rate=sim.sample_rate,
+                revolutions=sim.revolutions,
+                seed=sim.seed,
+                shape=shape,
+            )
+    speeds = tuple(section.simulate.speeds) if section.simulate is not None else ()
+    slow_roll = section.simulate.slow_roll_speed if section.simulate is not None else 0.0
+    write = section.simulate.write_recordings if section.simulate is not None else False
+    return MonitorStudy(layout, rig, speeds, slow_roll, write, shape)
+
+
+#: Stations of a bending shape along the bearing.
+SHAPE_STATIONS = 49
+
+
+def model_bending_shape(
+    path: str, bearing: str | None, length: float, context: BuildContext
+) -> tuple[np.ndarray, np.ndarray]:
+    """Stations (m from the loaded end) and the bending shape (m) of the journal in ``bearing``
+    of the ``[alignment]`` table of the case file ``path``."""
+    import numpy as np
+
+    from shaftline.cases import load_case
+    from shaftline.errors import InputError
+    from shaftline.monitor.bending import model_shape
+
+    if bearing is None:
+        raise InputError("shaft_bearing", "missing", "", "the name of the monitored bearing in the shaft model")
+    file = context.path(path)
+    try:
+        case = load_case(file, only=["alignment"])
+    except InputError as error:
+        raise InputError("shaft_model", path, "", f"a case file with a valid [alignment] table ({error})") from None
+    if "alignment" not in case.studies:
+        raise InputError("shaft_model", path, "", "a case file with an [alignment] table")
+    line = case.studies["alignment"].line
+    names = [b.name for b in line.bearings]
+    if bearing not in names:
+        raise InputError("shaft_bearing", bearing, "", "one of " + ", ".join(names))
+    modelled = line.bearings[names.index(bearing)].length
+    if abs(modelled - length) > 0.01 * length:
+        raise InputError(
+            "shaft_bearing", bearing, "", f"a bearing of the monitored length {length:g} m, not {modelled:g} m"
+        )
+    stations = np.linspace(0.0, length, SHAPE_STATIONS)
+    with located("shaft_bearing"):
+        return stations, model_shape(line, bearing, stations)

@@ -1,0 +1,65 @@
+"""Monitor figures draw what they say: the clearance circle, the regime contours and bands."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from matplotlib.figure import Figure
+
+from shaftline.monitor import figures
+from shaftline.monitor.identification import SectionOrbit
+from shaftline.monitor.orbits import shaft_centre_line
+from shaftline.monitor.probes import seed001_layout
+from shaftline.monitor.regimes import thresholds
+
+
+def _orbit() -> SectionOrbit:
+    phi = np.linspace(0, 2 * math.pi, 100)
+    return SectionOrbit("D1", 0.292, -5e-4 + 2e-6 * np.cos(phi), -1e-4 + 1e-6 * np.sin(phi), 1e-5, 0.55e-3, 1)
+
+
+def test_orbit_inside_the_clearance_circle():
+    axes = Figure().subplots(1, 2)
+    figures.orbit(_orbit(), ax=axes)
+    circle = axes[0].lines[0].get_xydata()
+    assert np.hypot(circle[:, 0], circle[:, 1]) == pytest.approx(560.0)  # c + k in µm
+    orbit = axes[0].lines[1].get_xydata()
+    assert orbit[:, 1].mean() == pytest.approx(-500.0, abs=0.1)
+
+
+def test_film_map_contours_are_the_regime_thresholds():
+    layout = seed001_layout()
+    theta = np.radians(np.arange(0, 360, 10.0))
+    z = np.linspace(0, 1.2, 13)
+    film = (1e-6 + 10e-6 * z[:, None]) * (1 + 0 * theta[None, :]) + 5e-4 * (1 + np.cos(theta))[None, :]
+    ax = Figure().subplots()
+    figures.film_map(theta, z, film, layout, ax=ax)
+    contour = next(c for c in ax.collections if hasattr(c, "levels"))
+    assert list(contour.levels) == pytest.approx([t * 1e6 for t in thresholds(layout)])
+
+
+def test_min_film_along_has_the_regime_bands():
+    layout = seed001_layout()
+    z = np.linspace(0, 1.2, 25)
+    ax = Figure().subplots()
+    figures.min_film_along(z, {"95 rpm": 1e-6 + 8e-6 * z, "175 rpm": 2e-6 + 9e-6 * z}, layout, ax=ax)
+    low, high = (t * 1e6 for t in thresholds(layout))
+    bands = [patch.get_y() for patch in ax.patches]
+    assert bands[1] == pytest.approx(low) and bands[2] == pytest.approx(high)
+    assert len(ax.get_lines()) == 2 + len(layout.positions)
+
+
+def test_polar_film_and_centre_line_vs_speed_draw():
+    layout = seed001_layout()
+    theta = np.radians(np.arange(0, 360, 15.0))
+    ax = Figure().subplots()
+    figures.film_polar(theta, np.vstack([5e-6 + 1e-4 * (1 + np.cos(theta))] * 3), layout, label="D1", ax=ax)
+    mean_curve = ax.lines[0].get_xydata()
+    assert mean_curve[0] == pytest.approx([0.0, math.log10(1 + 205.0)])  # 0 deg at the top: 5 + 200 µm
+    assert mean_curve[12] == pytest.approx([0.0, -math.log10(1 + 5.0)])  # 180 deg at the bottom
+    points = shaft_centre_line(np.array([1.0, 2.0]), [np.full(3, -5e-4), np.full(3, -4e-4)], [np.zeros(3)] * 2)
+    axes = Figure().subplots(1, 2)
+    figures.centre_line_vs_speed(points, 0.55e-3, ax=axes)
+    assert axes[1].lines[0].get_xydata()[:, 1] == pytest.approx([-500.0, -400.0])

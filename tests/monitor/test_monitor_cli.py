@@ -1,0 +1,105 @@
+"""``shaftline monitor simulate`` on examples/monitor_rig.toml, and the [monitor] table's checks."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from shaftline.monitor.case import SimulateSection
+from shaftline.monitor.forward import RigCase
+from tests.conftest import invoke
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = ROOT / "examples" / "monitor_rig.toml"
+
+
+@pytest.mark.slow
+def test_simulate_example_writes_recordings_figures_and_json(tmp_path):
+    """The example end to end (4 s): identified regime lengths equal the truth to the bound of
+    tests/monitor/test_forward.py (about a mm), film errors below 0.01 µm, recordings and figures written."""
+    out = tmp_path / "out"
+    result = invoke("monitor", "simulate", str(EXAMPLE), "--out", str(out), "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    monitor = json.loads(result.stdout)["monitor"]
+    assert [round(p["speed"] * 30 / 3.141592653589793) for p in monitor["points"]] == [135, 175, 215]
+    for point in monitor["points"]:
+        truth = point["truth"]
+        for name, value in point["regime_lengths"].items():
+            assert value == pytest.approx(truth["regime_lengths"][name], abs=2e-3)
+        assert truth["film_error"] < 0.01e-6 and truth["min_film_error"] < 0.01e-6
+        assert [round(s["correction"] * 1e6, 2) for s in point["sections"]] == [0.0, 0.0, 0.0]
+    header = (out / "data" / "recording_135rpm.csv").read_text().splitlines()[0]
+    assert header == "time_s,D1_1,D1_2,D1_3,D2_1,D2_2,D2_3,D3_1,D3_2,D3_3,keyphasor"
+    for name in ("monitor_min_film", "monitor_film_map", "monitor_orbit_0", "monitor_centre_line"):
+        assert (out / "figures" / f"{name}.png").stat().st_size > 10_000
+
+
+def test_clearance_in_the_wrong_unit_is_one_line(tmp_path):
+    case = tmp_path / "case.toml"
+    case.write_text(EXAMPLE.read_text().replace('radial_clearance = "0.55 mm"', 'radial_clearance = "0.55 m"'))
+    result = invoke("monitor", "simulate", str(case))
+    assert result.exit_code == 2
+    message = result.stderr.strip()
+    assert "\n" not in message and "monitor.radial_clearance = 0.55 m" in message
+
+
+def test_sections_out_of_order_name_the_section(tmp_path):
+    case = tmp_path / "case.toml"
+    case.write_text(EXAMPLE.read_text().replace('position = "856 mm"', 'position = "400 mm"'))
+    result = invoke("monitor", "simulate", str(case))
+    assert result.exit_code == 2
+    assert "monitor.sections[2].position = 0.4 m: allowed > 0.4295" in result.stderr
+
+
+def test_simulate_defaults_are_the_forward_models():
+    for name in (
+        "load",
+        "misalignment",
+        "bend_scale",
+        "overhung_mass",
+        "whirl",
+        "whirl_speed",
+        "noise",
+        "sleeve_wear",
+        "sample_rate",
+        "revolutions",
+        "seed",
+    ):
+        assert SimulateSection.model_fields[name].default == pytest.approx(getattr(RigCase(), name)), name
+    assert tuple(SimulateSection.model_fields["runout"].default) == pytest.approx(RigCase().runout)
+
+
+def test_shaft_model_case_gives_the_rigs_bending_shape():
+    """examples/monitor_rig_shaft.toml (the rig as an [alignment] case) against forward.rig_shaft_line: the same
+    shape to round-off, so the example's identification uses the shape its forward model bent the journal with."""
+    from shaftline.cases import load_case
+    from shaftline.monitor.forward import rig_bending_shape
+
+    study = load_case(EXAMPLE).studies["monitor"]
+    z, shape = rig_bending_shape()
+    assert study.shape[0] == pytest.approx(z, abs=1e-15)
+    assert study.shape[1] == pytest.approx(shape, abs=1e-15)
+    assert study.rig.shape is study.shape  # the forward model bends the journal with the same shape
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        ('shaft_bearing = "stern"', 'shaft_bearing = "aft"', "monitor.shaft_bearing = 'aft': allowed one of stern"),
+        ('shaft_bearing = "stern"\n', "", "monitor.shaft_bearing = 'missing'"),
+        (
+            'shaft_model = "monitor_rig_shaft.toml"',
+            'shaft_model = "monitor_rig.toml"',
+            "monitor.shaft_model = 'monitor_rig.toml': allowed a case file with an [alignment] table",
+        ),
+    ],
+)
+def test_shaft_model_errors_are_one_line(tmp_path, old, new, message):
+    for name in ("monitor_rig.toml", "monitor_rig_shaft.toml"):
+        text = (ROOT / "examples" / name).read_text()
+        (tmp_path / name).write_text(text.replace(old, new) if name == "monitor_rig.toml" else text)
+    result = invoke("monitor", "simulate", str(tmp_path / "monitor_rig.toml"))
+    assert result.exit_code == 2
+    assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1
