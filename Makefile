@@ -5,7 +5,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test lint bench clean
+.PHONY: demo test lint bench clean postgres
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -17,7 +17,7 @@ demo: $(STAMP)
 	$(BIN)/shaftline run examples/ntua_stern_tube.toml --out results/ntua_stern_tube
 	@echo "Report: results/ntua_stern_tube/report.html"
 
-test: $(STAMP)
+test: $(STAMP) postgres
 	$(BIN)/ruff check src tests benchmarks
 	$(BIN)/mypy
 	$(BIN)/python -m pytest -q
@@ -44,3 +44,12 @@ bench:
 
 clean:
 	rm -rf $(VENV) .venv-bench results .pytest_cache
+
+# The trend store's PostgreSQL test starts a real server from Debian's package (tests/monitor/
+# test_trends.py); installed here when missing and possible (root, Debian's registry reachable),
+# otherwise that one test says why it is skipped.
+postgres:
+	@ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1 || command -v initdb >/dev/null 2>&1 || \
+	  ( command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ] && \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq postgresql >/dev/null) ) || \
+	  echo "PostgreSQL server not installed: the trend store's PostgreSQL test will be skipped"

@@ -1,0 +1,398 @@
+"""Trends of processed windows in a database (SQLite by default, PostgreSQL by URL).
+
+Each window of a recording gives a handful of numbers per measurement section (smallest film,
+eccentricity, attitude, regime lengths, orbit descriptors). They are kept in three tables
+through SQLAlchemy, so one file-based SQLite database serves a laptop and a PostgreSQL server
+a fleet, by changing the URL only:
+
+``recordings``
+    One row per recording, identified by the SHA-256 of its bytes (processing the same file
+    again, under any name, adds nothing), with its name, samples, sample rate, start time
+    and whether every window of it is stored.
+``windows``
+    One row per processed window: recording, window number, time of its first sample, speed.
+``window_values``
+    One row per (window, section, quantity): the value in SI units.
+
+Each window is written in its own transaction, with all its values, so a run stopped at any
+point leaves whole windows only; a new run on the same recording skips the windows already
+there and carries on (:meth:`TrendStore.windows_done`).
+
+Alarms are computed from the stored series: a film parameter below a threshold for longer than
+a set time, and a fitted trend of the smallest film crossing a limit, with the projected date.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import math
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from shaftline.errors import InputError
+
+__all__ = [
+    "DEFAULT_DATABASE",
+    "LambdaAlarm",
+    "TrendCrossing",
+    "TrendStore",
+    "lambda_alarms",
+    "trend_crossing",
+]
+
+#: The database a run uses without ``--db``: a SQLite file in the output folder.
+DEFAULT_DATABASE = "monitor.sqlite"
+
+
+def _tables() -> Any:
+    import sqlalchemy as sa
+
+    metadata = sa.MetaData()
+    sa.Table(
+        "recordings",
+        metadata,
+        sa.Column("id", sa.Integer, primary_key=True),
+        sa.Column("content_hash", sa.String(64), nullable=False, unique=True),
+        sa.Column("name", sa.String(512), nullable=False),
+        sa.Column("samples", sa.BigInteger, nullable=False),
+        sa.Column("sample_rate", sa.Float, nullable=False),
+        sa.Column("started_at", sa.DateTime(timezone=True), nullable=False),
+        sa.Column("complete", sa.Boolean, nullable=False, default=False),
+    )
+    sa.Table(
+        "windows",
+        metadata,
+        sa.Column("id", sa.Integer, primary_key=True),
+        sa.Column("recording_id", sa.Integer, sa.ForeignKey("recordings.id", ondelete="CASCADE"), nullable=False),
+        sa.Column("window", sa.Integer, nullable=False),
+        sa.Column("time", sa.DateTime(timezone=True), nullable=False),
+        sa.Column("speed", sa.Float, nullable=True),
+        sa.UniqueConstraint("recording_id", "window"),
+    )
+    sa.Table(
+        "window_values",
+        metadata,
+        sa.Column("window_id", sa.Integer, sa.ForeignKey("windows.id", ondelete="CASCADE"), primary_key=True),
+        sa.Column("section", sa.String(128), primary_key=True),
+        sa.Column("quantity", sa.String(128), primary_key=True),
+        sa.Column("value", sa.Float, nullable=True),
+    )
+    return metadata
+
+
+@dataclass(frozen=True)
+class StoredRecording:
+    """A recording's row: its id and whether every window of it is stored."""
+
+    id: int
+    content_hash: str
+    name: str
+    started_at: dt.datetime
+    complete: bool
+
+
+class TrendStore:
+    """The trend database of a monitoring installation.
+
+    Parameters
+    ----------
+    url : str or Path
+        A SQLAlchemy URL (``sqlite:///path/monitor.sqlite``,
+        ``postgresql+psycopg://user:password@host:5432/name``), or the path of a SQLite file.
+
+    Raises
+    ------
+    InputError
+        ``"db"`` when the database cannot be reached (with the driver's reason, one line).
+    """
+
+    def __init__(self, url: str | Path) -> None:
+        import sqlalchemy as sa
+
+        text = str(url)
+        if "://" not in text:
+            text = f"sqlite:///{Path(text).resolve()}"
+        self.url = text
+        try:
+            self._engine = sa.create_engine(text, future=True)
+            self._metadata = _tables()
+            self._metadata.create_all(self._engine)
+        except Exception as error:  # the drivers raise their own kinds; the user needs one line
+            reason = str(getattr(error, "orig", None) or error).strip().splitlines()[0]
+            raise InputError("db", _hide_password(text), "", f"a database that can be reached ({reason})") from None
+        self._recordings = self._metadata.tables["recordings"]
+        self._windows = self._metadata.tables["windows"]
+        self._values = self._metadata.tables["window_values"]
+
+    def close(self) -> None:
+        """Release the connection pool."""
+        self._engine.dispose()
+
+    def __enter__(self) -> TrendStore:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # -- recordings --------------------------------------------------------------------
+    def recording(
+        self, content_hash: str, name: str, samples: int, sample_rate: float, started_at: dt.datetime
+    ) -> StoredRecording:
+        """The row of a recording, added if it is new (an existing one is returned as it is,
+        so a recording processed before, under any name, is recognised)."""
+        import sqlalchemy as sa
+
+        with self._engine.begin() as connection:
+            row = connection.execute(
+                sa.select(self._recordings).where(self._recordings.c.content_hash == content_hash)
+            ).first()
+            if row is None:
+                connection.execute(
+                    self._recordings.insert().values(
+                        content_hash=content_hash,
+                        name=name,
+                        samples=int(samples),
+                        sample_rate=float(sample_rate),
+                        started_at=_aware(started_at),
+                        complete=False,
+                    )
+                )
+                row = connection.execute(
+                    sa.select(self._recordings).where(self._recordings.c.content_hash == content_hash)
+                ).first()
+        assert row is not None
+        return StoredRecording(row.id, row.content_hash, row.name, _aware(row.started_at), bool(row.complete))
+
+    def windows_done(self, recording: StoredRecording) -> set[int]:
+        """Numbers of the windows of ``recording`` already stored."""
+        import sqlalchemy as sa
+
+        with self._engine.connect() as connection:
+            rows = connection.execute(
+                sa.select(self._windows.c.window).where(self._windows.c.recording_id == recording.id)
+            )
+            return {int(r.window) for r in rows}
+
+    def add_window(
+        self,
+        recording: StoredRecording,
+        window: int,
+        time: dt.datetime,
+        values: Mapping[tuple[str, str], float],
+        speed: float | None = None,
+    ) -> bool:
+        """Store one window and its values in one transaction; False (nothing written) when
+        that window of that recording is already stored."""
+        import sqlalchemy as sa
+
+        with self._engine.begin() as connection:
+            exists = connection.execute(
+                sa.select(self._windows.c.id).where(
+                    (self._windows.c.recording_id == recording.id) & (self._windows.c.window == int(window))
+                )
+            ).first()
+            if exists is not None:
+                return False
+            result = connection.execute(
+                self._windows.insert().values(
+                    recording_id=recording.id,
+                    window=int(window),
+                    time=_aware(time),
+                    speed=None if speed is None else float(speed),
+                )
+            )
+            key = result.inserted_primary_key
+            assert key is not None
+            window_id = key[0]
+            rows = [
+                {"window_id": window_id, "section": s, "quantity": q, "value": _finite_or_none(v)}
+                for (s, q), v in values.items()
+            ]
+            if rows:
+                connection.execute(self._values.insert(), rows)
+        return True
+
+    def mark_complete(self, recording: StoredRecording) -> None:
+        """Record that every window of ``recording`` is stored."""
+        with self._engine.begin() as connection:
+            connection.execute(
+                self._recordings.update().where(self._recordings.c.id == recording.id).values(complete=True)
+            )
+
+    def recordings(self) -> list[StoredRecording]:
+        """Every recording, oldest first."""
+        import sqlalchemy as sa
+
+        with self._engine.connect() as connection:
+            rows = connection.execute(sa.select(self._recordings).order_by(self._recordings.c.started_at))
+            return [StoredRecording(r.id, r.content_hash, r.name, _aware(r.started_at), bool(r.complete)) for r in rows]
+
+    # -- series ------------------------------------------------------------------------
+    def series(self, quantity: str, section: str | None = None) -> Any:
+        """A quantity over time as a pandas DataFrame (``time``, ``recording``, ``window``,
+        ``section``, ``speed``, ``value``), oldest first; one section or all."""
+        import pandas as pd
+        import sqlalchemy as sa
+
+        w, v, r = self._windows, self._values, self._recordings
+        query = (
+            sa.select(
+                w.c.time,
+                r.c.name.label("recording"),
+                w.c.window,
+                v.c.section,
+                w.c.speed,
+                v.c.value,
+            )
+            .join(v, v.c.window_id == w.c.id)
+            .join(r, r.c.id == w.c.recording_id)
+            .where(v.c.quantity == quantity)
+            .order_by(w.c.time, v.c.section)
+        )
+        if section is not None:
+            query = query.where(v.c.section == section)
+        with self._engine.connect() as connection:
+            frame = pd.DataFrame(connection.execute(query).mappings().all())
+        if frame.empty:
+            return pd.DataFrame(columns=["time", "recording", "window", "section", "speed", "value"])
+        frame["time"] = pd.to_datetime(frame["time"], utc=True)
+        return frame
+
+    def quantities(self) -> list[tuple[str, str]]:
+        """Every (section, quantity) stored."""
+        import sqlalchemy as sa
+
+        with self._engine.connect() as connection:
+            rows = connection.execute(
+                sa.select(self._values.c.section, self._values.c.quantity)
+                .distinct()
+                .order_by(self._values.c.section, self._values.c.quantity)
+            )
+            return [(r.section, r.quantity) for r in rows]
+
+
+@dataclass(frozen=True)
+class LambdaAlarm:
+    """A stretch of time with the film parameter below its threshold.
+
+    Attributes
+    ----------
+    section : str
+    start, end : datetime
+        First and last window below the threshold.
+    lowest : float
+        Smallest film parameter in the stretch.
+    """
+
+    section: str
+    start: dt.datetime
+    end: dt.datetime
+    lowest: float
+
+    @property
+    def duration(self) -> dt.timedelta:
+        return self.end - self.start
+
+
+def lambda_alarms(
+    times: Iterable[dt.datetime],
+    values: Iterable[float],
+    threshold: float = 1.0,
+    min_duration: dt.timedelta = dt.timedelta(minutes=10),
+    section: str = "",
+) -> list[LambdaAlarm]:
+    """Stretches of consecutive windows with ``values`` (a film parameter, lambda) below
+    ``threshold`` lasting at least ``min_duration`` (from the first to the last window
+    below). A missing value (NaN) ends a stretch."""
+    stamps = list(times)
+    series = np.asarray(list(values), dtype=float)
+    if series.size != len(stamps):
+        raise ValueError("times and values differ in length")
+    below = series < threshold
+    alarms: list[LambdaAlarm] = []
+    start = None
+    for k in range(series.size + 1):
+        if k < series.size and below[k]:
+            if start is None:
+                start = k
+            continue
+        if start is not None:
+            stop = k - 1
+            if stamps[stop] - stamps[start] >= min_duration:
+                alarms.append(LambdaAlarm(section, stamps[start], stamps[stop], float(series[start : stop + 1].min())))
+            start = None
+    return alarms
+
+
+@dataclass(frozen=True)
+class TrendCrossing:
+    """A linear trend of a quantity and where it crosses a limit.
+
+    Attributes
+    ----------
+    slope : float
+        Change per day (the quantity's unit per day).
+    value_now : float
+        The trend's value at the last sample.
+    crossing : datetime or None
+        When the trend reaches the limit: None when it moves away from it (or is flat), the
+        last sample's time when it is already past it.
+    """
+
+    slope: float
+    value_now: float
+    crossing: dt.datetime | None
+
+
+def trend_crossing(times: Iterable[dt.datetime], values: Iterable[float], limit: float) -> TrendCrossing:
+    """Least-squares straight line through ``values`` against time and the date it reaches
+    ``limit`` coming down (a smallest film falling towards its limit).
+
+    Raises
+    ------
+    ValueError
+        Fewer than two finite samples, or all at one time.
+    """
+    stamps = list(times)
+    series = np.asarray(list(values), dtype=float)
+    keep = np.isfinite(series)
+    if keep.sum() < 2:
+        raise ValueError("a trend needs two finite samples or more")
+    origin = stamps[0]
+    days = np.array([(t - origin).total_seconds() / 86400.0 for t in stamps])[keep]
+    if np.ptp(days) == 0.0:
+        raise ValueError("a trend needs samples at two times or more")
+    slope, intercept = np.polyfit(days, series[keep], 1)
+    last = float(days.max())
+    now = float(slope * last + intercept)
+    if now <= limit:
+        crossing: dt.datetime | None = origin + dt.timedelta(days=last)
+    elif slope < 0.0:
+        crossing = origin + dt.timedelta(days=(limit - intercept) / slope)
+    else:
+        crossing = None
+    return TrendCrossing(float(slope), now, crossing)
+
+
+def _aware(moment: dt.datetime) -> dt.datetime:
+    """A time with a time zone (UTC where it had none: SQLite keeps none)."""
+    return moment if moment.tzinfo is not None else moment.replace(tzinfo=dt.UTC)
+
+
+def _finite_or_none(value: float) -> float | None:
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
+def _hide_password(url: str) -> str:
+    """A URL as it may be shown: the password replaced by ***."""
+    try:
+        from sqlalchemy.engine import make_url
+
+        return make_url(url).render_as_string(hide_password=True)
+    except Exception:
+        return url

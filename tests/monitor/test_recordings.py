@@ -1,0 +1,130 @@
+"""Readers of probe recordings (CSV, Parquet, HDF5, TDMS): the same samples in any format,
+in blocks of any size from any start, and the faults a user meets (issue 13)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from shaftline.errors import InputError
+from shaftline.monitor.recordings import content_hash, open_recording
+
+RATE = 2000.0
+SAMPLES = 1000
+NAMES = ("p315", "p45", "p180", "kp")
+
+
+def _data() -> np.ndarray:
+    rng = np.random.default_rng(7)
+    return rng.normal(size=(SAMPLES, len(NAMES)))
+
+
+def _write(path, data: np.ndarray) -> None:
+    suffix = path.suffix
+    if suffix == ".csv":
+        import pandas as pd
+
+        frame = pd.DataFrame(data, columns=list(NAMES))
+        frame.insert(0, "time", np.arange(SAMPLES) / RATE)
+        # repr-exact floats so the CSV round trip is exact
+        frame.to_csv(path, index=False, float_format="%.17g")
+    elif suffix == ".parquet":
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        table = pa.table({n: data[:, k] for k, n in enumerate(NAMES)})
+        table = table.replace_schema_metadata({"sample_rate": str(RATE)})
+        pq.write_table(table, path, row_group_size=300)
+    elif suffix == ".h5":
+        import h5py
+
+        with h5py.File(path, "w") as file:
+            file.attrs["sample_rate"] = RATE
+            for k, n in enumerate(NAMES):
+                file.create_dataset(f"probes/{n}", data=data[:, k])
+    elif suffix == ".tdms":
+        from nptdms import ChannelObject, TdmsWriter
+
+        with TdmsWriter(path) as writer:
+            writer.write_segment(
+                [
+                    ChannelObject("probes", n, data[:, k], properties={"wf_increment": 1.0 / RATE})
+                    for k, n in enumerate(NAMES)
+                ]
+            )
+
+
+def _columns(suffix: str) -> list[str]:
+    prefix = "probes/" if suffix in (".h5", ".tdms") else ""
+    return [prefix + n for n in NAMES[:3]]
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".parquet", ".h5", ".tdms"])
+@pytest.mark.parametrize("size, start", [(1000, 0), (128, 0), (77, 450)])
+def test_every_format_gives_the_same_samples_in_blocks(tmp_path, suffix, size, start):
+    data = _data()
+    path = tmp_path / f"rec{suffix}"
+    _write(path, data)
+    recording = open_recording(path)
+    columns = _columns(suffix)
+    assert recording.samples == SAMPLES
+    assert recording.sample_rate(columns) == pytest.approx(RATE, rel=1e-9)
+    firsts, blocks = zip(*recording.blocks(columns, size=size, start=start), strict=True)
+    assert all(b.shape[0] == size for b in blocks[:-1]) and 0 < blocks[-1].shape[0] <= size
+    assert list(firsts) == list(range(start, SAMPLES, size))
+    np.testing.assert_array_equal(np.concatenate(blocks), data[start:, :3])
+
+
+def test_the_content_hash_names_the_bytes_not_the_file(tmp_path):
+    data = _data()
+    _write(tmp_path / "a.parquet", data)
+    (tmp_path / "b.parquet").write_bytes((tmp_path / "a.parquet").read_bytes())
+    _write(tmp_path / "c.parquet", data[::-1].copy())
+    assert content_hash(tmp_path / "a.parquet") == content_hash(tmp_path / "b.parquet")
+    assert content_hash(tmp_path / "a.parquet") != content_hash(tmp_path / "c.parquet")
+
+
+def test_a_missing_channel_is_named_with_the_channels_there(tmp_path):
+    _write(tmp_path / "rec.csv", _data())
+    with pytest.raises(InputError) as error:
+        list(open_recording(tmp_path / "rec.csv").blocks(["p315", "p90"]))
+    assert error.value.field == "channels" and "p90" in str(error.value) and "p45" in str(error.value)
+
+
+def test_channels_at_different_rates_are_refused(tmp_path):
+    from nptdms import ChannelObject, TdmsWriter
+
+    path = tmp_path / "rec.tdms"
+    with TdmsWriter(path) as writer:
+        writer.write_segment(
+            [
+                ChannelObject("probes", "a", np.zeros(10), properties={"wf_increment": 1e-3}),
+                ChannelObject("probes", "b", np.zeros(10), properties={"wf_increment": 5e-4}),
+            ]
+        )
+    with pytest.raises(InputError, match="one sample rate"):
+        open_recording(path).sample_rate(["probes/a", "probes/b"])
+
+
+def test_a_rate_given_must_agree_with_the_file_and_is_needed_without_one(tmp_path):
+    data = _data()
+    _write(tmp_path / "rec.parquet", data)
+    recording = open_recording(tmp_path / "rec.parquet")
+    with pytest.raises(InputError) as error:
+        recording.sample_rate(["p315"], given=1000.0)
+    assert error.value.field == "sample_rate" and "2000" in str(error.value)
+    import pandas as pd
+
+    pd.DataFrame(data, columns=list(NAMES)).to_csv(tmp_path / "bare.csv", index=False)
+    bare = open_recording(tmp_path / "bare.csv")
+    with pytest.raises(InputError, match="does not state one"):
+        bare.sample_rate(["p315"])
+    assert bare.sample_rate(["p315"], given=500.0) == 500.0
+
+
+def test_unknown_or_missing_files_are_one_line_errors(tmp_path):
+    (tmp_path / "rec.wav").write_bytes(b"RIFF")
+    with pytest.raises(InputError, match=r"\.tdms"):
+        open_recording(tmp_path / "rec.wav")
+    with pytest.raises(InputError, match="existing file"):
+        open_recording(tmp_path / "none.csv")

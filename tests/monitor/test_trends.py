@@ -1,0 +1,147 @@
+"""The trend store (SQLite, and a real PostgreSQL server) and the alarms (issue 13)."""
+
+from __future__ import annotations
+
+import datetime as dt
+import os
+import shutil
+import socket
+import subprocess
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from shaftline.errors import InputError
+from shaftline.monitor.trends import TrendStore, lambda_alarms, trend_crossing
+
+START = dt.datetime(2026, 11, 1, 8, 0, tzinfo=dt.UTC)
+
+
+def _fill(store: TrendStore, content_hash: str = "a" * 64, windows: range = range(6), fail_at: int | None = None):
+    recording = store.recording(content_hash, "run1.tdms", 600_000, 10_000.0, START)
+    for k in windows:
+        if k in store.windows_done(recording):
+            continue
+        if k == fail_at:
+            raise KeyboardInterrupt
+        values = {("aft", "min_film_thickness"): 40e-6 - 1e-6 * k, ("aft", "lambda"): 3.0 - 0.5 * k}
+        values[("fore", "min_film_thickness")] = 80e-6
+        store.add_window(recording, k, START + dt.timedelta(minutes=10 * k), values, speed=9.4)
+    return recording
+
+
+def _round_trip(store: TrendStore) -> None:
+    recording = _fill(store)
+    # The same bytes again (another file name): recognised, nothing added.
+    again = store.recording("a" * 64, "copy-of-run1.tdms", 600_000, 10_000.0, START)
+    assert again.id == recording.id and again.name == "run1.tdms"
+    assert not store.add_window(again, 2, START, {("aft", "lambda"): 9.0})
+    assert store.windows_done(recording) == set(range(6))
+    series = store.series("min_film_thickness", "aft")
+    assert len(series) == 6
+    np.testing.assert_allclose(series["value"], 40e-6 - 1e-6 * np.arange(6))
+    assert series["time"].iloc[-1].to_pydatetime() == START + dt.timedelta(minutes=50)
+    assert len(store.series("min_film_thickness")) == 12
+    assert store.quantities() == [("aft", "lambda"), ("aft", "min_film_thickness"), ("fore", "min_film_thickness")]
+    store.mark_complete(recording)
+    assert store.recordings()[0].complete
+
+
+def test_sqlite_round_trip(tmp_path):
+    with TrendStore(tmp_path / "monitor.sqlite") as store:
+        _round_trip(store)
+
+
+def test_an_interrupted_run_keeps_whole_windows_and_resumes(tmp_path):
+    path = tmp_path / "monitor.sqlite"
+    with TrendStore(path) as store, pytest.raises(KeyboardInterrupt):
+        _fill(store, fail_at=3)
+    with TrendStore(path) as store:  # a new run, as after Ctrl-C
+        recording = store.recording("a" * 64, "run1.tdms", 600_000, 10_000.0, START)
+        assert store.windows_done(recording) == {0, 1, 2}
+        assert len(store.series("lambda", "aft")) == 3
+        _fill(store)
+        assert store.windows_done(recording) == set(range(6))
+        assert len(store.series("lambda", "aft")) == 6
+
+
+def test_a_database_that_cannot_be_reached_is_one_line(tmp_path):
+    with pytest.raises(InputError) as error:
+        TrendStore("postgresql+psycopg://someone:secret@127.0.0.1:9/none?connect_timeout=2")
+    message = str(error.value)
+    assert error.value.field == "db" and "\n" not in message and "secret" not in message
+    with pytest.raises(InputError):
+        TrendStore(f"sqlite:///{tmp_path}/no/such/folder/monitor.sqlite")
+
+
+def test_lambda_alarm_needs_the_stretch_to_last():
+    times = [START + dt.timedelta(minutes=5 * k) for k in range(10)]
+    values = [3, 0.8, 0.7, 0.9, 2, 0.5, 2, 0.9, 0.8, float("nan")]
+    alarms = lambda_alarms(times, values, threshold=1.0, min_duration=dt.timedelta(minutes=10), section="aft")
+    # 1-3 (10 min) counts; 5 alone (0 min) and 7-8 (5 min) do not.
+    assert [(a.start, a.end, a.lowest) for a in alarms] == [(times[1], times[3], 0.7)]
+    assert alarms[0].duration == dt.timedelta(minutes=10)
+
+
+def test_trend_crossing_of_a_falling_line():
+    """A straight line falling 1 um a day from 40 um reaches 30 um on day 10 exactly."""
+    times = [START + dt.timedelta(days=k) for k in range(5)]
+    fit = trend_crossing(times, [40e-6 - 1e-6 * k for k in range(5)], limit=30e-6)
+    assert fit.slope == pytest.approx(-1e-6)
+    assert abs((fit.crossing - (START + dt.timedelta(days=10))).total_seconds()) < 1.0
+    rising = trend_crossing(times, [40e-6 + 1e-6 * k for k in range(5)], limit=30e-6)
+    assert rising.crossing is None
+    past = trend_crossing(times, [29e-6] * 5, limit=30e-6)
+    assert past.crossing == times[-1]
+
+
+# -- a real PostgreSQL server --------------------------------------------------------------
+def _server_binaries() -> Path | None:
+    for candidate in sorted(Path("/usr/lib/postgresql").glob("*/bin"), reverse=True):
+        if (candidate / "initdb").exists() and (candidate / "pg_ctl").exists():
+            return candidate
+    found = shutil.which("initdb")
+    return Path(found).parent if found and shutil.which("pg_ctl") else None
+
+
+@pytest.fixture(scope="module")
+def postgres_url():
+    """A PostgreSQL server of Debian's package, started for this module on a Unix socket in a
+    temporary folder and stopped after it (as the user ``postgres`` when the tests run as
+    root, which initdb refuses; the folder is then its own, outside pytest's, which only
+    root may enter)."""
+    binaries = _server_binaries()
+    if binaries is None:
+        pytest.skip("no PostgreSQL server here (Debian's package postgresql; `make test` installs it where it can)")
+    folder = Path(tempfile.mkdtemp(prefix="shaftline-postgres-"))
+    prefix: list[str] = []
+    if os.geteuid() == 0:
+        if shutil.which("runuser") is None:
+            pytest.skip("running as root without runuser: initdb cannot run as root")
+        prefix = ["runuser", "-u", "postgres", "--"]
+        shutil.chown(folder, "postgres")
+    data = folder / "data"
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    run = dict(check=True, capture_output=True, text=True, timeout=120)
+    initdb, pg_ctl = str(binaries / "initdb"), str(binaries / "pg_ctl")
+    options = f"-p {port} -k {folder} -c listen_addresses='' -c fsync=off"
+    try:
+        subprocess.run([*prefix, initdb, "-D", str(data), "-A", "trust", "-U", "shaftline", "--no-sync"], **run)
+        log = str(folder / "log")
+        subprocess.run([*prefix, pg_ctl, "-D", str(data), "-o", options, "-l", log, "-w", "start"], **run)
+        yield f"postgresql+psycopg://shaftline@/postgres?host={folder}&port={port}"
+    finally:
+        subprocess.run([*prefix, pg_ctl, "-D", str(data), "-m", "immediate", "stop"], capture_output=True, timeout=120)
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def test_postgresql_round_trip(postgres_url):
+    """The same store on a real PostgreSQL server: one URL is the only difference."""
+    with TrendStore(postgres_url) as store:
+        _round_trip(store)
+    with TrendStore(postgres_url) as store:  # a second connection sees the committed rows
+        assert len(store.series("lambda")) == 6
