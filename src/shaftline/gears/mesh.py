@@ -276,16 +276,21 @@ class PathOfContact:
     sliding_speed: np.ndarray
 
 
-def path_of_contact(pair: GearPair, pinion_speed: float | np.ndarray, points: int = 200) -> PathOfContact:
+def path_of_contact(
+    pair: GearPair, pinion_speed: float | np.ndarray, points: int = 200, positions: np.ndarray | None = None
+) -> PathOfContact:
     """Radii of curvature and surface speeds at ``points`` positions from A to E, for pinion
     speeds (rad/s) broadcast against a last axis of positions (a speed array of shape (n, 1)
-    gives (n, points))."""
-    if points < 2:
+    gives (n, points)). ``positions`` (rho_1, m, within A..E) replaces the even spacing."""
+    if positions is None and points < 2:
         raise InputError("points", points, "", ">= 2")
     omega_1 = np.asarray(pinion_speed, dtype=float)
     if np.any(~(omega_1 > 0)):
         raise InputError("pinion_speed", float(np.ravel(omega_1)[0]), "rad/s", "> 0")
-    rho_1 = np.linspace(pair.start_of_contact, pair.end_of_contact, points)
+    if positions is None:
+        rho_1 = np.linspace(pair.start_of_contact, pair.end_of_contact, points)
+    else:
+        rho_1 = np.asarray(positions, dtype=float)
     rho_2 = pair.line_of_action - rho_1
     omega_2 = omega_1 * pair.teeth_1 / pair.teeth_2
     v1 = omega_1 * rho_1
