@@ -61,12 +61,15 @@ SI_UNITS: dict[str, str] = {
     "memory": "byte",
     # surface speed of a contact (issue 14); "speed" is a shaft's angular speed
     "velocity": "m/s",
+    # C of seed 002's scuffing parameter (issue 14)
+    "thermal_conductivity": "W/(m*K)",
 }
 
 #: How an SI unit is written in messages and tables.
 UNIT_TEXT: dict[str, str] = {
     "percent": "%",
     "byte": "B",
+    "W/(m*K)": "W/(m K)",
     "m**2/s": "m^2/s",
     "kg/m**3": "kg/m^3",
     "m**3/s": "m^3/s",
