@@ -42,6 +42,10 @@ def test_fzg_case_ranks_the_stages_alike_and_calibrate_option_replaces_the_recor
     safety = [row[0] for row in gears["iso"]["safety"]]
     assert sorted(range(12), key=lambda k: sp[k]) == sorted(range(12), key=lambda k: -safety[k]) == list(range(12))
     assert sp[5] == pytest.approx(1.0)  # the record fails at stage 6
+    # ISO at the oil's failure stage (6, as the case assumes): near 1 by both methods (theory 17.3)
+    assert safety[5] == pytest.approx(1.0, abs=0.2) and gears["iso_integral"]["safety"][5][0] == pytest.approx(
+        1.0, abs=0.2
+    )
     # --calibrate: a record failing at stage 8 instead
     record = tmp_path / "stage8.csv"
     rows = [f"{t},2170,90,{int(k == 7)}" for k, t in enumerate([3.3, 13.7, 35.3, 60.8, 94.1, 135.3, 183.4, 239.3])]
@@ -103,3 +107,21 @@ def test_bad_test_record(tmp_path, record, message):
     assert result.exit_code == 2, result.stdout
     assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1
     assert not out.exists()
+
+
+def test_a_load_distribution_table_replaces_isos_load_sharing(tmp_path):
+    text = SEED.read_text() + "\n[gears.load_sharing]\nfraction = [0.0, 0.5, 1.0]\nshare = [0.5, 1.0, 0.5]\n"
+    shutil.copy(SEED.parent / "gears_scuffing_test.csv", tmp_path)
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    result = invoke("gears", "scuffing", str(case), "--json", "-")
+    assert result.exit_code == 0, result.stderr
+    gears = json.loads(result.stdout)["gears"]
+    share, rho = gears["path"]["share"], gears["path"]["position"]
+    t = [(x - rho[0]) / (rho[-1] - rho[0]) for x in rho]
+    assert gears["load_sharing"] == "table"
+    assert share == pytest.approx([0.5 + (0.5 - abs(x - 0.5)) for x in t], rel=1e-12)
+    bad = text.replace("share = [0.5, 1.0, 0.5]", "share = [0.5, 1.0]")
+    case.write_text(bad)
+    result = invoke("gears", "scuffing", str(case))
+    assert result.exit_code == 2 and "gears.load_sharing.share = 2: allowed 3 values" in result.stderr

@@ -11,6 +11,7 @@ from shaftline.contact.lubricated import ContactModel, Surfaces
 from shaftline.contact.rheology import contact_lubricant
 from shaftline.errors import InputError
 from shaftline.gears.flash import IsoScuffingData, flash_temperature, iso_scuffing, unit_load
+from shaftline.gears.integral import contact_ratio_factor, integral_temperature
 from shaftline.gears.loading import iso_load_sharing, normal_load_per_length, tabulated_load_sharing
 from shaftline.gears.mesh import GearPair
 from shaftline.gears.scuffing import GearMesh, calibrate, evaluate_mesh, scuffing_parameter
@@ -22,9 +23,11 @@ FZG_SPEED = 2170 * math.pi / 30  # pinion, rad/s: 8.3 m/s at the 73.2 mm working
 
 
 def fzg_a() -> GearPair:
+    # FZG test gear type A (ISO 14635-1): z 16/24, m 4.5 mm, x 0.8635/-0.5 (the wheel beyond the
+    # rack's undercut limit -0.404), a 91.5 mm, b 20 mm, tip diameters 88.77 and 112.5 mm
     return GearPair(
-        16, 24, 4.5e-3, 20 * DEG, 20e-3, shift_1=0.1817, shift_2=0.1715,
-        centre_distance=91.5e-3, tip_radius_1=82.46e-3 / 2, tip_radius_2=118.36e-3 / 2,
+        16, 24, 4.5e-3, 20 * DEG, 20e-3, shift_1=0.8635, shift_2=-0.5, centre_distance=91.5e-3,
+        tip_radius_1=88.77e-3 / 2, tip_radius_2=112.5e-3 / 2, allow_undercut=True,
     )  # fmt: skip
 
 
@@ -158,12 +161,34 @@ def test_iso_flash_temperature_rises_with_torque_and_speed():
 
 def test_fzg_failure_stage_against_the_iso_safety_factor():
     # The scuffing temperature comes from the FZG A/8.3/90 stage at which the oil fails, so at
-    # that stage of the FZG test itself S_B should be near 1 (issue 14). What the coded chain
-    # gives (docs/validation.md): 1.25 at stage 4 rising to 1.9 at stage 12, i.e. on the safe
-    # side by a factor that grows with the stage. The test pins that band so a change is seen.
+    # that stage of the FZG test itself S_B should be near 1 (issue 14). The coded chain gives
+    # 0.74 (stage 4), 0.89, 0.98, 1.04, 1.08, 1.12, 1.15, 1.17, 1.19 (stage 12) - docs/validation.md.
+    # Tolerance: within 0.3 of 1 from stage 4 on (the bulk-temperature and friction estimates of
+    # the method are of that order, and stages 4-5 fail only with the weakest oils); near 1
+    # within 0.2 for stages 6-12, where reference oils fail.
     safety = np.array([float(fzg_rating(k).safety[k - 1]) for k in range(4, 13)])
-    assert np.all((safety > 1.1) & (safety < 2.0))
-    assert np.all(np.diff(safety) > 0)
+    assert np.all(np.abs(safety - 1.0) < 0.3)
+    assert np.all(np.abs(safety[2:] - 1.0) < 0.2)
+
+
+def test_integral_temperature_at_the_fzg_failure_stage():
+    # ISO/TS 6336-21 on the same test: theta_intS is built from the FZG failure stage, so S_intS
+    # at that stage should be near 1: 0.92 (stage 4) ... 1.17 (stage 12) - within 0.2.
+    pair = fzg_a()
+    eta = float(contact_lubricant("FVA 3").dynamic_viscosity(90.0))
+    for k in range(4, 13):
+        rating = integral_temperature(
+            pair, IsoScuffingData(k, roughness_ra=0.3e-6), FZG_TORQUE, FZG_SPEED, 90.0, eta, 95e-6
+        )
+        assert abs(float(rating.safety[k - 1]) - 1.0) < 0.2
+        assert np.all(np.diff(rating.safety) < 0) and np.all(np.diff(rating.integral) > 0)
+
+
+def test_contact_ratio_factor_branches_meet():
+    # X_eps of ISO/TR 13989-2 Eq. 39-44 is continuous where its branches meet (the branches are
+    # fits of one weighted mean): at eps_alpha = 1 and at eps_1 = 1, to 2 %
+    assert contact_ratio_factor(0.5, 0.4999999) == pytest.approx(contact_ratio_factor(0.5, 0.5000001), rel=0.02)
+    assert contact_ratio_factor(0.9999999, 0.6) == pytest.approx(contact_ratio_factor(1.0000001, 0.6), rel=0.02)
 
 
 def test_sp_and_iso_rank_the_fzg_load_stages_alike():

@@ -135,6 +135,7 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
                 **{name: _numbers(getattr(state.contact, name)[top, 0]) for name in PATH_FIELDS},
             },
             "iso": None,
+            "iso_integral": None,
         }
         if result.calibrated_at is not None and study.calibration is not None:
             torque, speed, t0, integral = result.calibrated_at
@@ -158,6 +159,17 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
                 "safety": _numbers(iso.safety),
                 "flash_along_path": _numbers(iso.flash[top, 0]),
             }
+        rating = result.integral
+        if rating is not None:
+            out["iso_integral"] = {
+                "mean_friction": _numbers(rating.friction),
+                "flash_tip": _numbers(rating.flash_tip),
+                "flash_integral": _numbers(rating.flash_integral),
+                "bulk_temperature": _numbers(rating.bulk),
+                "integral_temperature": _numbers(rating.integral),
+                "scuffing_integral_temperature": rating.scuffing_integral,
+                "safety": _numbers(rating.safety),
+            }
         return out
 
     def _table(self, result: GearResult) -> Table:
@@ -176,10 +188,12 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
             ]
             if result.iso is not None:
                 row += [f"{float(result.iso.contact_max[k, 0]):.0f}", f"{float(result.iso.safety[k, 0]):.2f}"]
+            if result.integral is not None:
+                row.append(f"{float(result.integral.safety[k, 0]):.2f}")
             rows.append(row)
         headers = ["pinion torque [N m]", "max p_H [GPa]", "min Lambda", "max f", "SP", "seed 002"]
         if result.iso is not None:
-            headers += ["ISO θ_Bmax [°C]", "ISO S_B"]
+            headers += ["ISO θ_Bmax [°C]", "ISO S_B", "ISO S_intS"]
         speed = float(study.speeds[0]) * 30.0 / math.pi
         return Table(
             headers,
@@ -239,9 +253,9 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
             self._table(result),
             Paragraph(f"Lubricant data: {result.study.mesh.model.lubricant.source}", "note"),
             Paragraph(
-                "SP: seed 002 Eq. 7 as read in docs/theory.md 17.2; ISO: flash-temperature method with coefficients "
-                "as transcribed (theory 17.3; at the FZG test itself it rates the oil's failure stage at S_B 1.25-1.9, "
-                "on the safe side).",
+                "SP: seed 002 Eq. 7 as read in docs/theory.md 17.2; ISO: flash-temperature (S_B, TS 6336-20) and "
+                "integral-temperature (S_intS, TS 6336-21; a ratio of absolute temperatures, < 1 high risk, 1-2 "
+                "critical) methods with coefficients as transcribed (theory 17.3, 17.5).",
                 "note",
             ),
             Figure(

@@ -34,7 +34,7 @@ if TYPE_CHECKING:
     from shaftline.gears.study import GearStudy
 
 _SEED = "seed 002"
-_FZG = "FZG type A gears (ISO 14635-1)"
+_FZG = "FZG test gears (ISO 14635-1)"
 MODULE = Plausible(
     3e-4, 0.05, f"fine-pitch gears (0.3 mm) to large marine gears (about 40 mm); {_SEED} 5 mm, {_FZG} 4.5 mm"
 )
@@ -100,6 +100,8 @@ class PairSection(Section):
         None
     )
     """Tip diameters of pinion and wheel when not standard (shortened tips)."""
+    allow_undercut: StrictBool = False
+    """Accept shifts below the rack's undercut limit (teeth cut with undercut, e.g. the FZG type A wheel)."""
 
 
 class FlankSection(Section):
@@ -152,7 +154,8 @@ class LoadSharingSection(Section):
 
 
 class IsoSection(Section):
-    """ISO/TS 6336-20 flash-temperature method (docs/theory.md 17.3)."""
+    """ISO/TS 6336-20 flash-temperature and ISO/TS 6336-21 integral-temperature methods (docs/theory.md
+    17.3, 17.5)."""
 
     fzg_load_stage: Annotated[float, Quantity("dimensionless", ge=1, le=14)]
     """Load stage at which the oil scuffs in the FZG A/8.3/90 test (its data sheet)."""
@@ -210,7 +213,7 @@ class GearsSection(Section):
     load_sharing: LoadSharingSection | None = None
     """A load distribution along the path (default: ISO's load sharing without tip relief)."""
     iso: IsoSection | None = None
-    """ISO/TS 6336-20 flash-temperature method beside SP (optional)."""
+    """ISO/TS 6336-20 and -21 (flash and integral temperature) beside SP (optional)."""
 
     @model_validator(mode="after")
     def _coefficient(self) -> GearsSection:
@@ -244,6 +247,7 @@ def _pair(section: PairSection) -> object:
             centre_distance=section.centre_distance,
             tip_radius_1=None if tips is None else tips[0] / 2.0,
             tip_radius_2=None if tips is None else tips[1] / 2.0,
+            allow_undercut=section.allow_undercut,
         )
     except InputError as error:
         field = _PAIR_FIELDS.get(error.field, f"pair.{error.field}")

@@ -79,6 +79,9 @@ class GearPair:
         Working centre distance; by default the one the shifts give.
     tip_radius_1, tip_radius_2 : float or None
         Tip radii when the teeth are not cut to the standard addendum (shortened tips).
+    allow_undercut : bool
+        Accept shifts below the undercut limit (teeth cut with undercut on purpose, as the FZG
+        type A wheel, x = -0.5 on 24 teeth); interference of the active flanks is still checked.
     """
 
     teeth_1: int
@@ -93,6 +96,7 @@ class GearPair:
     centre_distance: float | None = None
     tip_radius_1: float | None = None
     tip_radius_2: float | None = None
+    allow_undercut: bool = False
 
     def __post_init__(self) -> None:
         for name in ("teeth_1", "teeth_2"):
@@ -109,7 +113,7 @@ class GearPair:
             smallest = self.addendum - teeth * math.sin(self.transverse_pressure_angle) ** 2 / (
                 2.0 * math.cos(self.helix_angle)
             )
-            if shift < smallest - 1e-9:
+            if shift < smallest - 1e-9 and not self.allow_undercut:
                 raise InputError(
                     name,
                     shift,

@@ -16,6 +16,7 @@ from shaftline.contact.rheology import ExtrapolationWarning
 from shaftline.csvio import read_columns
 from shaftline.errors import InputError
 from shaftline.gears.flash import IsoScuffing, IsoScuffingData, iso_scuffing
+from shaftline.gears.integral import IntegralRating, integral_temperature
 from shaftline.gears.scuffing import GearMesh, MeshState, calibrate, evaluate_mesh, scuffing_parameter
 
 #: Columns of a torque-step test record.
@@ -116,6 +117,8 @@ class GearResult:
     sp : ndarray
         (torques, speeds).
     iso : IsoScuffing or None
+    integral : IntegralRating or None
+        ISO/TS 6336-21 (with ``iso``).
     warnings : tuple of str
     """
 
@@ -125,6 +128,7 @@ class GearResult:
     calibrated_at: tuple[float, float, float, float] | None
     sp: np.ndarray
     iso: IsoScuffing | None
+    integral: IntegralRating | None = None
     warnings: tuple[str, ...] = ()
 
 
@@ -142,14 +146,15 @@ def solve_gears(study: GearStudy, progress: Callable[[str], None] = lambda _: No
             k = record.failure
             t0 = float(record.oil_temperature[k])
             at = evaluate_mesh(mesh, float(record.torque[k]), float(record.speed[k]), t0)
-            integral = float(at.power_integral)
-            coefficient = calibrate(integral, study.critical_temperature, t0)
-            calibrated_at = (float(record.torque[k]), float(record.speed[k]), t0, integral)
+            power = float(at.power_integral)
+            coefficient = calibrate(power, study.critical_temperature, t0)
+            calibrated_at = (float(record.torque[k]), float(record.speed[k]), t0, power)
         assert coefficient is not None  # the case requires one or the other
         progress("the mesh along the path: torque steps x speeds")
         state = evaluate_mesh(mesh, study.torques[:, None, None], study.speeds[None, :, None], study.oil_temperature)
         sp = scuffing_parameter(state.power_integral, coefficient, study.critical_temperature, study.oil_temperature)
-        iso = None
+        iso: IsoScuffing | None = None
+        integral: IntegralRating | None = None
         if study.iso is not None:
             progress("ISO flash temperature")
             rho = mesh.positions()
@@ -164,5 +169,15 @@ def solve_gears(study: GearStudy, progress: Callable[[str], None] = lambda _: No
                 state.share,
                 rho,
             )
+            lubricant = mesh.model.lubricant.viscosity
+            integral = integral_temperature(
+                mesh.pair,
+                study.iso,
+                study.torques[:, None],
+                study.speeds[None, :],
+                study.oil_temperature,
+                viscosity,
+                float(lubricant.kinematic_viscosity(40.0)),
+            )
     notes = tuple(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, ExtrapolationWarning)))
-    return GearResult(study, state, float(coefficient), calibrated_at, sp, iso, notes)
+    return GearResult(study, state, float(coefficient), calibrated_at, sp, iso, integral, notes)
