@@ -59,7 +59,7 @@ def along_path(result: GearResult, *, ax: Any) -> Any:
 @figure_function(size=(9, 4.8))
 def sp_steps(result: GearResult, *, ax: Any) -> Any:
     """SP against the torque steps at the test speed, with the no-scuffing (< 0.7) and scuffing
-    (> 1) bands, and ISO's S_B on a second axis."""
+    (> 1) bands, and ISO's S_B (and S_intS) on a second axis."""
     torques = result.study.torques
     sp = result.sp[:, 0]
     top = max(float(sp.max()) * 1.1, 1.3)
@@ -72,9 +72,11 @@ def sp_steps(result: GearResult, *, ax: Any) -> Any:
     ax.set_ylabel("scuffing parameter SP [-]")
     if result.iso is not None:
         safety = ax.twinx()
-        safety.semilogy(torques, result.iso.safety[:, 0], "C3s--", label="ISO S_B")
+        safety.semilogy(torques, result.iso.safety[:, 0], "C3s--", label="ISO S_B (TS 6336-20)")
+        if result.integral is not None:
+            safety.semilogy(torques, result.integral.safety[:, 0], "C4^:", label="ISO S_intS (TS 6336-21)")
         safety.axhline(1.0, color="C3", lw=0.8, ls=":")
-        safety.set_ylabel("ISO/TS 6336-20 safety S_B [-]", color="C3")
+        safety.set_ylabel("ISO/TS 6336-20/-21 safety S_B, S_intS [-]", color="C3")
         safety.legend(fontsize=7, loc="upper center")
     ax.legend(fontsize=7, loc="upper left")
     ax.set_title(f"Scuffing against torque at {float(result.study.speeds[0]) * 30.0 / np.pi:.0f} rpm")
