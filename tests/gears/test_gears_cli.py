@@ -71,6 +71,8 @@ def test_fzg_case_ranks_the_stages_alike_and_calibrate_option_replaces_the_recor
         ('critical_temperature = "126 degC"', 'critical_temperature = "80 degC"', "gears.critical_temperature"),
         ('calibration = "gears_scuffing_test.csv"', "", "gears.thermal_coefficient = 'missing'"),
         ("[gears.iso]\nfzg_load_stage = 8", "[gears.iso]\nfzg_load_stage = 15", "gears.iso.fzg_load_stage = 15"),
+        # the light steps leave the fit range of seed 002 Eq. 6: without extrapolate an error naming it
+        ("extrapolate = true", "extrapolate = false", "allowed in [0.1, 1.8] Pa s GPa m/s where S > S_m"),
         ('torques = ["50 N*m",', 'fzg_load_stages = [3]\ntorques = ["50 N*m",', "gears.test.torques = 'both'"),
     ],
 )
