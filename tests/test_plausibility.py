@@ -341,6 +341,12 @@ NOT_CAUGHT = {
         ("contact.body_1.youngs_modulus", 1e-3): "a 206 MPa polymer",
         ("contact.body_2.youngs_modulus", 1e-3): "a 206 MPa polymer",
     },
+    # pinion torques span 0.1 N m (instrument gears) to MN m (marine main gears): x 1000 or / 1000
+    # of a test step is another gear's torque; a check against the pair's size is not coded (yet)
+    "gears_scuffing.toml": {
+        **{(f"gears.test.torques[{k}]", 1000.0): "a torque of larger gears" for k in range(10)},
+        **{(f"gears.test.torques[{k}]", 1e-3): "a torque of small gears" for k in range(1, 10)},
+    },
     "ntua_shaft_line.toml": {
         ("alignment.shaft.segments[0].length", 1e-3): "14.5 mm: the bearings fall off the shaft (refused by the model)",
     },

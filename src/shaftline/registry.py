@@ -32,6 +32,7 @@ CAPABILITY_MODULES: tuple[str, ...] = (
     "shaftline.wear.capability",
     "shaftline.cpp.capability",
     "shaftline.contact.capability",
+    "shaftline.gears.capability",
     # after film: [design] builds on [bearing] (Capability.needs)
     "shaftline.design.capability",
     "shaftline.monitor.capability",

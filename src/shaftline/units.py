@@ -63,12 +63,15 @@ SI_UNITS: dict[str, str] = {
     "velocity": "m/s",
     # output of a displacement probe per unit gap (shaftline.monitor): "8 mV/um"
     "sensitivity": "V/m",
+    # C of seed 002's scuffing parameter (issue 14)
+    "thermal_conductivity": "W/(m*K)",
 }
 
 #: How an SI unit is written in messages and tables.
 UNIT_TEXT: dict[str, str] = {
     "percent": "%",
     "byte": "B",
+    "W/(m*K)": "W/(m K)",
     "m**2/s": "m^2/s",
     "kg/m**3": "kg/m^3",
     "m**3/s": "m^3/s",

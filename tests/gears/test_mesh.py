@@ -1,4 +1,4 @@
-"""Involute gear pair: identities of the geometry and kinematics, and the FZG type A gears."""
+"""Involute gear pair: identities of the geometry and kinematics, and the FZG type C gears."""
 
 import math
 
@@ -11,9 +11,10 @@ from shaftline.gears.mesh import GearPair, inverse_involute, involute, path_of_c
 DEG = math.pi / 180
 
 
-def fzg_a() -> GearPair:
-    # FZG test gear type A (ISO 14635-1; DIN 51354): z 16/24, m 4.5 mm, 20 deg, x 0.1817/0.1715,
-    # a 91.5 mm, b 20 mm, tip diameters 82.46 and 118.36 mm (shortened tips).
+def fzg_c() -> GearPair:
+    # FZG test gear type C (the pitting and micropitting gear; named type A here
+    # before - type A has x 0.8635/-0.5 and tips 88.77/112.5 mm, tests/gears/test_scuffing.py):
+    # z 16/24, m 4.5 mm, 20 deg, x 0.1817/0.1715, a 91.5 mm, tip diameters 82.46 and 118.36 mm.
     return GearPair(
         16, 24, 4.5e-3, 20 * DEG, 20e-3, shift_1=0.1817, shift_2=0.1715,
         centre_distance=91.5e-3, tip_radius_1=82.46e-3 / 2, tip_radius_2=118.36e-3 / 2,
@@ -25,10 +26,10 @@ def test_inverse_involute():
         assert inverse_involute(float(involute(angle))) == pytest.approx(angle, rel=1e-13)
 
 
-def test_fzg_type_a_geometry():
+def test_fzg_type_c_geometry():
     # The shifts give the test rig's 91.5 mm within 0.01 mm (22.44 deg working pressure angle);
-    # the transverse contact ratio of type A gears is 1.44 as FZG reports quote it (2 figures).
-    pair = fzg_a()
+    # the transverse contact ratio of these (type C) gears is 1.44 as FZG reports quote it (2 figures).
+    pair = fzg_c()
     assert pair._shifted_centre_distance() == pytest.approx(91.5e-3, abs=1e-5)
     assert math.degrees(pair.working_pressure_angle) == pytest.approx(22.44, abs=0.01)
     assert pair.transverse_contact_ratio == pytest.approx(1.44, abs=0.005)
@@ -65,7 +66,7 @@ def test_teeth_in_contact_average_the_contact_ratio():
     # Independent of the path formula: follow the pinion's flanks as it turns. Flank j meets
     # the line of action at rho_1 = r_b1 (phi + 2 pi j / z1) (an involute unwinds its base
     # circle); the number of flanks between A and E, averaged over a turn, is eps_alpha.
-    pair = fzg_a()
+    pair = fzg_c()
     phi = np.linspace(0.0, 2 * math.pi, 200001)[:-1, None]
     rho = pair.base_radius_1 * (phi + 2 * math.pi * np.arange(16)[None, :] / 16) % (2 * math.pi * pair.base_radius_1)
     in_contact = (rho >= pair.start_of_contact) & (rho <= pair.end_of_contact)

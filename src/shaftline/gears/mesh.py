@@ -79,6 +79,9 @@ class GearPair:
         Working centre distance; by default the one the shifts give.
     tip_radius_1, tip_radius_2 : float or None
         Tip radii when the teeth are not cut to the standard addendum (shortened tips).
+    allow_undercut : bool
+        Accept shifts below the undercut limit (teeth cut with undercut on purpose, as the FZG
+        type A wheel, x = -0.5 on 24 teeth); interference of the active flanks is still checked.
     """
 
     teeth_1: int
@@ -93,6 +96,7 @@ class GearPair:
     centre_distance: float | None = None
     tip_radius_1: float | None = None
     tip_radius_2: float | None = None
+    allow_undercut: bool = False
 
     def __post_init__(self) -> None:
         for name in ("teeth_1", "teeth_2"):
@@ -109,7 +113,7 @@ class GearPair:
             smallest = self.addendum - teeth * math.sin(self.transverse_pressure_angle) ** 2 / (
                 2.0 * math.cos(self.helix_angle)
             )
-            if shift < smallest - 1e-9:
+            if shift < smallest - 1e-9 and not self.allow_undercut:
                 raise InputError(
                     name,
                     shift,
@@ -276,16 +280,21 @@ class PathOfContact:
     sliding_speed: np.ndarray
 
 
-def path_of_contact(pair: GearPair, pinion_speed: float | np.ndarray, points: int = 200) -> PathOfContact:
+def path_of_contact(
+    pair: GearPair, pinion_speed: float | np.ndarray, points: int = 200, positions: np.ndarray | None = None
+) -> PathOfContact:
     """Radii of curvature and surface speeds at ``points`` positions from A to E, for pinion
     speeds (rad/s) broadcast against a last axis of positions (a speed array of shape (n, 1)
-    gives (n, points))."""
-    if points < 2:
+    gives (n, points)). ``positions`` (rho_1, m, within A..E) replaces the even spacing."""
+    if positions is None and points < 2:
         raise InputError("points", points, "", ">= 2")
     omega_1 = np.asarray(pinion_speed, dtype=float)
     if np.any(~(omega_1 > 0)):
         raise InputError("pinion_speed", float(np.ravel(omega_1)[0]), "rad/s", "> 0")
-    rho_1 = np.linspace(pair.start_of_contact, pair.end_of_contact, points)
+    if positions is None:
+        rho_1 = np.linspace(pair.start_of_contact, pair.end_of_contact, points)
+    else:
+        rho_1 = np.asarray(positions, dtype=float)
     rho_2 = pair.line_of_action - rho_1
     omega_2 = omega_1 * pair.teeth_1 / pair.teeth_2
     v1 = omega_1 * rho_1

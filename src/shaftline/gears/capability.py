@@ -1,0 +1,271 @@
+"""Gear scuffing as a capability: ``[gears]`` in a case file, ``shaftline gears scuffing
+CASE.toml [--calibrate TEST.csv]``, ``gears`` in results.json, a section of the report."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+
+from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
+from shaftline.report.blocks import Block, Figure, Paragraph, Table
+
+if TYPE_CHECKING:
+    from shaftline.gears.case import GearsSection
+    from shaftline.gears.study import GearResult, GearStudy
+
+#: Contact fields along the path written to results.json, with their units.
+PATH_FIELDS = {
+    "peak_pressure": "Pa",
+    "central_film": "m",
+    "film_ratio": "",
+    "friction": "",
+    "power_intensity": "W/m^2",
+}
+
+
+def _numbers(values: Any) -> Any:
+    import numpy as np
+
+    array = np.asarray(values, dtype=float)
+    if array.ndim == 0:
+        number = float(array)
+        return number if math.isfinite(number) else None
+    return [_numbers(v) for v in array]
+
+
+def _verdict(sp: float) -> str:
+    from shaftline.gears.scuffing import NO_SCUFFING, SCUFFING
+
+    return "scuffing" if sp > SCUFFING else "safe" if sp < NO_SCUFFING else "uncertain"
+
+
+def scuffing_command(
+    case_file: Annotated[Path, typer.Argument(help="Case file (TOML) with a [gears] table.")],
+    calibrate: Annotated[
+        Path | None,
+        typer.Option(
+            "--calibrate",
+            help="Torque-step test record (CSV: torque_Nm, speed_rpm, oil_temperature_degC, scuffed) to calibrate "
+            "seed 002's C on: SP = 1 at the first scuffed step.",
+        ),
+    ] = None,
+    json_path: Annotated[
+        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
+    ] = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
+    strict: Annotated[
+        bool, typer.Option("--strict", help="Exit with status 3 also when a design criterion is not met.")
+    ] = False,
+) -> None:
+    """Scuffing of a gear pair along the mesh: seed 002's scuffing parameter beside ISO/TS 6336-20."""
+    from shaftline.commandline import run_cases
+
+    overrides = {} if calibrate is None else {"gears.calibration": str(calibrate.expanduser().resolve())}
+    run_cases(Path(case_file), json_path, out, only=["gears"], overrides=overrides, strict=strict)
+
+
+class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
+    key = "gears"
+    title = "Gear scuffing: seed 002's scuffing parameter beside ISO/TS 6336-20"
+
+    def schema(self) -> type[GearsSection]:
+        from shaftline.gears.case import GearsSection
+
+        return GearsSection
+
+    def build(self, section: GearsSection, context: BuildContext) -> GearStudy:
+        from shaftline.gears.case import build_study
+
+        return build_study(section, context)
+
+    def solve(self, study: GearStudy, progress: Progress = no_progress, **options: Any) -> GearResult:
+        from shaftline.gears.study import solve_gears
+
+        return solve_gears(study, lambda step: progress(f"solving {step}"))
+
+    def commands(self) -> Sequence[Command]:
+        return (Command(("gears", "scuffing"), scuffing_command),)
+
+    def to_json(self, result: GearResult) -> dict[str, Any]:
+        study, state = result.study, result.state
+        pair = study.mesh.pair
+        top = len(study.torques) - 1
+        out: dict[str, Any] = {
+            "units": {
+                "torque": "N m",
+                "speed": "rad/s",
+                "temperature": "degC",
+                "position": "m",
+                "thermal_coefficient": "W/(m K)",
+                "power_integral": "W/m",
+                "load": "N/m",
+                "flash_temperature": "K",
+                **{k: v for k, v in PATH_FIELDS.items() if v},
+            },
+            "pair": {
+                "working_centre_distance": pair.working_centre_distance,
+                "working_pressure_angle_deg": math.degrees(pair.working_pressure_angle),
+                "transverse_contact_ratio": pair.transverse_contact_ratio,
+                "overlap_ratio": pair.overlap_ratio,
+                "points": pair.points(),
+            },
+            "lubricant": study.mesh.model.lubricant.name,
+            "oil_temperature": study.oil_temperature,
+            "critical_temperature": study.critical_temperature,
+            "load_sharing": "table" if study.mesh.load_table is not None else "ISO (no tip relief)",
+            "thermal_coefficient": result.coefficient,
+            "calibration": None,
+            "torques": _numbers(study.torques),
+            "fzg_load_stages": None if study.fzg_load_stages is None else list(study.fzg_load_stages),
+            "speeds": _numbers(study.speeds),
+            "approach_integral": _numbers(state.approach),
+            "recess_integral": _numbers(state.recess),
+            "sp": _numbers(result.sp),
+            "warnings": list(result.warnings),
+            "path": {
+                "torque": float(study.torques[top]),
+                "speed": float(study.speeds[0]),
+                "position": _numbers(state.path.position),
+                "share": _numbers(state.share),
+                "load": _numbers(state.load[top, 0]),
+                **{name: _numbers(getattr(state.contact, name)[top, 0]) for name in PATH_FIELDS},
+            },
+            "iso": None,
+            "iso_integral": None,
+        }
+        if result.calibrated_at is not None and study.calibration is not None:
+            torque, speed, t0, integral = result.calibrated_at
+            out["calibration"] = {
+                "record": study.calibration.source,
+                "failure_step": study.calibration.failure + 1,
+                "torque": torque,
+                "speed": speed,
+                "oil_temperature": t0,
+                "power_integral": integral,
+            }
+        iso = result.iso
+        if iso is not None:
+            out["iso"] = {
+                "fzg_load_stage": study.iso.fzg_load_stage if study.iso is not None else None,
+                "mean_friction": _numbers(iso.friction),
+                "flash_max": _numbers(iso.flash_max),
+                "bulk_temperature": _numbers(iso.bulk),
+                "contact_temperature_max": _numbers(iso.contact_max),
+                "scuffing_temperature": _numbers(iso.scuffing_temperature),
+                "safety": _numbers(iso.safety),
+                "flash_along_path": _numbers(iso.flash[top, 0]),
+            }
+        rating = result.integral
+        if rating is not None:
+            out["iso_integral"] = {
+                "mean_friction": _numbers(rating.friction),
+                "flash_tip": _numbers(rating.flash_tip),
+                "flash_integral": _numbers(rating.flash_integral),
+                "bulk_temperature": _numbers(rating.bulk),
+                "integral_temperature": _numbers(rating.integral),
+                "scuffing_integral_temperature": rating.scuffing_integral,
+                "safety": _numbers(rating.safety),
+            }
+        return out
+
+    def _table(self, result: GearResult) -> Table:
+        study, c = result.study, result.state.contact
+        stages = study.fzg_load_stages
+        rows = []
+        for k, torque in enumerate(study.torques):
+            sp = float(result.sp[k, 0])
+            row = [
+                f"{torque:g}" + (f" (stage {stages[k]})" if stages else ""),
+                f"{float(c.peak_pressure[k, 0].max()) / 1e9:.2f}",
+                f"{float(c.film_ratio[k, 0].min()):.2f}",
+                f"{float(c.friction[k, 0].max()):.3f}",
+                f"{sp:.2f}",
+                _verdict(sp),
+            ]
+            if result.iso is not None:
+                row += [f"{float(result.iso.contact_max[k, 0]):.0f}", f"{float(result.iso.safety[k, 0]):.2f}"]
+            if result.integral is not None:
+                row.append(f"{float(result.integral.safety[k, 0]):.2f}")
+            rows.append(row)
+        headers = ["pinion torque [N m]", "max p_H [GPa]", "min Lambda", "max f", "SP", "seed 002"]
+        if result.iso is not None:
+            headers += ["ISO θ_Bmax [°C]", "ISO S_B", "ISO S_intS"]
+        speed = float(study.speeds[0]) * 30.0 / math.pi
+        return Table(
+            headers,
+            rows,
+            f"{study.mesh.model.lubricant.name} at {study.oil_temperature:g} °C, {speed:.0f} rpm, "
+            f"C = {result.coefficient:.4g} W/(m K), T_cr = {study.critical_temperature:g} °C",
+        )
+
+    def _notes(self, result: GearResult) -> list[Block]:
+        blocks: list[Block] = [Paragraph(f"Extrapolated: {text}", "warn") for text in result.warnings]
+        if result.calibrated_at is not None and result.study.calibration is not None:
+            torque, speed, t0, integral = result.calibrated_at
+            blocks.append(
+                Paragraph(
+                    f"C calibrated on {Path(result.study.calibration.source).name}: SP = 1 at its first scuffed step "
+                    f"({torque:g} N m, {speed * 30 / math.pi:.0f} rpm, oil {t0:g} °C, power integral "
+                    f"{integral / 1e3:.1f} kW/m).",
+                    "note",
+                )
+            )
+        return blocks
+
+    def findings(self, result: GearResult) -> list[Finding]:
+        from shaftline.gears.scuffing import SCUFFING
+
+        found = []
+        over = result.sp > SCUFFING
+        if over.any():
+            k, j = (int(v) for v in next(zip(*over.nonzero(), strict=True)))
+            found.append(
+                Finding(
+                    f"seed 002's scuffing parameter exceeds 1 (scuffing) from {result.study.torques[k]:g} N m at "
+                    f"{result.study.speeds[j] * 30 / math.pi:.0f} rpm (SP = {result.sp[k, j]:.2f}).",
+                    criterion=True,
+                )
+            )
+        if result.iso is not None and (result.iso.safety < 1.0).any():
+            safety = result.iso.safety
+            k, j = (int(v) for v in next(zip(*(safety < 1.0).nonzero(), strict=True)))
+            found.append(
+                Finding(
+                    f"ISO/TS 6336-20 scuffing safety below 1 from {result.study.torques[k]:g} N m at "
+                    f"{result.study.speeds[j] * 30 / math.pi:.0f} rpm (S_B = {safety[k, j]:.2f}).",
+                    criterion=True,
+                )
+            )
+        return found
+
+    def summary(self, result: GearResult) -> list[Block]:
+        return [*self._notes(result), self._table(result)]
+
+    def report(self, result: GearResult) -> list[Block]:
+        from shaftline.gears import figures
+
+        return [
+            *self._notes(result),
+            self._table(result),
+            Paragraph(f"Lubricant data: {result.study.mesh.model.lubricant.source}", "note"),
+            Paragraph(
+                "SP: seed 002 Eq. 7 as read in docs/theory.md 19.2; ISO: flash-temperature (S_B, TS 6336-20) and "
+                "integral-temperature (S_intS, TS 6336-21; a ratio of absolute temperatures, < 1 high risk, 1-2 "
+                "critical) methods with coefficients as transcribed (theory 19.3, 19.5).",
+                "note",
+            ),
+            Figure(
+                "gears_path.png",
+                figures.along_path,
+                (result,),
+                caption="along the path of contact at the highest torque step",
+            ),
+            Figure("gears_sp.png", figures.sp_steps, (result,), caption="SP against torque beside ISO's S_B"),
+        ]
+
+
+CAPABILITY = GearScuffing()

@@ -1,0 +1,203 @@
+"""Load sharing along the path, seed 002's scuffing parameter (Eq. 7) and ISO's flash-temperature
+method on the seed's test gears and the FZG type A gears."""
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+from shaftline.contact.lubricated import ContactModel, Surfaces
+from shaftline.contact.rheology import contact_lubricant
+from shaftline.errors import InputError
+from shaftline.gears.flash import IsoScuffingData, flash_temperature, iso_scuffing, unit_load
+from shaftline.gears.integral import contact_ratio_factor, integral_temperature
+from shaftline.gears.loading import iso_load_sharing, normal_load_per_length, tabulated_load_sharing
+from shaftline.gears.mesh import GearPair
+from shaftline.gears.scuffing import GearMesh, calibrate, evaluate_mesh, scuffing_parameter
+
+DEG = math.pi / 180
+#: FZG A/8.3/90 pinion torque per load stage 1-12, N m (ISO 14635-1).
+FZG_TORQUE = np.array([3.3, 13.7, 35.3, 60.8, 94.1, 135.3, 183.4, 239.3, 302.0, 372.6, 450.1, 534.5])
+FZG_SPEED = 2170 * math.pi / 30  # pinion, rad/s: 8.3 m/s at the 73.2 mm working pitch circle
+
+
+def fzg_a() -> GearPair:
+    # FZG test gear type A (ISO 14635-1): z 16/24, m 4.5 mm, x 0.8635/-0.5 (the wheel beyond the
+    # rack's undercut limit -0.404), a 91.5 mm, b 20 mm, tip diameters 88.77 and 112.5 mm
+    return GearPair(
+        16, 24, 4.5e-3, 20 * DEG, 20e-3, shift_1=0.8635, shift_2=-0.5, centre_distance=91.5e-3,
+        tip_radius_1=88.77e-3 / 2, tip_radius_2=112.5e-3 / 2, allow_undercut=True,
+    )  # fmt: skip
+
+
+def seed_mesh(points: int = 200) -> GearMesh:
+    pair = GearPair(28, 28, 5e-3, 20 * DEG, 20e-3)  # seed 002 Table 1, 140 mm centre distance
+    model = ContactModel(contact_lubricant("MIL-PRF-23699"), extrapolate=True)
+    rq = math.sqrt(math.pi / 2)
+    return GearMesh(pair, model, Surfaces(roughness_1=0.4e-6 * rq, roughness_2=0.1e-6 * rq), points=points)
+
+
+def quiet(function, *args):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the slow end leaves the fit range of seed Eq. 6 (extrapolated)
+        return function(*args)
+
+
+def test_iso_load_sharing_of_the_two_pairs_adds_to_one():
+    # While one pair is at rho in A..B the one ahead is a base pitch further, in D..E: the
+    # linear transitions 1/3 -> 2/3 and 2/3 -> 1/3 give them the whole load between them.
+    pair = fzg_a()
+    p = pair.points()
+    rho = np.linspace(p["A"], p["B"], 50)[1:-1]  # B and D themselves are the jumps
+    total = iso_load_sharing(pair, rho) + iso_load_sharing(pair, rho + pair.base_pitch)
+    np.testing.assert_allclose(total, 1.0, rtol=1e-12)
+    assert np.all(iso_load_sharing(pair, np.linspace(p["B"], p["D"], 20)) == 1.0)
+    # a coarser grade (Q 10) loads the entering tooth more at A: (10 - 2)/15
+    assert float(iso_load_sharing(pair, p["A"], accuracy_grade=10)) == pytest.approx(8 / 15)
+    helical = GearPair(20, 40, 3e-3, 20 * DEG, 60e-3, helix_angle=20 * DEG)  # eps_beta 2.2
+    np.testing.assert_allclose(iso_load_sharing(helical, np.array([0.02, 0.03])), 1 / helical.transverse_contact_ratio)
+
+
+def test_tabulated_load_sharing_and_the_normal_load():
+    pair = fzg_a()
+    p = pair.points()
+    table = (np.array([0.0, 0.5, 1.0]), np.array([0.4, 1.0, 0.4]))
+    mid = 0.5 * (p["A"] + p["E"])
+    assert float(tabulated_load_sharing(pair, mid, *table)) == pytest.approx(1.0)
+    assert float(tabulated_load_sharing(pair, p["A"] + 0.25 * pair.path_length, *table)) == pytest.approx(0.7)
+    with pytest.raises(InputError, match="increasing from 0"):
+        tabulated_load_sharing(pair, mid, np.array([0.0, 0.4]), np.array([0.5, 0.5]))
+    with pytest.raises(InputError, match=r"load_sharing.share = 1.2"):
+        tabulated_load_sharing(pair, mid, np.array([0.0, 1.0]), np.array([0.5, 1.2]))
+    # single-tooth contact: the normal force T / r_b on the face width
+    w = normal_load_per_length(pair, 302.0, np.array(1.0))
+    assert float(w) * pair.face_width * pair.base_radius_1 == pytest.approx(302.0)
+
+
+def test_power_integrals_converge_and_split_at_the_pitch_point():
+    # Reference: the same integrals on a 10x finer path. The trapezoidal rule on 200 points is
+    # second order in a piecewise smooth integrand (kinks at B, C, D): 0.5 % is ample.
+    torque, speed = 300.0, 10000 * math.pi / 30
+    coarse = quiet(evaluate_mesh, seed_mesh(200), torque, speed, 90.0)
+    fine = quiet(evaluate_mesh, seed_mesh(2000), torque, speed, 90.0)
+    assert float(coarse.approach) == pytest.approx(float(fine.approach), rel=5e-3)
+    assert float(coarse.recess) == pytest.approx(float(fine.recess), rel=5e-3)
+    rho = fine.path.position
+    whole = np.trapezoid(fine.contact.power_intensity, rho)
+    assert float(fine.approach + fine.recess) == pytest.approx(float(whole), rel=1e-12)
+    c = int(np.argmin(np.abs(rho - seed_mesh().pair.pitch_point)))
+    assert rho[c] == pytest.approx(seed_mesh().pair.pitch_point, abs=1e-15)
+    assert fine.contact.power_intensity[c] == pytest.approx(0.0, abs=1e-6 * fine.contact.power_intensity.max())
+
+
+def test_scuffing_parameter_rises_with_torque_and_speed():
+    # issue 14 check: SP monotonic in torque, and in speed at fixed torque, over the seed's test
+    # range (torque steps to 500 N m, to 18 000 rpm)
+    torque = np.linspace(50.0, 500.0, 10)[:, None, None]
+    speed = (np.linspace(2000.0, 18000.0, 9) * math.pi / 30)[None, :, None]
+    state = quiet(evaluate_mesh, seed_mesh(), torque, speed, 90.0)
+    sp = scuffing_parameter(state.power_integral, 5000.0, 126.0, 90.0)
+    assert sp.shape == (10, 9)
+    assert np.all(np.diff(sp, axis=0) > 0) and np.all(np.diff(sp, axis=1) > 0)
+
+
+def test_calibration_puts_sp_at_one_at_the_failure_step():
+    torque = np.array([100.0, 200.0, 300.0, 400.0])[:, None]
+    state = quiet(evaluate_mesh, seed_mesh(), torque, 10000 * math.pi / 30, 90.0)
+    c = calibrate(float(state.power_integral[2]), 126.0, 90.0)
+    sp = scuffing_parameter(state.power_integral, c, 126.0, 90.0)
+    assert sp[2] == pytest.approx(1.0, rel=1e-12)
+    assert sp[0] < sp[1] < 1.0 < sp[3]
+    with pytest.raises(InputError, match="critical_temperature = 80 degC: allowed > the oil temperature 90"):
+        calibrate(1e5, 80.0, 90.0)
+
+
+def iso_form_a5(pair, mu, share, torque, speed, rho):
+    # ISO/TR 13989-1 Eq. (A.5)-(A.8), mixed units (N/mm, m/s, mm; X_M = 50 for steel), as an
+    # independent statement of the same Blok flash temperature
+    awt = pair.working_pressure_angle
+    u = pair.teeth_2 / pair.teeth_1
+    gamma = rho / pair.pitch_point - 1
+    x_ab = 1.22 * math.sin(awt) ** 0.25 / math.sqrt(math.cos(awt))
+    x_g = 0.51 * x_ab * math.sqrt(u + 1) * np.abs(np.sqrt(1 + gamma) - np.sqrt(1 - gamma / u))
+    x_g = x_g / ((1 + gamma) ** 0.25 * (u - gamma) ** 0.25)
+    w = float(unit_load(pair, torque)) * 1e-3
+    v_t = speed * pair.pitch_radius(1)
+    return mu * 50.0 * x_g * (share * w) ** 0.75 * math.sqrt(v_t) / (pair.working_centre_distance * 1e3) ** 0.25
+
+
+def test_blok_flash_temperature_is_isos_cylindrical_gear_form():
+    # Blok with K = 0.80 against ISO's adapted form: equal up to the rounding of its constants
+    # (0.51 x 1.22 x 50 against 0.80 and B_M = 435; ISO's general Eq. (5) and Eq. (A.5) differ
+    # by 0.9 % themselves): 1.5 %. Compared in the recess, where X_J = 1 (pinion driving).
+    pair = fzg_a()
+    data = IsoScuffingData(9, roughness_ra=0.3e-6)
+    rho = np.linspace(pair.pitch_point * 1.02, pair.end_of_contact, 40)
+    share = iso_load_sharing(pair, rho)
+    blok = flash_temperature(pair, data, 0.05, 302.0, FZG_SPEED, share, rho)
+    np.testing.assert_allclose(blok, iso_form_a5(pair, 0.05, share, 302.0, FZG_SPEED, rho), rtol=0.015)
+
+
+def fzg_rating(stage: float):
+    pair = fzg_a()
+    rho = np.linspace(pair.start_of_contact, pair.end_of_contact, 200)
+    share = iso_load_sharing(pair, rho)
+    eta = float(contact_lubricant("FVA 3").dynamic_viscosity(90.0))
+    data = IsoScuffingData(stage, roughness_ra=0.3e-6)
+    return iso_scuffing(pair, data, FZG_TORQUE[:, None], FZG_SPEED, 90.0, eta, share, rho)
+
+
+def test_iso_flash_temperature_rises_with_torque_and_speed():
+    pair = fzg_a()
+    rho = np.linspace(pair.start_of_contact, pair.end_of_contact, 200)
+    share = iso_load_sharing(pair, rho)
+    eta = float(contact_lubricant("FVA 3").dynamic_viscosity(90.0))
+    speeds = np.linspace(50.0, 600.0, 8)[None, :, None]
+    rating = iso_scuffing(pair, IsoScuffingData(9), FZG_TORQUE[:, None, None], speeds, 90.0, eta, share, rho)
+    assert np.all(np.diff(rating.flash_max, axis=0) > 0) and np.all(np.diff(rating.flash_max, axis=1) > 0)
+    assert np.all(np.diff(rating.safety, axis=0) < 0)
+
+
+def test_fzg_failure_stage_against_the_iso_safety_factor():
+    # The scuffing temperature comes from the FZG A/8.3/90 stage at which the oil fails, so at
+    # that stage of the FZG test itself S_B should be near 1 (issue 14). The coded chain gives
+    # 0.74 (stage 4), 0.89, 0.98, 1.04, 1.08, 1.12, 1.15, 1.17, 1.19 (stage 12) - docs/validation.md.
+    # Tolerance: within 0.3 of 1 from stage 4 on (the bulk-temperature and friction estimates of
+    # the method are of that order, and stages 4-5 fail only with the weakest oils); near 1
+    # within 0.2 for stages 6-12, where reference oils fail.
+    safety = np.array([float(fzg_rating(k).safety[k - 1]) for k in range(4, 13)])
+    assert np.all(np.abs(safety - 1.0) < 0.3)
+    assert np.all(np.abs(safety[2:] - 1.0) < 0.2)
+
+
+def test_integral_temperature_at_the_fzg_failure_stage():
+    # ISO/TS 6336-21 on the same test: theta_intS is built from the FZG failure stage, so S_intS
+    # at that stage should be near 1: 0.92 (stage 4) ... 1.17 (stage 12) - within 0.2.
+    pair = fzg_a()
+    eta = float(contact_lubricant("FVA 3").dynamic_viscosity(90.0))
+    for k in range(4, 13):
+        rating = integral_temperature(
+            pair, IsoScuffingData(k, roughness_ra=0.3e-6), FZG_TORQUE, FZG_SPEED, 90.0, eta, 95e-6
+        )
+        assert abs(float(rating.safety[k - 1]) - 1.0) < 0.2
+        assert np.all(np.diff(rating.safety) < 0) and np.all(np.diff(rating.integral) > 0)
+
+
+def test_contact_ratio_factor_branches_meet():
+    # X_eps of ISO/TR 13989-2 Eq. 39-44 is continuous where its branches meet (the branches are
+    # fits of one weighted mean): at eps_alpha = 1 and at eps_1 = 1, to 2 %
+    assert contact_ratio_factor(0.5, 0.4999999) == pytest.approx(contact_ratio_factor(0.5, 0.5000001), rel=0.02)
+    assert contact_ratio_factor(0.9999999, 0.6) == pytest.approx(contact_ratio_factor(1.0000001, 0.6), rel=0.02)
+
+
+def test_sp_and_iso_rank_the_fzg_load_stages_alike():
+    # issue 14 check: seed 002's SP (FVA 3 at 90 degC) and ISO's S_B order the 12 stages the same way
+    pair = fzg_a()
+    model = ContactModel(contact_lubricant("FVA 3"), extrapolate=True)
+    rq = math.sqrt(math.pi / 2) * 0.3e-6
+    mesh = GearMesh(pair, model, Surfaces(roughness_1=rq, roughness_2=rq))
+    state = quiet(evaluate_mesh, mesh, FZG_TORQUE[:, None], FZG_SPEED, 90.0)
+    sp = scuffing_parameter(state.power_integral, 1000.0, 150.0, 90.0)
+    safety = fzg_rating(9).safety
+    assert list(np.argsort(sp)) == list(np.argsort(-safety)) == list(range(12))
