@@ -143,6 +143,15 @@ class GearPair:
                 "m",
                 "a wheel tip that meets the pinion flank above its base circle (no interference)",
             )
+        if self.end_of_contact >= self.line_of_action:
+            # the pinion's tip would reach past T2: the wheel's flank has no involute there
+            # (rho_2 <= 0), the mirror of the check above
+            raise InputError(
+                "tip_radius_1",
+                self.tip_radius(1),
+                "m",
+                "a pinion tip that meets the wheel flank above its base circle (no interference)",
+            )
         if self.transverse_contact_ratio < 1.0:
             raise InputError(
                 "addendum",
