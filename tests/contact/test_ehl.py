@@ -120,6 +120,17 @@ def test_gupta_reduces_to_murch_wilson_in_pure_rolling():
     assert np.all(ehl.gupta(loading, 0.5, 0.003) < ehl.gupta(loading, 0.0, 0.003))
 
 
+def test_gupta_beyond_its_positive_range_is_an_input_error():
+    # The numerator 1 - 13.2 (p0/E') L^0.42 vanishes at L = (13.2 p0/E')^(-1/0.42): 1100 at p0/E' = 0.004.
+    # Just below the factor is small and positive; beyond, the fit would give a negative film.
+    limit = (13.2 * 0.004) ** (-1 / 0.42)
+    assert limit == pytest.approx(1100, rel=1e-3)
+    assert 0 < float(ehl.gupta(0.99 * limit, 0.1, 0.004)) < 0.01
+    with pytest.raises(InputError, match=r"thermal loading L = 1111: allowed < 1100, where Gupta"):
+        ehl.gupta(np.array([1.0, 1.01 * limit]), 0.1, 0.004)
+    assert float(ehl.murch_wilson(1.01 * limit)) > 0  # the pure-rolling alternative has no limit
+
+
 def test_film_ratio_and_roughness():
     assert float(ehl.rq_from_ra(0.4e-6)) == pytest.approx(0.4e-6 * 1.2533, rel=1e-4)
     with pytest.raises(InputError, match="roughness"):

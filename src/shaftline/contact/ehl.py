@@ -175,10 +175,32 @@ def thermal_loading(
 
 def gupta(loading: ArrayLike, slide_roll: ArrayLike, pressure_ratio: ArrayLike) -> np.ndarray:
     """Gupta, Cheng, Zhu, Forster & Schrand (1992) thermal reduction factor of the central
-    film: ``(1 - 13.2 (p0/E') L^0.42) / (1 + 0.213 (1 + 2.23 |S|^0.83) L^0.64)``."""
+    film: ``(1 - 13.2 (p0/E') L^0.42) / (1 + 0.213 (1 + 2.23 |S|^0.83) L^0.64)``.
+
+    The numerator vanishes at ``L = (13.2 p0/E')^(-1/0.42)`` (about 1000 for steel at 1 GPa)
+    and is negative beyond: a negative film. There the fit is outside its range and an
+    :class:`InputError` names the limit (Murch & Wilson's factor has no such limit).
+
+    >>> round(float(gupta(1.0, 0.0, 0.004)), 3)
+    0.781
+    """
     lo = np.asarray(loading, dtype=float)
     s = np.abs(np.asarray(slide_roll, dtype=float))
-    return (1.0 - 13.2 * np.asarray(pressure_ratio) * lo**0.42) / (1.0 + 0.213 * (1.0 + 2.23 * s**0.83) * lo**0.64)
+    ratio = np.asarray(pressure_ratio, dtype=float)
+    numerator = 1.0 - 13.2 * ratio * lo**0.42
+    bad = ~(numerator > 0.0)
+    if np.any(bad):
+        value = float(np.broadcast_to(lo, bad.shape)[bad].flat[0])
+        limit = float((13.2 * np.broadcast_to(ratio, bad.shape)[bad].flat[0]) ** (-1.0 / 0.42))
+        raise InputError(
+            "thermal loading L",
+            float(f"{value:.4g}"),
+            "",
+            f"< {limit:.4g}, where Gupta's thermal reduction stays positive (beyond it the fit gives a negative "
+            "film: a colder, more viscous oil or a higher speed than it covers); thermal_method = "
+            "'murch_wilson' has no such limit",
+        )
+    return numerator / (1.0 + 0.213 * (1.0 + 2.23 * s**0.83) * lo**0.64)
 
 
 def murch_wilson(loading: ArrayLike, slide_roll: ArrayLike = 0.0, pressure_ratio: ArrayLike = 0.0) -> np.ndarray:
