@@ -15,7 +15,7 @@ import numpy as np
 from shaftline.contact import ehl, hertz
 from shaftline.contact.friction import seed_friction
 from shaftline.contact.rheology import ContactLubricant
-from shaftline.errors import InputError
+from shaftline.errors import InputError, first_offending
 
 ArrayLike = float | np.ndarray
 Geometry = Literal["line", "point"]
@@ -174,7 +174,9 @@ def evaluate(
     u2 = np.asarray(speed_2, dtype=float)
     rolling = 0.5 * (u1 + u2)
     if np.any(~(rolling > 0.0)):
-        raise InputError("rolling_speed", float(np.ravel(rolling)[0]), "m/s", "> 0 (mean of the surface speeds)")
+        raise InputError(
+            "rolling_speed", first_offending(rolling, rolling > 0.0), "m/s", "> 0 (mean of the surface speeds)"
+        )
     sliding = u2 - u1
     slide_roll = sliding / rolling
     eta0 = lubricant.dynamic_viscosity(temperature, model.extrapolate)
