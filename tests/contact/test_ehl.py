@@ -13,11 +13,41 @@ GRID = np.meshgrid(np.logspace(-12, -10, 9), np.linspace(2000, 6000, 5), np.logs
 def test_dowson_toyoda_and_moes_agree_in_the_ehl_range():
     # Moes (1992) fitted other numerical solutions than Dowson & Toyoda (1979): over
     # U 1e-12..1e-10, G 2000..6000, W' 5e-5..5e-4 (gears, rollers) their central films differ by
-    # -9.4 % to +5.3 %; 10 % is the scatter of such fits against numerical EHL solutions.
+    # -7.0 % to +6.6 %; 10 % is the scatter of such fits against numerical EHL solutions.
     u, g, w = GRID
     dt, _ = ehl.dowson_toyoda(u, g, w)
     moes, _ = ehl.moes(u, g, w)
     assert np.abs(moes / dt - 1).max() < 0.10
+
+
+def test_moes_as_a_second_public_transcription_states_it():
+    # Gelinck & Schipper's (2000) mixed-lubrication form of Moes' line-contact central film, as a public
+    # gear code states it (github.com/Konglingyu1997/Mixed-lubrication-Helical-gear, README.md: groups
+    # M = W' Us^-1/2, L = G Us^1/4 with Us = eta0 (u1 + u2)/(E' R), the same four asymptotes, and
+    # s = (7 + 8 exp(-2 gamma^-0.4 H_EI/H_RI))/5) reduces to Moes' with the film carrying all the load,
+    # gamma = 1. Written out here with gamma kept, it must equal ehl.moes to round-off everywhere, in the
+    # rigid, transition and EHL regimes (the point contact's s = 3/2 (1 + exp(-1.2 H_EI/H_RI)), used
+    # before, differs by up to 7 % in the transitions).
+    gamma = 1.0
+    u = np.logspace(-13, -8, 11)[:, None, None]
+    w = np.logspace(-7, -3, 9)[None, :, None]
+    g = np.array([0.0 + 1e-9, 500.0, 5000.0])[None, None, :]
+    us = 2 * u  # eta0 (u1 + u2)/(E' R) from U on the mean speed
+    m, lam = w * us**-0.5, g * us**0.25
+    ri, ei, rp, ep = 3 / m, 2.621 * m**-0.2, 1.287 * lam ** (2 / 3), 1.311 * m**-0.125 * lam**0.75
+    s = (7 + 8 * np.exp(-2 * gamma**-0.4 * ei / ri)) / 5
+    h = (
+        (
+            gamma ** (s / 2) * (ri ** (7 / 3) + gamma ** (-14 / 15) * ei ** (7 / 3)) ** (3 * s / 7)
+            + gamma ** (-s / 2) * (rp**-3.5 + ep**-3.5) ** (-2 * s / 7)
+        )
+        ** (1 / s)
+        * gamma**0.5
+        * us**0.5
+    )
+    central, minimum = ehl.moes(u, g, w)
+    np.testing.assert_allclose(central, h, rtol=1e-12)
+    assert np.all(np.isnan(minimum))
 
 
 def _martin_and_blok():

@@ -84,7 +84,8 @@ def moes(u: ArrayLike, g: ArrayLike, w: ArrayLike) -> tuple[np.ndarray, np.ndarr
     ``H_RI = 3/M``, ``H_EI = 2.621 M^-1/5``, ``H_RP = 1.287 L^2/3``,
     ``H_EP = 1.311 M^-1/8 L^3/4`` blended as
     ``H = ((H_RI^7/3 + H_EI^7/3)^(3s/7) + (H_RP^-7/2 + H_EP^-7/2)^(-2s/7))^(1/s)``,
-    ``s = 3/2 (1 + exp(-1.2 H_EI / H_RI))``. Moes gives no minimum film: NaN."""
+    ``s = (7 + 8 exp(-2 H_EI / H_RI)) / 5`` (the line contact's s; ``3/2 (1 + exp(-1.2 H_EI/H_RI))``
+    is the point contact's, Nijenbanning, Venner & Moes 1994). Moes gives no minimum film: NaN."""
     two_u = 2.0 * np.asarray(u, dtype=float)
     m = np.asarray(w) * two_u**-0.5
     lam = np.asarray(g) * two_u**0.25
@@ -92,7 +93,7 @@ def moes(u: ArrayLike, g: ArrayLike, w: ArrayLike) -> tuple[np.ndarray, np.ndarr
     h_ei = 2.621 * m**-0.2
     h_rp = 1.287 * lam ** (2.0 / 3.0)
     h_ep = 1.311 * m**-0.125 * lam**0.75
-    s = 1.5 * (1.0 + np.exp(-1.2 * h_ei / h_ri))
+    s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
     h = ((h_ri ** (7 / 3) + h_ei ** (7 / 3)) ** (3 * s / 7) + (h_rp**-3.5 + h_ep**-3.5) ** (-2 * s / 7)) ** (1 / s)
     central = h * two_u**0.5
     return central, np.full_like(central, np.nan)
