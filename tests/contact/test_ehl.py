@@ -50,6 +50,33 @@ def test_moes_as_a_second_public_transcription_states_it():
     assert np.all(np.isnan(minimum))
 
 
+def test_line_regime_map_from_moes_asymptotes():
+    # Deep inside each regime the blended film is its asymptote (within 5 %) and the map names it;
+    # in M = W'(2U)^-1/2, L = G(2U)^1/4: light load isoviscous (M 0.01, L 0), heavy isoviscous
+    # (M 1e3, L 0), light load piezoviscous (M 0.01, L 1e4), heavy piezoviscous (M 1e3, L 20).
+    u = 1e-10
+    cases = {
+        "rigid-isoviscous": (1e-2, 1e-9, lambda m, lam: 3 / m),
+        "elastic-isoviscous": (1e3, 1e-9, lambda m, lam: 2.621 * m**-0.2),
+        "rigid-piezoviscous": (1e-2, 1e4, lambda m, lam: 1.287 * lam ** (2 / 3)),
+        "elastic-piezoviscous": (1e3, 20.0, lambda m, lam: 1.311 * m**-0.125 * lam**0.75),
+    }
+    for name, (m, lam, asymptote) in cases.items():
+        w, g = m * np.sqrt(2 * u), lam / (2 * u) ** 0.25
+        central, _ = ehl.moes(u, g, w)
+        assert float(central) / (asymptote(m, lam) * np.sqrt(2 * u)) == pytest.approx(1.0, abs=0.05), name
+        assert ehl.REGIMES[int(ehl.line_regime(u, g, w))] == name
+    # the seed 002 gear flank (contact_ehl.toml: 300 N/mm, Rx 12 mm, 5.9 mPa s, 73 m/s, alpha 1.04e-8)
+    # and a line-contact elastomer seal (E' 10 MPa, 1 N/mm, R 5 mm, 0.05 Pa s, 1 m/s) fall where the
+    # textbooks place them
+    e, rx = 226.4e9, 11.97e-3
+    gear = ehl.line_regime(5.9e-3 * 73.25 / (e * rx), 1.04e-8 * e, 3e5 / (e * rx))
+    assert ehl.REGIMES[int(gear)] == "elastic-piezoviscous"
+    e, rx = 1e7, 5e-3
+    seal = ehl.line_regime(0.05 * 1.0 / (e * rx), 2e-8 * e, 1e3 / (e * rx))
+    assert ehl.REGIMES[int(seal)] == "elastic-isoviscous"
+
+
 def _martin_and_blok():
     """Rigid cylinder on a plane with the Reynolds condition, solved here by quadrature:
     dP/dX = (X^2 - Xe^2)/(1 + X^2)^3, P(-inf) = P(Xe) = 0. Load gives Martin's

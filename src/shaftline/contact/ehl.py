@@ -86,17 +86,31 @@ def moes(u: ArrayLike, g: ArrayLike, w: ArrayLike) -> tuple[np.ndarray, np.ndarr
     ``H = ((H_RI^7/3 + H_EI^7/3)^(3s/7) + (H_RP^-7/2 + H_EP^-7/2)^(-2s/7))^(1/s)``,
     ``s = (7 + 8 exp(-2 H_EI / H_RI)) / 5`` (the line contact's s; ``3/2 (1 + exp(-1.2 H_EI/H_RI))``
     is the point contact's, Nijenbanning, Venner & Moes 1994). Moes gives no minimum film: NaN."""
+    h_ri, h_rp, h_ei, h_ep, root_two_u = _moes_asymptotes(u, g, w)
+    s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
+    h = ((h_ri ** (7 / 3) + h_ei ** (7 / 3)) ** (3 * s / 7) + (h_rp**-3.5 + h_ep**-3.5) ** (-2 * s / 7)) ** (1 / s)
+    central = h * root_two_u
+    return central, np.full_like(central, np.nan)
+
+
+def _moes_asymptotes(u: ArrayLike, g: ArrayLike, w: ArrayLike) -> tuple[np.ndarray, ...]:
+    """Moes' four asymptotes H_RI, H_RP, H_EI, H_EP (in Hc (2U)^-1/2) and (2U)^1/2."""
     two_u = 2.0 * np.asarray(u, dtype=float)
     m = np.asarray(w) * two_u**-0.5
     lam = np.asarray(g) * two_u**0.25
-    h_ri = 3.0 / m
-    h_ei = 2.621 * m**-0.2
-    h_rp = 1.287 * lam ** (2.0 / 3.0)
-    h_ep = 1.311 * m**-0.125 * lam**0.75
-    s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
-    h = ((h_ri ** (7 / 3) + h_ei ** (7 / 3)) ** (3 * s / 7) + (h_rp**-3.5 + h_ep**-3.5) ** (-2 * s / 7)) ** (1 / s)
-    central = h * two_u**0.5
-    return central, np.full_like(central, np.nan)
+    return 3.0 / m, 1.287 * lam ** (2.0 / 3.0), 2.621 * m**-0.2, 1.311 * m**-0.125 * lam**0.75, two_u**0.5
+
+
+def line_regime(u: ArrayLike, g: ArrayLike, w: ArrayLike) -> np.ndarray:
+    """Regime code (index into :data:`REGIMES`) of a line contact from Moes' asymptotes, the
+    line contact's regime map in M and L (docs/theory.md Sect. 15.2): in Moes' blend the larger of
+    H_RI, H_EI carries the isoviscous part and the smaller of H_RP, H_EP the piezoviscous part
+    (negative exponent), and the larger of the two parts the film; the regime is the asymptote
+    that so dominates."""
+    h_ri, h_rp, h_ei, h_ep, _ = _moes_asymptotes(u, g, w)
+    iso = np.where(h_ri >= h_ei, 0, 2)
+    piezo = np.where(h_rp <= h_ep, 1, 3)
+    return np.where(np.maximum(h_ri, h_ei) >= np.minimum(h_rp, h_ep), iso, piezo)
 
 
 #: Film formulas of line contacts: ``formula(U, G, W') -> (Hc, Hmin)``.

@@ -115,7 +115,8 @@ class ContactState:
     film_ratio : ndarray
         Lambda = h_c / sqrt(Rq1^2 + Rq2^2).
     regime : ndarray
-        Index into :data:`shaftline.contact.ehl.REGIMES` (point contacts), -1 for line contacts.
+        Index into :data:`shaftline.contact.ehl.REGIMES`: the point-contact map, or Moes' asymptotes
+        for line contacts.
     friction, mixed_friction, full_film_friction, load_sharing, thermal_correction : ndarray
         f, f_a, f_c, g and c of seed 002.
     power_intensity : ndarray
@@ -188,7 +189,7 @@ def evaluate(
         half_width, max_shear, depth = contact.half_width, contact.max_shear, contact.max_shear_depth
         formula = ehl.method(ehl.LINE_FILM_METHODS, model.film, "film_method")
         central, minimum = formula(u_param, g_param, ehl.line_load_parameter(load, modulus, radius_x))
-        regime = np.full(np.shape(central), -1)
+        regime = ehl.line_regime(u_param, g_param, ehl.line_load_parameter(load, modulus, radius_x))
     elif model.geometry == "point":
         point = hertz.point_contact(load, radius_x, radius_y, modulus, model.ellipticity_method)
         contact_p0, half_width = point.peak_pressure, point.semi_axis_x
