@@ -124,3 +124,19 @@ def require_positive(field: str, value: float, unit: str = "") -> float:
     if number <= 0.0:
         raise InputError(field, number, unit, "> 0")
     return number
+
+
+def first_offending(values: Any, ok: Any) -> float:
+    """The first element of ``values`` where the (broadcastable) mask ``ok`` is False, as a float:
+    the value an :class:`InputError` on an array should quote (its first element may be fine).
+
+    >>> first_offending([1.0, -2.0, -3.0], [True, False, False])
+    -2.0
+    """
+    import numpy as np
+
+    array = np.asarray(values, dtype=float)
+    mask = ~np.asarray(ok, dtype=bool)
+    shape = np.broadcast_shapes(array.shape, mask.shape)
+    picked = np.broadcast_to(array, shape)[np.broadcast_to(mask, shape)]
+    return float(picked[0]) if picked.size else float(np.ravel(array)[0])

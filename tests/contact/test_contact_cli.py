@@ -54,6 +54,13 @@ def test_example_runs_with_report_and_json(tmp_path):
         ('roughness_ra = "0.4 um"', 'roughness_ra = "0.4 um"\nroughness_rq = "0.5 um"', "contact.body_1.roughness_ra"),
         ("speed_factors = [0.002, 2.0]", "speed_factors = [2.0, 0.002]", "contact.sweep.speed_factors"),
         ('geometry = "line"', 'geometry = "line"\nfilm_method = "hamrock_dowson"', "contact.film_method"),
+        # in the ester's data range but so cold and fast that Gupta's thermal factor would turn the film
+        # negative (Eq. 6 extrapolated so that the film is reached): the fit's limit is named
+        (
+            'temperature = "90 degC"',
+            'temperature = "-20 degC"\nextrapolate = true',
+            "contact.thermal loading L = 3232: allowed < 980.5, where Gupta's thermal reduction stays positive",
+        ),
     ],
 )
 def test_bad_input_one_line_exit_2_nothing_written(tmp_path, old, new, message):

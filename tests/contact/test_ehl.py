@@ -13,11 +13,68 @@ GRID = np.meshgrid(np.logspace(-12, -10, 9), np.linspace(2000, 6000, 5), np.logs
 def test_dowson_toyoda_and_moes_agree_in_the_ehl_range():
     # Moes (1992) fitted other numerical solutions than Dowson & Toyoda (1979): over
     # U 1e-12..1e-10, G 2000..6000, W' 5e-5..5e-4 (gears, rollers) their central films differ by
-    # -9.4 % to +5.3 %; 10 % is the scatter of such fits against numerical EHL solutions.
+    # -7.0 % to +6.6 %; 10 % is the scatter of such fits against numerical EHL solutions.
     u, g, w = GRID
     dt, _ = ehl.dowson_toyoda(u, g, w)
     moes, _ = ehl.moes(u, g, w)
     assert np.abs(moes / dt - 1).max() < 0.10
+
+
+def test_moes_as_a_second_public_transcription_states_it():
+    # Gelinck & Schipper's (2000) mixed-lubrication form of Moes' line-contact central film, as a public
+    # gear code states it (github.com/Konglingyu1997/Mixed-lubrication-Helical-gear, README.md: groups
+    # M = W' Us^-1/2, L = G Us^1/4 with Us = eta0 (u1 + u2)/(E' R), the same four asymptotes, and
+    # s = (7 + 8 exp(-2 gamma^-0.4 H_EI/H_RI))/5) reduces to Moes' with the film carrying all the load,
+    # gamma = 1. Written out here with gamma kept, it must equal ehl.moes to round-off everywhere, in the
+    # rigid, transition and EHL regimes (the point contact's s = 3/2 (1 + exp(-1.2 H_EI/H_RI)), used
+    # before, differs by up to 7 % in the transitions).
+    gamma = 1.0
+    u = np.logspace(-13, -8, 11)[:, None, None]
+    w = np.logspace(-7, -3, 9)[None, :, None]
+    g = np.array([0.0 + 1e-9, 500.0, 5000.0])[None, None, :]
+    us = 2 * u  # eta0 (u1 + u2)/(E' R) from U on the mean speed
+    m, lam = w * us**-0.5, g * us**0.25
+    ri, ei, rp, ep = 3 / m, 2.621 * m**-0.2, 1.287 * lam ** (2 / 3), 1.311 * m**-0.125 * lam**0.75
+    s = (7 + 8 * np.exp(-2 * gamma**-0.4 * ei / ri)) / 5
+    h = (
+        (
+            gamma ** (s / 2) * (ri ** (7 / 3) + gamma ** (-14 / 15) * ei ** (7 / 3)) ** (3 * s / 7)
+            + gamma ** (-s / 2) * (rp**-3.5 + ep**-3.5) ** (-2 * s / 7)
+        )
+        ** (1 / s)
+        * gamma**0.5
+        * us**0.5
+    )
+    central, minimum = ehl.moes(u, g, w)
+    np.testing.assert_allclose(central, h, rtol=1e-12)
+    assert np.all(np.isnan(minimum))
+
+
+def test_line_regime_map_from_moes_asymptotes():
+    # Deep inside each regime the blended film is its asymptote (within 5 %) and the map names it;
+    # in M = W'(2U)^-1/2, L = G(2U)^1/4: light load isoviscous (M 0.01, L 0), heavy isoviscous
+    # (M 1e3, L 0), light load piezoviscous (M 0.01, L 1e4), heavy piezoviscous (M 1e3, L 20).
+    u = 1e-10
+    cases = {
+        "rigid-isoviscous": (1e-2, 1e-9, lambda m, lam: 3 / m),
+        "elastic-isoviscous": (1e3, 1e-9, lambda m, lam: 2.621 * m**-0.2),
+        "rigid-piezoviscous": (1e-2, 1e4, lambda m, lam: 1.287 * lam ** (2 / 3)),
+        "elastic-piezoviscous": (1e3, 20.0, lambda m, lam: 1.311 * m**-0.125 * lam**0.75),
+    }
+    for name, (m, lam, asymptote) in cases.items():
+        w, g = m * np.sqrt(2 * u), lam / (2 * u) ** 0.25
+        central, _ = ehl.moes(u, g, w)
+        assert float(central) / (asymptote(m, lam) * np.sqrt(2 * u)) == pytest.approx(1.0, abs=0.05), name
+        assert ehl.REGIMES[int(ehl.line_regime(u, g, w))] == name
+    # the seed 002 gear flank (contact_ehl.toml: 300 N/mm, Rx 12 mm, 5.9 mPa s, 73 m/s, alpha 1.04e-8)
+    # and a line-contact elastomer seal (E' 10 MPa, 1 N/mm, R 5 mm, 0.05 Pa s, 1 m/s) fall where the
+    # textbooks place them
+    e, rx = 226.4e9, 11.97e-3
+    gear = ehl.line_regime(5.9e-3 * 73.25 / (e * rx), 1.04e-8 * e, 3e5 / (e * rx))
+    assert ehl.REGIMES[int(gear)] == "elastic-piezoviscous"
+    e, rx = 1e7, 5e-3
+    seal = ehl.line_regime(0.05 * 1.0 / (e * rx), 2e-8 * e, 1e3 / (e * rx))
+    assert ehl.REGIMES[int(seal)] == "elastic-isoviscous"
 
 
 def _martin_and_blok():
@@ -118,6 +175,17 @@ def test_gupta_reduces_to_murch_wilson_in_pure_rolling():
     assert np.abs(ratio - 1).max() < 0.05
     # sliding reduces the film further (Gupta: the (1 + 2.23 S^0.83) term)
     assert np.all(ehl.gupta(loading, 0.5, 0.003) < ehl.gupta(loading, 0.0, 0.003))
+
+
+def test_gupta_beyond_its_positive_range_is_an_input_error():
+    # The numerator 1 - 13.2 (p0/E') L^0.42 vanishes at L = (13.2 p0/E')^(-1/0.42): 1100 at p0/E' = 0.004.
+    # Just below the factor is small and positive; beyond, the fit would give a negative film.
+    limit = (13.2 * 0.004) ** (-1 / 0.42)
+    assert limit == pytest.approx(1100, rel=1e-3)
+    assert 0 < float(ehl.gupta(0.99 * limit, 0.1, 0.004)) < 0.01
+    with pytest.raises(InputError, match=r"thermal loading L = 1111: allowed < 1100, where Gupta"):
+        ehl.gupta(np.array([1.0, 1.01 * limit]), 0.1, 0.004)
+    assert float(ehl.murch_wilson(1.01 * limit)) > 0  # the pure-rolling alternative has no limit
 
 
 def test_film_ratio_and_roughness():

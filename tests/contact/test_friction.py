@@ -79,3 +79,13 @@ def test_seed_friction_regimes():
     assert float(dry.coefficient) == pytest.approx(0.1 * float(dry.thermal))
     wet = friction.seed_friction(film_ratio=3.0, **kwargs)
     assert float(wet.coefficient) == pytest.approx(float(wet.full_film * wet.thermal))
+
+
+def test_errors_on_arrays_quote_the_offending_value():
+    # the first element is fine: the message must quote the bad one (it quoted the first)
+    with pytest.raises(InputError, match=r"film_ratio = -0.5: allowed >= 0"):
+        friction.load_sharing(np.array([1.0, -0.5, 2.0]))
+    with pytest.raises(InputError, match=r"film_ratio = nan"):
+        friction.load_sharing(np.array([1.0, np.nan]))
+    with pytest.raises(InputError, match=r"eta0 p_H u = -1 Pa s GPa m/s"):
+        friction.thermal_correction(np.array([0.3, -1.0]), 0.5)

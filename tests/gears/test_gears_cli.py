@@ -62,6 +62,11 @@ def test_fzg_case_ranks_the_stages_alike_and_calibrate_option_replaces_the_recor
         ("teeth = [28, 28]", "teeth = [12, 28]", "gears.pair.shift[0] = 0: allowed >= 0.2981: below it 12 teeth"),
         ('centre_distance = "140 mm"', 'centre_distance = "143 mm"', "gears.pair.centre_distance = 0.143 m"),
         ('centre_distance = "140 mm"', "addendum = 0.5", "gears.pair.addendum = 0.5: allowed teeth long enough"),
+        (
+            'centre_distance = "140 mm"',
+            'tip_diameter = ["200 mm", "150 mm"]',
+            "gears.pair.tip_diameter[0] = 0.2 m: allowed a pinion tip that meets the wheel flank",
+        ),
         ('lubricant = "MIL-PRF-23699"', 'lubricant = "SAE 90"', "gears.lubricant = 'SAE 90': allowed one of"),
         (
             'oil_temperature = "90 degC"\ncritical_temperature = "126 degC"',

@@ -105,6 +105,9 @@ def test_bad_gear_input():
     GearPair(12, 40, 5e-3, 20 * DEG, 20e-3, shift_1=0.3, shift_2=-0.3)  # shifted: fine
     with pytest.raises(InputError, match="centre_distance = 0.152 m: allowed 0.15 m within 0.05 module"):
         GearPair(20, 40, 5e-3, 20 * DEG, 20e-3, centre_distance=0.152)
+    # a pinion tip reaching past T2 (rho_2 < 0 at E): named, not a negative radius downstream
+    with pytest.raises(InputError, match="tip_radius_1 = 0.1 m: allowed a pinion tip that meets the wheel flank"):
+        GearPair(28, 28, 5e-3, 20 * DEG, 20e-3, tip_radius_1=0.1)
     with pytest.raises(InputError, match="contact ratio >= 1"):
         GearPair(20, 40, 5e-3, 20 * DEG, 20e-3, addendum=0.5)
     with pytest.raises(InputError, match="teeth_1"):

@@ -31,6 +31,25 @@ def fzg_a() -> GearPair:
     )  # fmt: skip
 
 
+def test_fzg_type_a_data_are_consistent_with_each_other():
+    # The type A data come from memory of ISO 14635-1 (no public text found to check them against,
+    # docs/theory.md Sect. 19.3); this checks them against each other, which a slip in one number
+    # would break: both tip diameters are the standard addendum on the shifts, d + 2 m (1 + x), to
+    # 0.005 mm (88.77 and 112.50 mm), and the wheel's shift lies below the rack's undercut limit, as the
+    # gear is cut. The shifts' sum 0.3635 gives 91.54 mm without backlash, 0.04 mm above the rig's
+    # 91.5 mm (type C's 0.3532 gives 91.50 exactly): 0.03 mm of tooth thickness that the thickness
+    # allowances of real test gears (-0.05 mm and more) take up (x1 = 0.8535 would give 91.50 mm but a
+    # tip of 88.68 mm); a slip in x1's first decimal (0.7635, 0.9635) moves it by 0.4 mm, beyond the
+    # 0.05-module tolerance (0.225 mm) the mesh accepts.
+    pair = fzg_a()
+    assert pair._shifted_centre_distance() == pytest.approx(91.54e-3, abs=5e-6)
+    for gear, shift in ((1, 0.8635), (2, -0.5)):
+        standard = pair.pitch_radius(gear) + 4.5e-3 * (1.0 + shift)
+        assert pair.tip_radius(gear) == pytest.approx(standard, abs=2.5e-6)
+    with pytest.raises(InputError, match="shift_2 = -0.5: allowed >= -0.4037"):
+        GearPair(16, 24, 4.5e-3, 20 * DEG, 20e-3, shift_1=0.8635, shift_2=-0.5)
+
+
 def seed_mesh(points: int = 200) -> GearMesh:
     pair = GearPair(28, 28, 5e-3, 20 * DEG, 20e-3)  # seed 002 Table 1, 140 mm centre distance
     model = ContactModel(contact_lubricant("MIL-PRF-23699"), extrapolate=True)

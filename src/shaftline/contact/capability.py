@@ -160,10 +160,10 @@ class LubricatedContact(Capability["ContactSection", "ContactStudy", "ContactRes
             ["friction coefficient f", f(op.friction, 1, ".4f")],
             ["frictional power intensity [MW/m²]", f(op.power_intensity, 1e-6, ".1f")],
         ]
-        if not line:
-            from shaftline.contact.ehl import REGIMES
+        from shaftline.contact.ehl import REGIMES
 
-            rows.insert(6, ["EHL regime (point-contact map, theory 15.2)", REGIMES[int(op.regime)]])
+        source = "Moes' asymptotes" if line else "point-contact map"
+        rows.insert(6, [f"EHL regime ({source}, theory 15.2)", REGIMES[int(op.regime)]])
         return Table(
             ["quantity", "value"], rows, f"Lubricated contact, {study.model.lubricant.name} at {study.temperature:g} °C"
         )

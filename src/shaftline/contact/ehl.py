@@ -84,18 +84,33 @@ def moes(u: ArrayLike, g: ArrayLike, w: ArrayLike) -> tuple[np.ndarray, np.ndarr
     ``H_RI = 3/M``, ``H_EI = 2.621 M^-1/5``, ``H_RP = 1.287 L^2/3``,
     ``H_EP = 1.311 M^-1/8 L^3/4`` blended as
     ``H = ((H_RI^7/3 + H_EI^7/3)^(3s/7) + (H_RP^-7/2 + H_EP^-7/2)^(-2s/7))^(1/s)``,
-    ``s = 3/2 (1 + exp(-1.2 H_EI / H_RI))``. Moes gives no minimum film: NaN."""
+    ``s = (7 + 8 exp(-2 H_EI / H_RI)) / 5`` (the line contact's s; ``3/2 (1 + exp(-1.2 H_EI/H_RI))``
+    is the point contact's, Nijenbanning, Venner & Moes 1994). Moes gives no minimum film: NaN."""
+    h_ri, h_rp, h_ei, h_ep, root_two_u = _moes_asymptotes(u, g, w)
+    s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
+    h = ((h_ri ** (7 / 3) + h_ei ** (7 / 3)) ** (3 * s / 7) + (h_rp**-3.5 + h_ep**-3.5) ** (-2 * s / 7)) ** (1 / s)
+    central = h * root_two_u
+    return central, np.full_like(central, np.nan)
+
+
+def _moes_asymptotes(u: ArrayLike, g: ArrayLike, w: ArrayLike) -> tuple[np.ndarray, ...]:
+    """Moes' four asymptotes H_RI, H_RP, H_EI, H_EP (in Hc (2U)^-1/2) and (2U)^1/2."""
     two_u = 2.0 * np.asarray(u, dtype=float)
     m = np.asarray(w) * two_u**-0.5
     lam = np.asarray(g) * two_u**0.25
-    h_ri = 3.0 / m
-    h_ei = 2.621 * m**-0.2
-    h_rp = 1.287 * lam ** (2.0 / 3.0)
-    h_ep = 1.311 * m**-0.125 * lam**0.75
-    s = 1.5 * (1.0 + np.exp(-1.2 * h_ei / h_ri))
-    h = ((h_ri ** (7 / 3) + h_ei ** (7 / 3)) ** (3 * s / 7) + (h_rp**-3.5 + h_ep**-3.5) ** (-2 * s / 7)) ** (1 / s)
-    central = h * two_u**0.5
-    return central, np.full_like(central, np.nan)
+    return 3.0 / m, 1.287 * lam ** (2.0 / 3.0), 2.621 * m**-0.2, 1.311 * m**-0.125 * lam**0.75, two_u**0.5
+
+
+def line_regime(u: ArrayLike, g: ArrayLike, w: ArrayLike) -> np.ndarray:
+    """Regime code (index into :data:`REGIMES`) of a line contact from Moes' asymptotes, the
+    line contact's regime map in M and L (docs/theory.md Sect. 15.2): in Moes' blend the larger of
+    H_RI, H_EI carries the isoviscous part and the smaller of H_RP, H_EP the piezoviscous part
+    (negative exponent), and the larger of the two parts the film; the regime is the asymptote
+    that so dominates."""
+    h_ri, h_rp, h_ei, h_ep, _ = _moes_asymptotes(u, g, w)
+    iso = np.where(h_ri >= h_ei, 0, 2)
+    piezo = np.where(h_rp <= h_ep, 1, 3)
+    return np.where(np.maximum(h_ri, h_ei) >= np.minimum(h_rp, h_ep), iso, piezo)
 
 
 #: Film formulas of line contacts: ``formula(U, G, W') -> (Hc, Hmin)``.
@@ -175,10 +190,32 @@ def thermal_loading(
 
 def gupta(loading: ArrayLike, slide_roll: ArrayLike, pressure_ratio: ArrayLike) -> np.ndarray:
     """Gupta, Cheng, Zhu, Forster & Schrand (1992) thermal reduction factor of the central
-    film: ``(1 - 13.2 (p0/E') L^0.42) / (1 + 0.213 (1 + 2.23 |S|^0.83) L^0.64)``."""
+    film: ``(1 - 13.2 (p0/E') L^0.42) / (1 + 0.213 (1 + 2.23 |S|^0.83) L^0.64)``.
+
+    The numerator vanishes at ``L = (13.2 p0/E')^(-1/0.42)`` (about 1000 for steel at 1 GPa)
+    and is negative beyond: a negative film. There the fit is outside its range and an
+    :class:`InputError` names the limit (Murch & Wilson's factor has no such limit).
+
+    >>> round(float(gupta(1.0, 0.0, 0.004)), 3)
+    0.781
+    """
     lo = np.asarray(loading, dtype=float)
     s = np.abs(np.asarray(slide_roll, dtype=float))
-    return (1.0 - 13.2 * np.asarray(pressure_ratio) * lo**0.42) / (1.0 + 0.213 * (1.0 + 2.23 * s**0.83) * lo**0.64)
+    ratio = np.asarray(pressure_ratio, dtype=float)
+    numerator = 1.0 - 13.2 * ratio * lo**0.42
+    bad = ~(numerator > 0.0)
+    if np.any(bad):
+        value = float(np.broadcast_to(lo, bad.shape)[bad].flat[0])
+        limit = float((13.2 * np.broadcast_to(ratio, bad.shape)[bad].flat[0]) ** (-1.0 / 0.42))
+        raise InputError(
+            "thermal loading L",
+            float(f"{value:.4g}"),
+            "",
+            f"< {limit:.4g}, where Gupta's thermal reduction stays positive (beyond it the fit gives a negative "
+            "film: a colder, more viscous oil or a higher speed than it covers); thermal_method = "
+            "'murch_wilson' has no such limit",
+        )
+    return numerator / (1.0 + 0.213 * (1.0 + 2.23 * s**0.83) * lo**0.64)
 
 
 def murch_wilson(loading: ArrayLike, slide_roll: ArrayLike = 0.0, pressure_ratio: ArrayLike = 0.0) -> np.ndarray:

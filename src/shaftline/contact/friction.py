@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from shaftline.contact.rheology import ExtrapolationWarning
-from shaftline.errors import InputError
+from shaftline.errors import InputError, first_offending
 
 ArrayLike = float | np.ndarray
 
@@ -44,7 +44,7 @@ def load_sharing(film_ratio: ArrayLike) -> np.ndarray:
     """
     lam = np.asarray(film_ratio, dtype=float)
     if np.any(~(lam >= 0.0)):
-        raise InputError("film_ratio", float(np.ravel(lam)[0]), "", ">= 0")
+        raise InputError("film_ratio", first_offending(lam, lam >= 0.0), "", ">= 0")
     g = 1.21 * lam**0.64 / (1.0 + 0.37 * lam**1.26)
     return np.where(lam > FULL_FILM_RATIO, 1.0, g)
 
@@ -107,7 +107,7 @@ def thermal_correction(power: ArrayLike, slide_roll: ArrayLike, extrapolate: boo
     x = np.asarray(power, dtype=float)
     s = np.abs(np.asarray(slide_roll, dtype=float))
     if np.any(~(x > 0.0)):
-        raise InputError("eta0 p_H u", float(np.ravel(x)[0]), "Pa s GPa m/s", "> 0")
+        raise InputError("eta0 p_H u", first_offending(x, x > 0.0), "Pa s GPa m/s", "> 0")
     applies = s > peak_slide_roll(x)
     low, high = THERMAL_FIT_RANGE
     outside = applies & ((x < low) | (x > high))

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from shaftline.errors import InputError
+from shaftline.errors import InputError, first_offending
 
 ArrayLike = float | np.ndarray
 
@@ -67,7 +67,7 @@ def reduced_modulus(
     for name, nu in (("poisson_ratio_1", poisson_ratio_1), ("poisson_ratio_2", poisson_ratio_2)):
         n = np.asarray(nu, dtype=float)
         if np.any(~((n >= 0.0) & (n < 0.5))):
-            raise InputError(name, float(np.ravel(n)[0]), "", "in [0, 0.5)")
+            raise InputError(name, first_offending(n, (n >= 0.0) & (n < 0.5)), "", "in [0, 0.5)")
     return 2.0 / ((1.0 - np.asarray(poisson_ratio_1) ** 2) / e1 + (1.0 - np.asarray(poisson_ratio_2) ** 2) / e2)
 
 
@@ -79,7 +79,10 @@ def reduced_radius(radius_1: ArrayLike, radius_2: ArrayLike) -> np.ndarray:
     curvature = 1.0 / r1 + 1.0 / r2
     if np.any(~(curvature > 0.0)):
         raise InputError(
-            "radius_2", float(np.ravel(r2)[0]), "m", "a sum of curvatures 1/R1 + 1/R2 > 0 (convex contact)"
+            "radius_2",
+            first_offending(r2, curvature > 0.0),
+            "m",
+            "a sum of curvatures 1/R1 + 1/R2 > 0 (convex contact)",
         )
     return 1.0 / curvature
 
@@ -200,7 +203,12 @@ def brewe_hamrock_ellipticity(curvature_ratio: ArrayLike) -> tuple[np.ndarray, n
 def _ratio(curvature_ratio: ArrayLike) -> np.ndarray:
     alpha = np.asarray(curvature_ratio, dtype=float)
     if np.any(~(alpha >= 1.0)) or np.any(~np.isfinite(alpha)):
-        raise InputError("curvature_ratio", float(np.ravel(alpha)[0]), "", ">= 1 and finite (Ry/Rx with Rx <= Ry)")
+        raise InputError(
+            "curvature_ratio",
+            first_offending(alpha, (alpha >= 1.0) & np.isfinite(alpha)),
+            "",
+            ">= 1 and finite (Ry/Rx with Rx <= Ry)",
+        )
     return alpha
 
 
@@ -368,7 +376,12 @@ def point_contact(
     ry = _positive("radius_y", radius_y, "m")
     e = _positive("modulus", modulus, "Pa")
     if np.any(ry < rx * (1.0 - 1e-12)):
-        raise InputError("radius_y", float(np.ravel(ry)[0]), "m", ">= radius_x (x is the direction of smaller radius)")
+        raise InputError(
+            "radius_y",
+            first_offending(ry, ry >= rx * (1.0 - 1e-12)),
+            "m",
+            ">= radius_x (x is the direction of smaller radius)",
+        )
     if method not in ELLIPTICITY_METHODS:
         raise InputError("method", method, "", " or ".join(ELLIPTICITY_METHODS))
     alpha = ry / rx

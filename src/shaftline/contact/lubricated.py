@@ -15,7 +15,7 @@ import numpy as np
 from shaftline.contact import ehl, hertz
 from shaftline.contact.friction import seed_friction
 from shaftline.contact.rheology import ContactLubricant
-from shaftline.errors import InputError
+from shaftline.errors import InputError, first_offending
 
 ArrayLike = float | np.ndarray
 Geometry = Literal["line", "point"]
@@ -115,7 +115,8 @@ class ContactState:
     film_ratio : ndarray
         Lambda = h_c / sqrt(Rq1^2 + Rq2^2).
     regime : ndarray
-        Index into :data:`shaftline.contact.ehl.REGIMES` (point contacts), -1 for line contacts.
+        Index into :data:`shaftline.contact.ehl.REGIMES`: the point-contact map, or Moes' asymptotes
+        for line contacts.
     friction, mixed_friction, full_film_friction, load_sharing, thermal_correction : ndarray
         f, f_a, f_c, g and c of seed 002.
     power_intensity : ndarray
@@ -174,7 +175,9 @@ def evaluate(
     u2 = np.asarray(speed_2, dtype=float)
     rolling = 0.5 * (u1 + u2)
     if np.any(~(rolling > 0.0)):
-        raise InputError("rolling_speed", float(np.ravel(rolling)[0]), "m/s", "> 0 (mean of the surface speeds)")
+        raise InputError(
+            "rolling_speed", first_offending(rolling, rolling > 0.0), "m/s", "> 0 (mean of the surface speeds)"
+        )
     sliding = u2 - u1
     slide_roll = sliding / rolling
     eta0 = lubricant.dynamic_viscosity(temperature, model.extrapolate)
@@ -186,7 +189,7 @@ def evaluate(
         half_width, max_shear, depth = contact.half_width, contact.max_shear, contact.max_shear_depth
         formula = ehl.method(ehl.LINE_FILM_METHODS, model.film, "film_method")
         central, minimum = formula(u_param, g_param, ehl.line_load_parameter(load, modulus, radius_x))
-        regime = np.full(np.shape(central), -1)
+        regime = ehl.line_regime(u_param, g_param, ehl.line_load_parameter(load, modulus, radius_x))
     elif model.geometry == "point":
         point = hertz.point_contact(load, radius_x, radius_y, modulus, model.ellipticity_method)
         contact_p0, half_width = point.peak_pressure, point.semi_axis_x

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from shaftline.errors import InputError
+from shaftline.errors import InputError, first_offending
 from shaftline.gears.mesh import GearPair
 
 
@@ -93,5 +93,5 @@ def normal_load_per_length(pair: GearPair, pinion_torque: float | np.ndarray, sh
     """Normal load per unit length of contact line, ``X_Gamma T_1 / (r_b1 b)``, N/m (torque N m)."""
     torque = np.asarray(pinion_torque, dtype=float)
     if np.any(~(torque > 0)):
-        raise InputError("pinion_torque", float(np.ravel(torque)[0]), "N m", "> 0")
+        raise InputError("pinion_torque", first_offending(torque, torque > 0), "N m", "> 0")
     return torque * np.asarray(share) / (pair.base_radius_1 * pair.face_width)

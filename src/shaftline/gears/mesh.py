@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from shaftline.errors import InputError, require_positive
+from shaftline.errors import InputError, first_offending, require_positive
 
 #: Tolerance on the centre distance against the one the profile shifts give, in normal
 #: modules: more is backlash no gear is cut for (or interference when smaller).
@@ -142,6 +142,15 @@ class GearPair:
                 self.tip_radius(2),
                 "m",
                 "a wheel tip that meets the pinion flank above its base circle (no interference)",
+            )
+        if self.end_of_contact >= self.line_of_action:
+            # the pinion's tip would reach past T2: the wheel's flank has no involute there
+            # (rho_2 <= 0), the mirror of the check above
+            raise InputError(
+                "tip_radius_1",
+                self.tip_radius(1),
+                "m",
+                "a pinion tip that meets the wheel flank above its base circle (no interference)",
             )
         if self.transverse_contact_ratio < 1.0:
             raise InputError(
@@ -290,7 +299,7 @@ def path_of_contact(
         raise InputError("points", points, "", ">= 2")
     omega_1 = np.asarray(pinion_speed, dtype=float)
     if np.any(~(omega_1 > 0)):
-        raise InputError("pinion_speed", float(np.ravel(omega_1)[0]), "rad/s", "> 0")
+        raise InputError("pinion_speed", first_offending(omega_1, omega_1 > 0), "rad/s", "> 0")
     if positions is None:
         rho_1 = np.linspace(pair.start_of_contact, pair.end_of_contact, points)
     else:
