@@ -96,16 +96,26 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
         )
 
     def to_json(self, result: BearingStudyResult) -> dict[str, Any]:
+        import numpy as np
+
         from shaftline.film.summary import EXTRA_UNITS, equilibrium_summary, units
 
         mixed = any(run.case.geometry.surface is not None for run in result.cases)
+        lined = any(run.case.geometry.liner is not None for run in result.cases)
+        extra = {"liner_deformation_map": "m"} if lined else {}
         out: dict[str, Any] = {
-            "units": {**units(mixed), **EXTRA_UNITS},
+            "units": {**units(mixed, lined), **EXTRA_UNITS, **extra},
             "cases": [
                 {"name": run.case.name, **equilibrium_summary(run.equilibrium, run.coefficients)}
                 for run in result.cases
             ],
         }
+        for entry, run in zip(out["cases"], result.cases, strict=True):
+            deformation = run.equilibrium.state.liner_deformation
+            if deformation is not None:
+                # Rows along the bearing from the aft edge, columns around the bore from the grid's
+                # first angle (theta of the state), metres.
+                entry["liner_deformation_map"] = np.round(deformation, 12).tolist()
         if result.stribeck is not None:
             out["stribeck"] = stribeck_json(result.stribeck)
         return out
@@ -178,6 +188,14 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 for label, key, scale, digits in MIXED_TABLE_ROWS
             ]
             rows.append(["lubrication regime"] + [s.get("lubrication_regime") or "smooth" for s in summaries])
+        if any("max_liner_deformation" in s for s in summaries):
+            rows.append(
+                ["max liner deformation [µm]"]
+                + [
+                    fmt(s["max_liner_deformation"], 1e6, 4) if "max_liner_deformation" in s else "rigid"
+                    for s in summaries
+                ]
+            )
         rows.append(["converged"] + ["yes" if s["converged"] else "NO" for s in summaries])
         rows.append(["contact (film at floor)"] + ["YES" if s["contact"] else "no" for s in summaries])
         return Table(["quantity"] + [s["name"] for s in summaries], rows, "Bearing film at equilibrium")
@@ -272,6 +290,15 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                         figures.contact_maps,
                         (state, name),
                         caption=f"{name}: asperity contact pressure and film-thickness ratio λ = h/σ",
+                    )
+                )
+            if state.liner_deformation is not None:
+                blocks.append(
+                    Figure(
+                        f"bearing_{index}_liner.png",
+                        figures.liner_maps,
+                        (state, name),
+                        caption=f"{name}: liner deformation (column model) and the film including it",
                     )
                 )
             blocks.append(
