@@ -21,8 +21,10 @@ from shaftline.cases import load_case
 from shaftline.errors import InputError
 from shaftline.film import BearingGeometry, JournalBearing
 from shaftline.film.bearing import LINER_TOLERANCE
+from shaftline.film.elastic import film_residual_jacobian
 from shaftline.film.liner import LINER_PRESETS, Liner
-from shaftline.film.roughness import SurfaceRoughness
+from shaftline.film.reynolds import apply_operator, stencil_derivative
+from shaftline.film.roughness import RoughFilm, SurfaceRoughness
 from tests.conftest import invoke
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -102,6 +104,25 @@ def test_coupled_solution_obeys_the_column_law_node_by_node(ntua) -> None:  # no
     # The journal has passed the rigid bore surface into the liner, which leaves a film.
     assert rigid.min() < 0.0 < state.min_film_thickness
     assert state.max_liner_deformation > 1e-6  # micrometres: the test is not of a stiff liner
+
+
+@pytest.mark.parametrize("rough", [False, True])
+def test_film_residual_jacobian_is_the_stencil_derivative(rough: bool) -> None:
+    # B = dr/dH assembled face by face against the film's directional derivative
+    # (stencil_derivative, as the film's other linearisations use it), for random film changes,
+    # with a squeeze rate (rough: the squeeze factor's derivative) on a small periodic grid.
+    rng = np.random.default_rng(3)
+    shape = (7, 12)
+    film = 0.3 + rng.random(shape)
+    pressure = rng.random(shape)
+    rate = rng.standard_normal(shape)
+    film_model = RoughFilm(0.2, 1.0) if rough else None
+    jacobian = film_residual_jacobian(film, pressure, 0.5, 0.2, film_model, rate)
+    for _ in range(3):
+        change = rng.standard_normal(shape)
+        dc_theta, dc_z, d_rhs = stencil_derivative(film, change, 0.5, 0.2, film_model, rate)
+        expected = apply_operator(dc_theta, dc_z, pressure) - d_rhs
+        np.testing.assert_allclose(jacobian @ change.ravel(), expected.ravel(), rtol=1e-12, atol=1e-12)
 
 
 @pytest.mark.parametrize("rough", [False, True])

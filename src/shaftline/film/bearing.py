@@ -658,6 +658,7 @@ class JournalBearing:
         tilt_rates: tuple[float, float] = (0.0, 0.0),
         start_pressure: np.ndarray | None = None,
         deformation: np.ndarray | None = None,
+        chord: LinerSystem | None = None,
     ) -> _Evaluation:
         """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
         bent journal of :meth:`film_load`); ``tilt_rates`` (rad/s, dy/dx and dz/dx per second)
@@ -667,7 +668,8 @@ class JournalBearing:
         condition's active set instead of ``start``
         (:meth:`~shaftline.film.reynolds.ReynoldsSolver.predicted_set`). With an elastic liner
         the film and the liner are solved together (:meth:`_evaluate_liner`), from the
-        ``deformation`` given (m) or none."""
+        ``deformation`` given (m) or none, its first steps with the Newton matrix ``chord`` of a
+        nearby film when given."""
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(geometry or self.geometry, grid, position)
@@ -702,7 +704,9 @@ class JournalBearing:
         if start is None and warm:
             start = cache.last_cavitated
         if liner is not None:
-            return self._evaluate_liner(position, grid, rigid, rate, start, film - rigid, geometry or self.geometry)
+            return self._evaluate_liner(
+                position, grid, rigid, rate, start, film - rigid, geometry or self.geometry, chord
+            )
         solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
         cache.last_cavitated = solution.cavitated
         relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
@@ -720,12 +724,15 @@ class JournalBearing:
         start: np.ndarray | None,
         deformation: np.ndarray,
         geometry: BearingGeometry,
+        chord: LinerSystem | None = None,
     ) -> _Evaluation:
         """The film and the column-model liner solved together by Newton's method on the coupled
         system (:mod:`shaftline.film.elastic`, docs/theory.md "Elastic liner"), from the
         deformation ``deformation`` (m) on the ``rigid`` film (m, which may be negative where
         the journal has passed the rigid bore); a backtracking step keeps the film positive and
-        lowers the liner residual."""
+        lowers the liner residual. With ``chord``, the Newton matrix of a nearby film (a line-search
+        trial's parent), the steps use it while each at least halves the residual (a chord
+        iteration: no factorisation), then the film's own."""
         cache = self._solver_state()
         solver = cache.reynolds
         liner = geometry.liner
@@ -764,7 +771,7 @@ class JournalBearing:
             if iterations >= LINER_ITERATIONS:
                 raise LinerConvergenceError(norm)
             iterations += 1
-            system = self._liner_system(evaluation)
+            system = chord if chord is not None else self._liner_system(evaluation)
             _, step = system.step(residual)
             step = step.reshape(d_nd.shape)
             film_now = rigid_nd + d_nd
@@ -772,6 +779,15 @@ class JournalBearing:
             # Fraction to the boundary: the film may close by at most 80 % of itself in a step.
             closing = np.min(np.where(step < 0.0, -0.8 * film_now / np.minimum(step, -1e-300), np.inf))
             alpha = min(alpha, float(closing))
+            if chord is not None:
+                trial = solve(d_nd + alpha * step, evaluation.solution.cavitated)
+                if trial[2] <= 0.5 * norm:
+                    evaluation, residual, norm = trial
+                    assert evaluation.deformation is not None
+                    d_nd = evaluation.deformation / c
+                else:
+                    chord = None  # too slow or diverging: the film's own matrix from here
+                continue
             while True:
                 trial = solve(d_nd + alpha * step, evaluation.solution.cavitated)
                 if trial[2] < (1.0 - 1e-4 * alpha) * norm or alpha < 1e-6:
@@ -1439,6 +1455,7 @@ class JournalBearing:
                     start=start,
                     start_pressure=guess,
                     deformation=self._predicted_deformation(evaluation, response, alpha * step),
+                    chord=evaluation.liner_system,
                 )
             except (_NegativeFilm, LinerConvergenceError):
                 alpha *= 0.5

@@ -19,9 +19,9 @@ rigid film change ``dH_r`` with the liner following: the liner equation linearis
 ``M dD = K dP + k p_a' dH_r``, so the film changes by ``dH = (dH_r + K dP) / M`` and
 ``(A + B K/M) dP = -B (dH_r / M)``.
 
-``B`` is assembled column by column from :func:`~shaftline.film.reynolds.stencil_derivative`,
-the film's own derivative, by colouring: nodes whose five-point neighbourhoods do not overlap
-are perturbed together, so a dozen directional derivatives give every column.
+``B`` is assembled face by face from the same conductance and transport derivatives as
+:func:`~shaftline.film.reynolds.stencil_derivative`, the film's own directional derivative
+(checked against it in tests/film/test_liner.py).
 """
 
 from __future__ import annotations
@@ -33,25 +33,18 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from shaftline.film.reynolds import Stencil, apply_operator, stencil_derivative
+from shaftline.film.reynolds import Stencil
 from shaftline.film.roughness import RoughFilm
 
 __all__ = ["LinerSystem", "film_operator", "film_residual_jacobian"]
 
 
 @lru_cache(maxsize=8)
-def _colouring(nz: int, nt: int) -> tuple[np.ndarray, int]:
-    """Colour of each node (nz, nt) such that two nodes of one colour are at least three steps
-    apart (their five-point neighbourhoods are disjoint), periodic in theta; and the count.
-
-    Columns ``i < 3 (nt // 3)`` take ``i mod 3``; the one or two columns left over take colours of
-    their own (the wrap from the last column to the first would otherwise join two of a colour);
-    rows take ``j mod 3``."""
-    bulk = 3 * (nt // 3)
-    column = np.where(np.arange(nt) < bulk, np.arange(nt) % 3, 3 + np.arange(nt) - bulk)
-    per_row = int(column.max()) + 1
-    colour = column[None, :] + per_row * (np.arange(nz) % 3)[:, None]
-    return colour, 3 * per_row
+def _face_structure(nz: int, nt: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Ends ``a``, ``b`` of the theta faces (each node to its neighbour in the direction of
+    rotation, periodic) and of the z faces (each row to the next), flat node numbers."""
+    node = np.arange(nz * nt).reshape(nz, nt)
+    return node.ravel(), np.roll(node, -1, axis=1).ravel(), node[:-1].ravel(), node[1:].ravel()
 
 
 def film_residual_jacobian(
@@ -63,22 +56,39 @@ def film_residual_jacobian(
     film_rate: np.ndarray | None,
 ) -> sp.csr_matrix:
     """``B = dr/dH`` (n x n, n = nz nt, row-major), the film residual's change with the film at
-    fixed pressure, from :func:`stencil_derivative` (smooth or rough, with the squeeze factor)."""
+    fixed pressure: the derivative of :func:`~shaftline.film.reynolds.stencil_derivative` (smooth
+    or rough, with the squeeze factor) assembled face by face.
+
+    A face between nodes ``a`` and ``b`` with conductance ``g(h_f)`` and Couette transport
+    ``T(h_f)``, ``h_f = (H_a + H_b) / 2``, adds ``g (P_a - P_b) + T`` to ``r_a`` and
+    ``g (P_b - P_a) - T`` to ``r_b`` (theta faces; z faces carry no transport), so both rows get
+    ``g'/2 (P_a - P_b) + T'/2`` (and its negative) in the columns of ``a`` and ``b``.
+    """
     nz, nt = film.shape
-    colour, count = _colouring(nz, nt)
-    node = np.arange(nz * nt).reshape(nz, nt)
-    rows, cols, vals = [], [], []
-    for k in range(count):
-        chosen = colour == k
-        dc_theta, dc_z, d_rhs = stencil_derivative(film, chosen.astype(float), d_theta, d_z, rough, film_rate)
-        change = apply_operator(dc_theta, dc_z, relative_pressure) - d_rhs
-        j, i = np.nonzero(chosen)
-        for dj, di in ((0, 0), (0, 1), (0, -1), (1, 0), (-1, 0)):
-            jj, ii = j + dj, (i + di) % nt
-            inside = (jj >= 0) & (jj < nz)
-            rows.append(node[jj[inside], ii[inside]])
-            cols.append(node[j[inside], i[inside]])
-            vals.append(change[jj[inside], ii[inside]])
+    theta_a, theta_b, z_a, z_b = _face_structure(nz, nt)
+    h_east = 0.5 * (film + np.roll(film, -1, axis=1))
+    h_north = 0.5 * (film[:-1] + film[1:])
+    if rough is None:
+        g_theta = (d_z / d_theta) * 3.0 * h_east**2
+        g_z = (d_theta / d_z) * 3.0 * h_north**2
+        t_theta = np.full(h_east.shape, d_z)
+    else:
+        g_theta = (d_z / d_theta) * rough.conductance_derivative(h_east)
+        g_z = (d_theta / d_z) * rough.conductance_derivative(h_north)
+        t_theta = d_z * rough.transport_derivative(h_east)
+    p = relative_pressure.ravel()
+    along = 0.5 * (g_theta.ravel() * (p[theta_a] - p[theta_b]) + t_theta.ravel())
+    across = 0.5 * (g_theta.ravel() * (p[theta_b] - p[theta_a]) - t_theta.ravel())
+    up = 0.5 * g_z.ravel() * (p[z_a] - p[z_b])
+    rows = [theta_a, theta_a, theta_b, theta_b, z_a, z_a, z_b, z_b]
+    cols = [theta_a, theta_b, theta_a, theta_b, z_a, z_b, z_a, z_b]
+    vals = [along, along, across, across, up, up, -up, -up]
+    if rough is not None and film_rate is not None:
+        # The squeeze on the mean gap: r gains d_theta d_z rate Phi(H), a diagonal term.
+        n = nz * nt
+        rows.append(np.arange(n))
+        cols.append(np.arange(n))
+        vals.append((d_theta * d_z * film_rate * rough.squeeze_factor_derivative(film)).ravel())
     n = nz * nt
     return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(n, n))
 
