@@ -11,6 +11,7 @@ Layout::
     [bearing.lubricant]
     [bearing.surface]            rough journal and bore: mixed lubrication
     [bearing.liner]              elastic liner on the bore (column model)
+    [bearing.thermal]            film temperature from the heat balance
     [bearing.solver]             grid and cavitation model
     [[bearing.variants]]         other bores or tilts solved beside the base case
 """
@@ -482,6 +483,19 @@ def liner_of(section: LinerSection) -> Liner:
     return Liner(thickness=values[0], modulus=values[1], poisson=values[2])  # type: ignore[arg-type]
 
 
+class ThermalSection(Section):
+    """Oil (or water) temperature from the bearing's heat balance (ISO 7902-1 style, docs/theory.md
+    Sect. 8.1): the film runs at the effective temperature where its friction heat and the
+    lubricant's viscosity agree, instead of the lubricant table's temperature. Needs a lubricant
+    whose viscosity follows temperature (a preset or a two-point oil)."""
+
+    inlet_temperature: Annotated[Temperature, Quantity("temperature", ge=-40.0, le=250.0)]
+    """Temperature of the lubricant reaching the film (header tank, cooled oil, the sea)."""
+    heat_to_lubricant: Annotated[float, Quantity("dimensionless", gt=0, le=1)] = 1.0
+    """Share of the friction power carried away by the lubricant; 1 (default) is the adiabatic
+    bound, the rest is conducted through the housing and shaft."""
+
+
 class StribeckSection(Section):
     """Speeds of ``shaftline bearing stribeck``: geometric steps from lowest to highest."""
 
@@ -640,6 +654,8 @@ class BearingSection(Section):
     """Rough journal and bore (mixed lubrication); none: smooth surfaces."""
     liner: LinerSection | None = None
     """Elastic liner on the bore (column model); none: a rigid bore."""
+    thermal: ThermalSection | None = None
+    """Film temperature from the heat balance; none: the lubricant table's temperature."""
     stribeck: StribeckSection | None = None
     """Speeds of the Stribeck curve (``shaftline bearing stribeck``)."""
     solver: SolverSection = SolverSection()
@@ -824,6 +840,25 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             cavitation_pressure=op.cavitation_pressure,
             grooves=tuple(SupplyGroove(g.angle, g.pressure, g.length_fraction) for g in op.grooves),
         )
+    thermal = None
+    if section.thermal is not None:
+        from shaftline.film.thermal import TEMPERATURE_RANGES, ThermalOptions
+
+        if lubricant.model == "constant":
+            raise InputError(
+                "lubricant.viscosity",
+                section.lubricant.viscosity,
+                "Pa s",
+                "a lubricant whose viscosity follows temperature (a preset or a two-point oil) with [bearing.thermal]",
+            )
+        low, high = TEMPERATURE_RANGES[lubricant.model]
+        inlet = section.thermal.inlet_temperature
+        if not low <= inlet < high:
+            raise InputError(
+                "thermal.inlet_temperature", inlet, "degC", f"{low:g} to {high:g} degC, the range of {lubricant.name}"
+            )
+        with located("thermal"):
+            thermal = ThermalOptions(inlet, section.thermal.heat_to_lubricant)
     with located("solver"):
         options = solver_options(section.solver)
     with located("", {"operating": "operation", "options": "solver"}):
@@ -852,6 +887,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             temperature=section.lubricant.temperature,
             surface_roughness=section.surface_roughness if surface is None else surface.sigma,
             error_fields=fields,
+            thermal=thermal,
         )
 
     cases = [case(context.case.name, base_geometry, tilt_y, "operation.tilt_vertical")]
