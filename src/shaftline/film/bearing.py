@@ -472,6 +472,8 @@ class _SolverState:
         self.last_cavitated: np.ndarray | None = None
         #: Liner deformation of the last solution, m (the start of the next film-liner Newton
         #: iteration when none is given: a linearisation at an equilibrium starts from its own).
+        #: With a liner, results then depend on earlier calls to within the liner tolerance
+        #: (1e-9 of the clearance); the equilibrium clears it first.
         self.last_deformation: np.ndarray | None = None
         nz, nt = grid.shape
         fixed = np.zeros(grid.shape, dtype=bool)
@@ -573,6 +575,7 @@ class JournalBearing:
             shared = copy.copy(self._cache)
             shared.coarse_bearing = None
             shared.last_cavitated = None
+            shared.last_deformation = None
             shared.reynolds.drop_factors()
             other._cache = shared
         return other
