@@ -9,7 +9,9 @@ measure).
    seed's 90 rpm and psi = 0.3 (full film: the rough path's overhead), and aligned at 1 rpm,
    where the film is mixed (lambda_min 1.4, the asperities carry 3 %). (Misaligned at low
    speed the rigid bore's edge takes the load on a vanishing area: contact, part B's liner.)
-   Issue 15 target (with the elastic liner of part B): <= 0.3 s.
+   Issue 15 target (with the elastic liner of part B): <= 0.3 s. Beside each rough equilibrium,
+   the same with a white-metal and with seed 001's polymer liner (column model, part B), and
+   the ratio to the rigid rough one.
 2. The same smooth equilibrium as bench_bearing.py, to show the smooth path's time unchanged
    (its stencil is the smooth one: ``rough`` None takes the old code).
 3. Seed 001's rig (examples/seed001_water_rig.toml, 41 x 120): a 30-speed Stribeck curve from
@@ -27,6 +29,7 @@ from timing import median_time
 
 from shaftline.cases import load_case
 from shaftline.film import JournalBearing
+from shaftline.film.liner import Liner
 from shaftline.film.roughness import SurfaceRoughness, gaussian_integral_table
 from shaftline.film.stribeck import stribeck_curve
 
@@ -40,7 +43,8 @@ def main() -> None:
     case = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"].cases[0]
     surface = SurfaceRoughness.preset("turned_steel_white_metal")
     print(f"NTUA stern tube, {case.options.axial_nodes} x {case.options.circumferential_nodes}")
-    print(f"{'case':48s} {'median s':>9s} {'ratio':>7s} {'h_min um':>9s} {'lambda':>7s} {'share %':>8s}")
+    print("ratio: to the smooth equilibrium; a liner's to the rigid rough one")
+    print(f"{'case':60s} {'median s':>9s} {'ratio':>7s} {'h_min um':>9s} {'lambda':>7s} {'share %':>8s}")
     runs = (
         ("90 rpm, psi 0.3 (seed 004)", case.operating.speed, case.tilt_y),
         ("1 rpm, aligned (mixed)", np.pi / 30, 0.0),
@@ -49,6 +53,12 @@ def main() -> None:
         operating = replace(case.operating, speed=speed)
         smooth = JournalBearing(case.geometry, operating, case.options)
         rough = JournalBearing(replace(case.geometry, surface=surface), operating, case.options)
+        lined = {
+            name: JournalBearing(
+                replace(case.geometry, surface=surface, liner=Liner.preset(name)), operating, case.options
+            )
+            for name in ("white_metal", "polymer_composite")
+        }
 
         def solve(bearing: JournalBearing, tilt: float = tilt):  # noqa: ANN202 - benchmark helper
             return bearing.equilibrium(case.load_y, case.load_z, tilt_y=tilt, tilt_z=case.tilt_z)
@@ -56,15 +66,24 @@ def main() -> None:
         # Alternated pair by pair so that both see the same load of the shared machine.
         t_smooth, eq_smooth = median_time(lambda b=smooth: solve(b), repeat)
         t_rough, eq_rough = median_time(lambda b=rough: solve(b), repeat)
+        t_lined = {name: median_time(lambda b=b: solve(b), repeat) for name, b in lined.items()}
         s, r = eq_smooth.state, eq_rough.state
         print(
-            f"{label + ', smooth':48s} {t_smooth:9.3f} {1.0:7.2f} {s.min_film_thickness * 1e6:9.2f} {'-':>7s} {'-':>8s}"
+            f"{label + ', smooth':60s} {t_smooth:9.3f} {1.0:7.2f} {s.min_film_thickness * 1e6:9.2f} {'-':>7s} {'-':>8s}"
         )
         print(
-            f"{label + ', rough (white metal)':48s} {t_rough:9.3f} {t_rough / t_smooth:7.2f} "
+            f"{label + ', rough (white metal)':60s} {t_rough:9.3f} {t_rough / t_smooth:7.2f} "
             f"{r.min_film_thickness * 1e6:9.2f} {r.min_film_ratio:7.2f} {100 * r.asperity_load_share:8.3f}"
             + ("" if eq_rough.converged else "  (not converged)")
         )
+        for name, (t, eq) in t_lined.items():
+            st = eq.state
+            print(
+                f"{label + ', rough + ' + name + ' liner':60s} {t:9.3f} {t / t_rough:7.2f} "
+                f"{st.min_film_thickness * 1e6:9.2f} {st.min_film_ratio:7.2f} {100 * st.asperity_load_share:8.3f}"
+                f"  (max deformation {st.max_liner_deformation * 1e6:.2f} um)"
+                + ("" if eq.converged else "  (not converged)")
+            )
     rig = load_case(ROOT / "examples" / "seed001_water_rig.toml").studies["bearing"]
     speeds = np.geomspace(3.5, 350.0, 30) * np.pi / 30.0
     print(f"\nseed 001 rig, Stribeck curve of {speeds.size} speeds (3.5-350 rpm), 41 x 120")

@@ -22,8 +22,9 @@ from typing import Any
 
 import numpy as np
 
-from shaftline.errors import InputError, require_finite
+from shaftline.errors import InputError, SolverFailure, require_finite
 from shaftline.film.analytic import eccentricity_guess
+from shaftline.film.elastic import LinerSystem
 from shaftline.film.extremes import local_extreme
 from shaftline.film.geometry import (
     BearingGeometry,
@@ -90,6 +91,21 @@ CONTINUATION_TOLERANCE = 1e-5
 #: the residual stalls at 8 % of the load). Smooth films keep their rule (no descent left).
 STALLED_ITERATIONS = 4
 STALLED_REDUCTION = 0.99
+#: Liner deformation converged when the column model's residual is below this share of the
+#: radial clearance everywhere (0.55 pm on seed 001's rig): tight enough that the force it
+#: leaves uncertain is below the equilibrium's tolerance (1e-8 of the load); Newton's quadratic
+#: convergence makes the last digits cheap.
+LINER_TOLERANCE = 1e-9
+#: Newton iterations of the film-liner system allowed per film solution.
+LINER_ITERATIONS = 40
+#: A kept (chord) factor of the film-liner matrix is used while each of its steps leaves at most
+#: this share of the liner residual: a slower step costs a film solution for little, and a
+#: fresh factor (about three film solutions on 100 x 60) converges quadratically.
+CHORD_REDUCTION = 0.1
+
+
+class LinerConvergenceError(SolverFailure):
+    """The film-liner Newton iteration did not settle (treated like a film that cuts the bore)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -192,6 +208,13 @@ class BearingState:
         ``h_min / sigma`` (inf when smooth).
     lubrication_regime : str or None
         ``"boundary"`` (lambda_min < 1), ``"mixed"`` (1-3) or ``"full film"`` (> 3); None when smooth.
+    liner_deformation : ndarray (nz, nt) or None
+        Deformation of an elastic liner away from the journal, m (``geometry.liner``; None for a
+        rigid bore). ``film`` includes it, and so ``min_film_thickness`` and the pressures.
+    max_liner_deformation : float
+        Its largest value, m.
+    liner_iterations : int
+        Newton iterations of the film-liner system in this solution.
 
     Equality is identity: the fields hold arrays, which have no single truth value.
     """
@@ -241,6 +264,9 @@ class BearingState:
     film_ratio: np.ndarray | None = field(default=None, repr=False)
     min_film_ratio: float = math.inf
     lubrication_regime: str | None = None
+    liner_deformation: np.ndarray | None = field(default=None, repr=False)
+    max_liner_deformation: float = 0.0
+    liner_iterations: int = 0
 
 
 @dataclass(frozen=True)
@@ -407,6 +433,9 @@ class _Evaluation:
     force: np.ndarray  # (2,) N, film and asperities
     rate: np.ndarray | None = None  # (2/omega) dH/dt of a moving journal
     contact: np.ndarray | None = None  # asperity pressure, Pa (rough surfaces only)
+    deformation: np.ndarray | None = None  # liner deformation, m (elastic liner only)
+    liner_system: LinerSystem | None = None  # coupled Newton matrix at this film (built on demand)
+    liner_iterations: int = 0
 
 
 class _SolverState:
@@ -441,6 +470,11 @@ class _SolverState:
         wz[[0, -1]] *= 0.5
         self.area_weights = wz[:, None] * (radius * grid.d_theta)
         self.last_cavitated: np.ndarray | None = None
+        #: Liner deformation of the last solution, m (the start of the next film-liner Newton
+        #: iteration when none is given: a linearisation at an equilibrium starts from its own).
+        #: With a liner, results then depend on earlier calls to within the liner tolerance
+        #: (1e-9 of the clearance); the equilibrium clears it first.
+        self.last_deformation: np.ndarray | None = None
         nz, nt = grid.shape
         fixed = np.zeros(grid.shape, dtype=bool)
         value = np.zeros(grid.shape)
@@ -541,6 +575,7 @@ class JournalBearing:
             shared = copy.copy(self._cache)
             shared.coarse_bearing = None
             shared.last_cavitated = None
+            shared.last_deformation = None
             shared.reynolds.drop_factors()
             other._cache = shared
         return other
@@ -629,6 +664,8 @@ class JournalBearing:
         geometry: BearingGeometry | None = None,
         tilt_rates: tuple[float, float] = (0.0, 0.0),
         start_pressure: np.ndarray | None = None,
+        deformation: np.ndarray | None = None,
+        chord: LinerSystem | None = None,
     ) -> _Evaluation:
         """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
         bent journal of :meth:`film_load`); ``tilt_rates`` (rad/s, dy/dx and dz/dx per second)
@@ -636,10 +673,24 @@ class JournalBearing:
         (the position carries only the centre's velocities). ``start_pressure`` (relative,
         dimensionless), a guess of the pressure, gives the start set of the Reynolds
         condition's active set instead of ``start``
-        (:meth:`~shaftline.film.reynolds.ReynoldsSolver.predicted_set`)."""
+        (:meth:`~shaftline.film.reynolds.ReynoldsSolver.predicted_set`). With an elastic liner
+        the film and the liner are solved together (:meth:`_evaluate_liner`), from the
+        ``deformation`` given (m) or none, its first steps with the Newton matrix ``chord`` of a
+        nearby film when given."""
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(geometry or self.geometry, grid, position)
+        liner = (geometry or self.geometry).liner
+        rigid = film
+        if liner is not None:
+            # The journal may pass the rigid bore surface into the liner: the film is the rigid
+            # gap plus the deformation, started where none is given from the least deformation
+            # that leaves a film of the floor (the Newton iteration then finds the real one).
+            floor = self._film_floor()
+            if deformation is None and cache.last_deformation is not None:
+                deformation = cache.last_deformation
+            start_deformation = np.zeros_like(film) if deformation is None else deformation
+            film = film + np.maximum(start_deformation, floor - film)
         if film.min() <= 0.0:
             raise _NegativeFilm(float(film.min()))
         c = self.geometry.radial_clearance
@@ -659,6 +710,10 @@ class JournalBearing:
             start = solver.predicted_set(stencil, start_pressure)
         if start is None and warm:
             start = cache.last_cavitated
+        if liner is not None:
+            return self._evaluate_liner(
+                position, grid, rigid, rate, start, film - rigid, geometry or self.geometry, chord
+            )
         solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
         cache.last_cavitated = solution.cavitated
         relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
@@ -666,6 +721,124 @@ class JournalBearing:
         contact = None if surface is None else asperity_pressure(surface, film)
         force = self._integrate_force(grid, relative, contact=contact)
         return _Evaluation(position, grid, film, stencil, solution, relative, force, rate, contact)
+
+    def _evaluate_liner(
+        self,
+        position: JournalPosition,
+        grid: Grid,
+        rigid: np.ndarray,
+        rate: np.ndarray | None,
+        start: np.ndarray | None,
+        deformation: np.ndarray,
+        geometry: BearingGeometry,
+        chord: LinerSystem | None = None,
+    ) -> _Evaluation:
+        """The film and the column-model liner solved together by Newton's method on the coupled
+        system (:mod:`shaftline.film.elastic`, docs/theory.md "Elastic liner"), from the
+        deformation ``deformation`` (m) on the ``rigid`` film (m, which may be negative where
+        the journal has passed the rigid bore); a backtracking step keeps the film positive and
+        lowers the liner residual. With ``chord``, the Newton matrix of a nearby film (a line-search
+        trial's parent), the steps use it while each cuts the residual tenfold (a chord
+        iteration: no factorisation), then the film's own, kept likewise for the next steps."""
+        cache = self._solver_state()
+        solver = cache.reynolds
+        liner = geometry.liner
+        assert liner is not None
+        c = self.geometry.radial_clearance
+        compliance = liner.compliance
+        surface = geometry.surface
+        rough = self._rough_film()
+        rigid_nd = rigid / c
+
+        def solve(d_nd: np.ndarray, start_set: np.ndarray | None) -> tuple[_Evaluation, np.ndarray, float]:
+            film_nd = rigid_nd + d_nd
+            stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate, rough)
+            solution = solver.solve(stencil, film_nd, self.options.cavitation, start_set)
+            relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
+            film = film_nd * c
+            contact = None if surface is None else asperity_pressure(surface, film)
+            load = self._gauge(relative) if contact is None else self._gauge(relative) + contact
+            residual = d_nd - (compliance / c) * load
+            evaluation = _Evaluation(
+                position,
+                grid,
+                film,
+                stencil,
+                solution,
+                relative,
+                self._integrate_force(grid, relative, contact=contact),
+            )
+            evaluation.rate, evaluation.contact, evaluation.deformation = rate, contact, d_nd * c
+            return evaluation, residual, float(np.abs(residual).max())
+
+        d_nd = deformation / c
+        evaluation, residual, norm = solve(d_nd, start)
+        iterations = 0
+        while norm > LINER_TOLERANCE:
+            if iterations >= LINER_ITERATIONS:
+                raise LinerConvergenceError(norm)
+            iterations += 1
+            system = chord if chord is not None else self._liner_system(evaluation)
+            _, step = system.step(residual)
+            step = step.reshape(d_nd.shape)
+            film_now = rigid_nd + d_nd
+            alpha = 1.0
+            # Fraction to the boundary: the film may close by at most 80 % of itself in a step.
+            closing = np.min(np.where(step < 0.0, -0.8 * film_now / np.minimum(step, -1e-300), np.inf))
+            alpha = min(alpha, float(closing))
+            if chord is not None:
+                trial = solve(d_nd + alpha * step, evaluation.solution.cavitated)
+                if trial[2] <= CHORD_REDUCTION * norm:
+                    evaluation, residual, norm = trial
+                    assert evaluation.deformation is not None
+                    d_nd = evaluation.deformation / c
+                else:
+                    chord = None  # too slow or diverging: the film's own matrix from here
+                continue
+            while True:
+                trial = solve(d_nd + alpha * step, evaluation.solution.cavitated)
+                if trial[2] < (1.0 - 1e-4 * alpha) * norm or alpha < 1e-6:
+                    break
+                alpha *= 0.5
+            if alpha < 1e-6:
+                raise LinerConvergenceError(norm)
+            evaluation, residual, norm = trial
+            assert evaluation.deformation is not None
+            d_nd = evaluation.deformation / c
+            # The next steps keep this factor while it cuts the residual tenfold.
+            chord = system
+        cache.last_cavitated = evaluation.solution.cavitated
+        cache.last_deformation = evaluation.deformation
+        evaluation.liner_iterations = iterations
+        return evaluation
+
+    def _liner_system(self, evaluation: _Evaluation) -> LinerSystem:
+        """The coupled film-liner Newton matrix at ``evaluation``'s film (kept on it)."""
+        if evaluation.liner_system is None:
+            cache = self._solver_state()
+            liner = self.geometry.liner
+            assert liner is not None
+            c = self.geometry.radial_clearance
+            surface = self.geometry.surface
+            diagonal = (
+                np.ones_like(evaluation.film)
+                if surface is None
+                else 1.0 - liner.compliance * asperity_pressure_derivative(surface, evaluation.film)
+            )
+            held = cache.reynolds.fixed | evaluation.solution.cavitated
+            evaluation.liner_system = LinerSystem.build(
+                evaluation.stencil,
+                evaluation.film / c,
+                evaluation.relative_pressure,
+                held,
+                cache.d_theta,
+                cache.d_z,
+                self._rough_film(),
+                evaluation.rate,
+                liner.compliance * self.pressure_scale / c,
+                diagonal,
+            )
+        return evaluation.liner_system
 
     def _rough_film(self) -> RoughFilm | None:
         """The roughness of the film equation (None for smooth surfaces)."""
@@ -683,12 +856,22 @@ class JournalBearing:
         surface = self.geometry.surface
         return floor if surface is None else min(floor, 0.02 * surface.sigma)
 
-    def _contact_changes(self, evaluation: _Evaluation, films: list[np.ndarray]) -> list[np.ndarray | None]:
-        """Asperity pressure changes (Pa) for film changes ``dH`` (of H = h/c); None when smooth."""
+    def _contact_changes(
+        self, evaluation: _Evaluation, films: list[np.ndarray], d_pressure: np.ndarray | None = None
+    ) -> list[np.ndarray | None]:
+        """Asperity pressure changes (Pa) for film changes ``dH`` (of H = h/c); None when smooth.
+        With an elastic liner the film also changes by the liner's deformation under the
+        pressure changes ``d_pressure`` (k, nz, nt), which must then be given."""
         surface = self.geometry.surface
         if surface is None or evaluation.contact is None:
             return [None] * len(films)
         slope = asperity_pressure_derivative(surface, evaluation.film) * self.geometry.radial_clearance
+        system = evaluation.liner_system
+        if system is not None:
+            # The film with the liner following: (dH_r + K dP) / M (film/elastic.py).
+            assert d_pressure is not None
+            diagonal = system.diagonal.reshape(evaluation.film.shape)
+            films = [(d_film + system.coupling * dp) / diagonal for d_film, dp in zip(films, d_pressure, strict=True)]
         return [slope * d_film for d_film in films]
 
     def _evaluate_inside(self, position: JournalPosition, warm: bool, start: np.ndarray | None = None) -> _Evaluation:
@@ -745,7 +928,7 @@ class JournalBearing:
         ``dRate`` the change of ``(2/omega) dH/dt`` per unit of the parameter.
         """
         _, d_pressure = self._pressure_derivatives(evaluation, directions)
-        d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in directions])
+        d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in directions], d_pressure)
         return [
             self._integrate_force(evaluation.grid, dp, gauge=False, contact=dc)
             for dp, dc in zip(d_pressure, d_contact, strict=True)
@@ -760,7 +943,13 @@ class JournalBearing:
         solution = evaluation.solution
         c = self.geometry.radial_clearance
         changes = []
+        lined = evaluation.deformation is not None
+        diagonal = self._liner_system(evaluation).diagonal.reshape(evaluation.film.shape) if lined else None
         for d_film, d_rate in directions:
+            if diagonal is not None:
+                # The asperity load of the rigid film change deforms the liner too: the film
+                # changes by dH_r / M before the pressure change's share (film/elastic.py).
+                d_film = d_film / diagonal
             dc_theta, dc_z, d_couette = stencil_derivative(
                 evaluation.film / self.geometry.radial_clearance,
                 d_film,
@@ -780,7 +969,10 @@ class JournalBearing:
                 d_residual = d_residual + void_transport(d_face, solution.void)
             changes.append(d_residual)
         d_residual = np.array(changes)
-        if isinstance(solution, JfoSolution):
+        if evaluation.deformation is not None:
+            # Elastic liner: the film follows the pressure change (docs/theory.md, "Elastic liner").
+            d_pressure, _ = self._liner_system(evaluation).response(d_residual)
+        elif isinstance(solution, JfoSolution):
             d_pressure = solution.pressure_response(d_residual)
         else:
             d_pressure = cache.reynolds.linear_response(evaluation.stencil, solution, d_residual)
@@ -805,7 +997,7 @@ class JournalBearing:
         their cavitated sets from these (:meth:`_predicted_cavitation`)."""
         d_ey, d_ez = self._offset_directions(evaluation)
         d_residual, d_pressure = self._pressure_derivatives(evaluation, [(d_ey, None), (d_ez, None)])
-        d_contact = self._contact_changes(evaluation, [d_ey, d_ez])
+        d_contact = self._contact_changes(evaluation, [d_ey, d_ez], d_pressure)
         dfy, dfz = (
             self._integrate_force(evaluation.grid, dp, gauge=False, contact=dc)
             for dp, dc in zip(d_pressure, d_contact, strict=True)
@@ -911,7 +1103,7 @@ class JournalBearing:
         directions: list[tuple[np.ndarray, np.ndarray | None]] = [(d, None) for d in shapes]
         directions += [(zero, rate * d) for d in shapes]
         _, d_pressure = self._pressure_derivatives(evaluation, directions)
-        d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in directions])
+        d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in directions], d_pressure)
         grid = evaluation.grid
         columns = [
             np.concatenate(
@@ -1013,7 +1205,7 @@ class JournalBearing:
             moving = len(changes)
         if requests:
             _, d_pressure = self._pressure_derivatives(evaluation, requests)
-            d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in requests])
+            d_contact = self._contact_changes(evaluation, [d_film for d_film, _ in requests], d_pressure)
             rows = np.stack(
                 [
                     self._row_forces(evaluation.grid, dp, gauge=False, contact=dc)
@@ -1130,11 +1322,14 @@ class JournalBearing:
         # Start the active set from the coarse grid, never from an earlier call: the
         # equilibrium then depends only on the problem and its arguments.
         self._solver_state().last_cavitated = None
+        self._solver_state().last_deformation = None
         evaluation = self._evaluate(position, start=self._start_set(initial_cavitated))
         residual = evaluation.force + load
         contact = False
         iterations = 0
-        rough = self.geometry.surface is not None
+        # A liner carries any load by deforming (the journal may pass the rigid bore surface):
+        # the stall rule of a rigid rough bore does not apply to it.
+        rough = self.geometry.surface is not None and self.geometry.liner is None
         stalled = 0
         while iterations < self.options.max_iterations:
             norm = float(np.hypot(*residual))
@@ -1148,7 +1343,8 @@ class JournalBearing:
                 if accepted is not None:
                     break
             if accepted is None:
-                contact = self.min_film(position) <= 1.5 * floor
+                hmin = float(evaluation.film.min()) if evaluation.deformation is not None else self.min_film(position)
+                contact = hmin <= 1.5 * floor
                 break
             evaluation = accepted
             position = evaluation.position
@@ -1245,18 +1441,32 @@ class JournalBearing:
         evaluation's ``response`` (the residual and pressure changes per metre of ey and ez of
         :meth:`_position_response`; see :meth:`_predicted_cavitation`)."""
         position = evaluation.position
-        hmin_now = self.min_film(position)
+        lined = evaluation.deformation is not None
+        hmin_now = float(evaluation.film.min()) if lined else self.min_film(position)
         alpha = 1.0
-        # Fraction to the boundary: never close more than 80 % of the film left above the floor.
+        # Fraction to the boundary: never close more than 80 % of the film left above the floor
+        # (with a liner the film predicted with its deformation).
         while alpha > 1e-8:
-            if self.min_film(self._moved(position, alpha * step)) - floor >= 0.2 * (hmin_now - floor):
+            moved = self._moved(position, alpha * step)
+            if lined:
+                predicted = self._predicted_deformation(evaluation, response, alpha * step)
+                hmin_next = float((self.film(moved) + predicted).min())
+            else:
+                hmin_next = self.min_film(moved)
+            if hmin_next - floor >= 0.2 * (hmin_now - floor):
                 break
             alpha *= 0.5
         while alpha > 1e-8:
             try:
                 start, guess = self._predicted_cavitation(evaluation, response, alpha * step)
-                trial = self._evaluate(self._moved(position, alpha * step), start=start, start_pressure=guess)
-            except _NegativeFilm:
+                trial = self._evaluate(
+                    self._moved(position, alpha * step),
+                    start=start,
+                    start_pressure=guess,
+                    deformation=self._predicted_deformation(evaluation, response, alpha * step),
+                    chord=evaluation.liner_system,
+                )
+            except (_NegativeFilm, LinerConvergenceError):
                 alpha *= 0.5
                 continue
             if np.hypot(*(trial.force + load)) < (1.0 - sufficient * alpha) * norm:
@@ -1283,6 +1493,22 @@ class JournalBearing:
             return None, None
         d_pressure = np.tensordot(step, response[1], axes=1)
         return None, evaluation.relative_pressure + d_pressure
+
+    def _predicted_deformation(
+        self, evaluation: _Evaluation, response: tuple[np.ndarray, np.ndarray], step: np.ndarray
+    ) -> np.ndarray | None:
+        """Liner deformation (m) after the journal moves by ``step`` (m), to first order: the
+        start of the trial's film-liner Newton iteration (None without a liner)."""
+        system = evaluation.liner_system
+        if evaluation.deformation is None or system is None:
+            return evaluation.deformation
+        d_pressure = np.tensordot(step, response[1], axes=1)
+        d_ey, d_ez = self._offset_directions(evaluation)
+        rigid = step[0] * d_ey + step[1] * d_ez
+        # dD = (K dP + (1 - M) dH_r) / M: the linearised liner equation (film/elastic.py).
+        diagonal = system.diagonal.reshape(d_pressure.shape)
+        change = (system.coupling * d_pressure + (1.0 - diagonal) * rigid) / diagonal
+        return evaluation.deformation + self.geometry.radial_clearance * change
 
     def _limit_step(self, step: np.ndarray, c: float) -> np.ndarray:
         length = float(np.hypot(*step))
@@ -1404,6 +1630,10 @@ class JournalBearing:
                 "min_film_ratio": lam_min,
                 "lubrication_regime": lubrication_regime(lam_min),
             }
+        if evaluation.deformation is not None:
+            rough["liner_deformation"] = evaluation.deformation
+            rough["max_liner_deformation"] = float(evaluation.deformation.max())
+            rough["liner_iterations"] = evaluation.liner_iterations
         return BearingState(
             position=evaluation.position,
             eccentricity_ratio=e / g.radial_clearance,

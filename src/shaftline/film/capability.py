@@ -54,6 +54,30 @@ MIXED_TABLE_ROWS = [
 ]
 
 
+#: Units of a case's ``thermal`` entry (with [bearing.thermal]).
+THERMAL_UNITS = {
+    "thermal.inlet_temperature": "degC",
+    "thermal.effective_temperature": "degC",
+    "thermal.outlet_temperature": "degC",
+    "thermal.viscosity": "Pa s",
+    "thermal.heat_to_lubricant": "-",
+}
+
+
+def thermal_json(run: Any) -> dict[str, Any]:
+    """The heat balance of a case's result (``run.thermal``) for results.json."""
+    balance = run.thermal
+    return {
+        "inlet_temperature": balance.inlet_temperature,
+        "effective_temperature": balance.effective_temperature,
+        "outlet_temperature": balance.outlet_temperature,
+        "viscosity": balance.viscosity,
+        "heat_to_lubricant": run.case.thermal.heat_to_lubricant,
+        "converged": balance.converged,
+        "film_solutions": balance.evaluations,
+    }
+
+
 class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResult"]):
     key = "bearing"
     title = "Stern-tube bearing film"
@@ -96,16 +120,30 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
         )
 
     def to_json(self, result: BearingStudyResult) -> dict[str, Any]:
+        import numpy as np
+
         from shaftline.film.summary import EXTRA_UNITS, equilibrium_summary, units
 
         mixed = any(run.case.geometry.surface is not None for run in result.cases)
+        lined = any(run.case.geometry.liner is not None for run in result.cases)
+        extra = {"liner_deformation_map": "m"} if lined else {}
+        if any(run.thermal is not None for run in result.cases):
+            extra.update(THERMAL_UNITS)
         out: dict[str, Any] = {
-            "units": {**units(mixed), **EXTRA_UNITS},
+            "units": {**units(mixed, lined), **EXTRA_UNITS, **extra},
             "cases": [
                 {"name": run.case.name, **equilibrium_summary(run.equilibrium, run.coefficients)}
                 for run in result.cases
             ],
         }
+        for entry, run in zip(out["cases"], result.cases, strict=True):
+            if run.thermal is not None:
+                entry["thermal"] = thermal_json(run)
+            deformation = run.equilibrium.state.liner_deformation
+            if deformation is not None:
+                # Rows along the bearing from the aft edge, columns around the bore from the grid's
+                # first angle (theta of the state), metres.
+                entry["liner_deformation_map"] = np.round(deformation, 12).tolist()
         if result.stribeck is not None:
             out["stribeck"] = stribeck_json(result.stribeck)
         return out
@@ -114,6 +152,14 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
         out: list[Finding] = []
         for run in result.cases:
             name, equilibrium, state = run.case.name, run.equilibrium, run.equilibrium.state
+            if run.thermal is not None and not run.thermal.converged:
+                out.append(
+                    Finding(
+                        f"{name}: the heat balance does not close — the film would run hotter than "
+                        f"{run.thermal.effective_temperature:.4g} °C, the top of the lubricant's viscosity data; "
+                        "the results are those at that temperature, not a solution."
+                    )
+                )
             if equilibrium.contact:
                 out.append(
                     Finding(
@@ -178,6 +224,34 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 for label, key, scale, digits in MIXED_TABLE_ROWS
             ]
             rows.append(["lubrication regime"] + [s.get("lubrication_regime") or "smooth" for s in summaries])
+        if any(run.thermal is not None for run in result.cases):
+            for label, key in (
+                ("inlet temperature [°C]", "inlet_temperature"),
+                ("effective temperature [°C]", "effective_temperature"),
+                ("outlet temperature [°C]", "outlet_temperature"),
+            ):
+                rows.append(
+                    [label]
+                    + [
+                        fmt(getattr(run.thermal, key), 1.0, 4) if run.thermal is not None else "-"
+                        for run in result.cases
+                    ]
+                )
+            rows.append(
+                ["heat balance closed"]
+                + [
+                    ("yes" if run.thermal.converged else "NO") if run.thermal is not None else "-"
+                    for run in result.cases
+                ]
+            )
+        if any("max_liner_deformation" in s for s in summaries):
+            rows.append(
+                ["max liner deformation [µm]"]
+                + [
+                    fmt(s["max_liner_deformation"], 1e6, 4) if "max_liner_deformation" in s else "rigid"
+                    for s in summaries
+                ]
+            )
         rows.append(["converged"] + ["yes" if s["converged"] else "NO" for s in summaries])
         rows.append(["contact (film at floor)"] + ["YES" if s["contact"] else "no" for s in summaries])
         return Table(["quantity"] + [s["name"] for s in summaries], rows, "Bearing film at equilibrium")
@@ -272,6 +346,15 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                         figures.contact_maps,
                         (state, name),
                         caption=f"{name}: asperity contact pressure and film-thickness ratio λ = h/σ",
+                    )
+                )
+            if state.liner_deformation is not None:
+                blocks.append(
+                    Figure(
+                        f"bearing_{index}_liner.png",
+                        figures.liner_maps,
+                        (state, name),
+                        caption=f"{name}: liner deformation (column model) and the film including it",
                     )
                 )
             blocks.append(

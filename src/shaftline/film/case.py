@@ -10,6 +10,8 @@ Layout::
     [[bearing.operation.grooves]]
     [bearing.lubricant]
     [bearing.surface]            rough journal and bore: mixed lubrication
+    [bearing.liner]              elastic liner on the bore (column model)
+    [bearing.thermal]            film temperature from the heat balance
     [bearing.solver]             grid and cavitation model
     [[bearing.variants]]         other bores or tilts solved beside the base case
 """
@@ -54,6 +56,7 @@ from shaftline.film.geometry import (
     BoreSegment,
     FilmProfile,
 )
+from shaftline.film.liner import Liner
 from shaftline.film.problem import (
     BearingProblem,
     CavitatedShear,
@@ -443,6 +446,56 @@ def surface_roughness(section: SurfaceSection) -> SurfaceRoughness:
         )
 
 
+class LinerSection(Section):
+    """Thin elastic liner bonded to the bore: deforms under the film and asperity pressure by
+    the column (Winkler) model, solved together with the film (docs/theory.md, "Elastic liner").
+    A preset gives every field; fields given beside it replace the preset's."""
+
+    preset: Literal["polymer_composite", "rubber", "white_metal"] | None = None
+    """Named liner (docs/theory.md lists the sources): polymer_composite (seed 001's rig, 20 mm,
+    2320 MPa, 0.327), rubber (10 mm nitrile, 7 MPa, 0.49: the column model's lower bound of its
+    deformation), white_metal (2 mm tin-based, 52 GPa, 0.33)."""
+    thickness: PositiveLength | None = None
+    """Liner thickness (at most a quarter of the bore radius)."""
+    modulus: Annotated[PositivePressure, Plausible(3e6, 5e11, _MODULUS)] | None = None
+    """Young's modulus of the liner."""
+    poisson: Annotated[float, Quantity("dimensionless", gt=0, lt=0.5)] | None = None
+    """Poisson's ratio of the liner, in (0, 0.5)."""
+
+    @model_validator(mode="after")
+    def _complete(self) -> LinerSection:
+        if self.preset is None:
+            for name in ("thickness", "modulus", "poisson"):
+                if getattr(self, name) is None:
+                    raise field_error(name, "missing", "a value, or a preset")
+        return self
+
+
+def liner_of(section: LinerSection) -> Liner:
+    """The :class:`Liner` of a ``liner`` table (fields beside a preset replace it)."""
+    from shaftline.film.liner import LINER_PRESETS
+
+    base = LINER_PRESETS[section.preset] if section.preset is not None else (None, None, None)
+    values = [
+        given if given is not None else preset
+        for given, preset in zip((section.thickness, section.modulus, section.poisson), base, strict=True)
+    ]
+    return Liner(thickness=values[0], modulus=values[1], poisson=values[2])  # type: ignore[arg-type]
+
+
+class ThermalSection(Section):
+    """Oil (or water) temperature from the bearing's heat balance (ISO 7902-1 style, docs/theory.md
+    Sect. 8.1): the film runs at the effective temperature where its friction heat and the
+    lubricant's viscosity agree, instead of the lubricant table's temperature. Needs a lubricant
+    whose viscosity follows temperature (a preset or a two-point oil)."""
+
+    inlet_temperature: Annotated[Temperature, Quantity("temperature", ge=-40.0, le=250.0)]
+    """Temperature of the lubricant reaching the film (header tank, cooled oil, the sea)."""
+    heat_to_lubricant: Annotated[float, Quantity("dimensionless", gt=0, le=1)] = 1.0
+    """Share of the friction power carried away by the lubricant; 1 (default) is the adiabatic
+    bound, the rest is conducted through the housing and shaft."""
+
+
 class StribeckSection(Section):
     """Speeds of ``shaftline bearing stribeck``: geometric steps from lowest to highest."""
 
@@ -599,6 +652,10 @@ class BearingSection(Section):
     """The lubricant."""
     surface: SurfaceSection | None = None
     """Rough journal and bore (mixed lubrication); none: smooth surfaces."""
+    liner: LinerSection | None = None
+    """Elastic liner on the bore (column model); none: a rigid bore."""
+    thermal: ThermalSection | None = None
+    """Film temperature from the heat balance; none: the lubricant table's temperature."""
     stribeck: StribeckSection | None = None
     """Speeds of the Stribeck curve (``shaftline bearing stribeck``)."""
     solver: SolverSection = SolverSection()
@@ -749,6 +806,11 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
                 f"({0.5 * clearance:.3g} m)",
             )
 
+    liner = None
+    if section.liner is not None:
+        with located("liner"):
+            liner = liner_of(section.liner)
+
     def geometry(bore: tuple[BoreSegment, ...], where: str) -> BearingGeometry:
         with located("", {"bore": where}):
             return BearingGeometry(
@@ -761,6 +823,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
                 film_profile=profile,
                 rotation=1 if section.rotation == "clockwise" else -1,
                 surface=surface,
+                liner=liner,
             )
 
     base_geometry = geometry(_bore(section.bore, length, clearance), "bore")
@@ -777,6 +840,25 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             cavitation_pressure=op.cavitation_pressure,
             grooves=tuple(SupplyGroove(g.angle, g.pressure, g.length_fraction) for g in op.grooves),
         )
+    thermal = None
+    if section.thermal is not None:
+        from shaftline.film.thermal import TEMPERATURE_RANGES, ThermalOptions
+
+        if lubricant.model == "constant":
+            raise InputError(
+                "lubricant.viscosity",
+                section.lubricant.viscosity,
+                "Pa s",
+                "a lubricant whose viscosity follows temperature (a preset or a two-point oil) with [bearing.thermal]",
+            )
+        low, high = TEMPERATURE_RANGES[lubricant.model]
+        inlet = section.thermal.inlet_temperature
+        if not low <= inlet < high:
+            raise InputError(
+                "thermal.inlet_temperature", inlet, "degC", f"{low:g} to {high:g} degC, the range of {lubricant.name}"
+            )
+        with located("thermal"):
+            thermal = ThermalOptions(inlet, section.thermal.heat_to_lubricant)
     with located("solver"):
         options = solver_options(section.solver)
     with located("", {"operating": "operation", "options": "solver"}):
@@ -805,6 +887,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             temperature=section.lubricant.temperature,
             surface_roughness=section.surface_roughness if surface is None else surface.sigma,
             error_fields=fields,
+            thermal=thermal,
         )
 
     cases = [case(context.case.name, base_geometry, tilt_y, "operation.tilt_vertical")]

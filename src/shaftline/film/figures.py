@@ -127,6 +127,27 @@ def contact_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
 
 
 @figure_function(layout=(1, 2), size=(11, 4.2))
+def liner_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
+    """Unwrapped liner deformation and film (deformation included) maps of a bore with an
+    elastic liner (``state.liner_deformation``)."""
+    theta, order, z = _unwrapped(state)
+    assert state.liner_deformation is not None
+    mesh = ax[0].contourf(theta, z, state.liner_deformation[:, order] * 1e6, levels=30, cmap="viridis", rasterized=True)
+    ax[0].figure.colorbar(mesh, ax=ax[0], label="liner deformation u [µm]")
+    mesh = ax[1].contourf(theta, z, state.film[:, order] * 1e6, levels=30, cmap="Blues", rasterized=True)
+    ax[1].figure.colorbar(mesh, ax=ax[1], label="film h with deformation [µm]")
+    for axes in ax:
+        axes.set_xlabel("bearing angle θ from top, in sense of rotation [deg]")
+        axes.set_ylabel("z from aft edge [m]")
+        axes.set_xlim(0, 360)
+        axes.set_xticks(range(0, 361, 60))
+    head = f"{plain(title)}: " if title else ""
+    ax[0].set_title(f"{head}liner deformation, max {state.max_liner_deformation * 1e6:.3g} µm")
+    ax[1].set_title(f"film with deformation, h_min {state.min_film_thickness * 1e6:.3g} µm")
+    return ax
+
+
+@figure_function(layout=(1, 2), size=(11, 4.2))
 def stribeck(curve: Any, title: str = "", *, ax: Any) -> Any:
     """Friction coefficient (Stribeck curve) and h_min against speed, shaded by lubrication
     regime (boundary lambda < 1, mixed 1-3, full film > 3), with the transition speed."""

@@ -27,6 +27,7 @@ from typing import Any, Literal, get_args
 import numpy as np
 
 from shaftline.errors import InputError, require_finite, require_positive
+from shaftline.film.liner import MAX_THICKNESS_RATIO, Liner
 from shaftline.film.roughness import SurfaceRoughness
 
 #: Below this many nodes the Reynolds solution is too coarse to be worth returning.
@@ -203,6 +204,11 @@ class BearingGeometry:
         Roughness and elasticity of the journal and bore surfaces: with it the film carries
         Patir-Cheng flow factors and the asperities a Greenwood-Tripp contact pressure (mixed
         lubrication, :mod:`shaftline.film.roughness`); None (default) is a smooth film.
+    liner : Liner or None
+        A thin elastic liner bonded to the bore (column model, :mod:`shaftline.film.liner`):
+        it deforms under the film and asperity pressure and the deformation enters the film,
+        solved together with it; None (default) is a rigid bore. Its thickness must not
+        exceed :data:`~shaftline.film.liner.MAX_THICKNESS_RATIO` of the radius.
 
     Raises
     ------
@@ -220,6 +226,7 @@ class BearingGeometry:
     film_profile: FilmProfile | None = field(default=None, repr=False)
     rotation: Rotation = 1
     surface: SurfaceRoughness | None = None
+    liner: Liner | None = None
 
     def __post_init__(self) -> None:
         require_positive("length", self.length, "m")
@@ -233,6 +240,14 @@ class BearingGeometry:
                 round(self.surface.sigma, 12),
                 "m",
                 f"a composite roughness below half the radial clearance ({0.5 * self.radial_clearance:g} m)",
+            )
+        if self.liner is not None and self.liner.thickness > MAX_THICKNESS_RATIO * 0.5 * self.diameter:
+            raise InputError(
+                "liner.thickness",
+                self.liner.thickness,
+                "m",
+                f"(0, {MAX_THICKNESS_RATIO * 0.5 * self.diameter:g}]: a thin liner, at most "
+                f"{MAX_THICKNESS_RATIO:g} of the bore radius (column model)",
             )
         if self.rotation not in ROTATIONS:
             raise InputError("rotation", self.rotation, "", "+1 (clockwise from aft) or -1")

@@ -444,6 +444,15 @@ class BearingProblem:
                 "reynolds or half_sommerfeld with rough surfaces (geometry.surface): the mass-conserving "
                 "model has no flow factors yet",
             )
+        if self.geometry.liner is not None and self.options.cavitation != "reynolds":
+            # The film-liner Newton matrix is built on the Reynolds condition's frozen set
+            # (film/elastic.py); the other models' linearisations are not coupled to a liner.
+            raise InputError(
+                "options.cavitation",
+                self.options.cavitation,
+                "",
+                "reynolds with an elastic liner (geometry.liner)",
+            )
         if self.options.cavitation == "jfo" and self.operating.feed_pressure <= self.operating.cavitation_pressure:
             raise InputError(
                 "operating.cavitation_pressure",

@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from shaftline.film.dynamics import DynamicCoefficients
     from shaftline.film.geometry import JournalPosition
     from shaftline.film.stribeck import StribeckCurve
+    from shaftline.film.thermal import ThermalOptions, ThermalResult
     from shaftline.lubricants import Lubricant
 
 
@@ -50,6 +51,10 @@ class BearingCase:
         "Ball Bearing Lubrication", 1981: partial lubrication below film parameter 3). The
         default, 2.2 µm, is a ground journal (Rq 1 µm, Ra about 0.8 µm) in a bored white-metal
         liner (Rq 2 µm, Ra about 1.6 µm), engineering judgement of usual stern-tube finishes.
+    thermal : ThermalOptions or None
+        Solve the film at the effective temperature of its heat balance
+        (:func:`shaftline.film.thermal.thermal_balance`) instead of ``operating.viscosity``;
+        needs ``lubricant`` with a temperature-dependent viscosity.
     error_fields : mapping
         Where the case file gives the equilibrium's inputs (``{"tilt_y":
         "variants[1].tilt_vertical"}``), for an error found only while solving; empty
@@ -68,6 +73,7 @@ class BearingCase:
     temperature: float | None = None
     surface_roughness: float = 2.2e-6
     error_fields: Mapping[str, str] = field(default_factory=dict)
+    thermal: ThermalOptions | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -81,11 +87,14 @@ class BearingStudy:
 
 @dataclass(frozen=True, eq=False)
 class BearingResult:
-    """Equilibrium of one case, with stiffness and damping where the film carries the load."""
+    """Equilibrium of one case, with stiffness and damping where the film carries the load;
+    with ``case.thermal`` the heat balance, and ``case`` is then the case at its effective
+    temperature (viscosity, density and ``temperature``)."""
 
     case: BearingCase
     equilibrium: Equilibrium
     coefficients: DynamicCoefficients | None
+    thermal: ThermalResult | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -126,6 +135,11 @@ def solve_case(
         if progress is not None:
             progress(f"{case.name}: Newton iteration {iteration}, force residual {residual:.1e} of the load")
 
+    balance = None
+    if case.thermal is not None:
+        case, balance = _at_effective_temperature(case, progress)
+        # The viscosity changed: neither the given bearing nor its warm start applies.
+        bearing, initial, initial_cavitated = None, None, None
     if bearing is None:
         bearing = JournalBearing(case.geometry, case.operating, case.options)
     # A tilt that does not fit in the clearance is found only here; name it as the case file does.
@@ -144,7 +158,34 @@ def solve_case(
         if progress is not None:
             progress(f"{case.name}: stiffness and damping")
         dynamics = dynamic_coefficients(bearing, equilibrium.state)
-    return BearingResult(case, equilibrium, dynamics)
+    return BearingResult(case, equilibrium, dynamics, balance)
+
+
+def _at_effective_temperature(
+    case: BearingCase, progress: Callable[[str], None] | None
+) -> tuple[BearingCase, ThermalResult]:
+    """The heat balance of ``case`` (docs/theory.md Sect. 8.1) and the case at its effective
+    temperature; a balance that does not close below the top of the viscosity model leaves
+    the case at that top temperature (``converged`` False)."""
+    from dataclasses import replace
+
+    from shaftline.errors import located
+    from shaftline.film.problem import BearingProblem
+    from shaftline.film.thermal import bearing_film, thermal_balance
+
+    assert case.thermal is not None
+    if case.lubricant is None:
+        raise ValueError(f"{case.name}: a heat balance needs the case's lubricant")
+    if progress is not None:
+        progress(f"{case.name}: heat balance")
+    problem = BearingProblem(case.geometry, case.operating, case.options)
+    with located("", case.error_fields):
+        balance = thermal_balance(
+            bearing_film(problem, case.load_y, case.load_z, case.tilt_y, case.tilt_z), case.lubricant, case.thermal
+        )
+    temperature = balance.effective_temperature
+    operating = replace(case.operating, viscosity=balance.viscosity, density=float(case.lubricant.density(temperature)))
+    return replace(case, operating=operating, temperature=temperature), balance
 
 
 def solve_study(

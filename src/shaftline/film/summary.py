@@ -104,6 +104,18 @@ MIXED_FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
 ]
 
 
+#: Results of an elastic liner (``geometry.liner``, a ``[bearing.liner]`` table), written only
+#: with one: a rigid bore's JSON keeps exactly its keys.
+LINER_FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
+    (
+        "max_liner_deformation",
+        "m",
+        "largest liner deformation (column model); film, h_min and p_max include the deformation",
+        lambda s: s.max_liner_deformation,
+    ),
+]
+
+
 def _clean(value: Any) -> Any:
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
@@ -116,12 +128,16 @@ def state_summary(state: BearingState) -> dict[str, Any]:
     """Scalar results of a film solution, keyed as in :data:`FIELDS` (and :data:`MIXED_FIELDS`
     for rough surfaces)."""
     fields = FIELDS + MIXED_FIELDS if state.asperity_pressure is not None else FIELDS
+    if state.liner_deformation is not None:
+        fields = fields + LINER_FIELDS
     return {key: _clean(getter(state)) for key, _, _, getter in fields}
 
 
-def units(mixed: bool = False) -> dict[str, str]:
-    """Unit of every key of :func:`state_summary` (with ``mixed``, of the rough-surface keys too)."""
-    return {key: unit for key, unit, _, _ in (FIELDS + MIXED_FIELDS if mixed else FIELDS)}
+def units(mixed: bool = False, liner: bool = False) -> dict[str, str]:
+    """Unit of every key of :func:`state_summary` (with ``mixed``, of the rough-surface keys too;
+    with ``liner``, of the elastic liner's)."""
+    fields = (FIELDS + MIXED_FIELDS if mixed else FIELDS) + (LINER_FIELDS if liner else [])
+    return {key: unit for key, unit, _, _ in fields}
 
 
 def equilibrium_summary(equilibrium: Equilibrium, coefficients: DynamicCoefficients | None = None) -> dict[str, Any]:
@@ -194,6 +210,7 @@ def field_table() -> str:
     """The Markdown table of every JSON field of a bearing case (the README's)."""
     rows = [(key, unit, text) for key, unit, text, _ in FIELDS] + EXTRA_FIELDS
     rows += [(key, unit, f"{text} (with [bearing.surface] only)") for key, unit, text, _ in MIXED_FIELDS]
+    rows += [(key, unit, f"{text} (with [bearing.liner] only)") for key, unit, text, _ in LINER_FIELDS]
     rows += [(key, unit, f"{text} (`bearing stribeck` only)") for key, unit, text in STRIBECK_FIELDS]
     return (
         "| key | unit | meaning |\n|---|---|---|\n"

@@ -1,0 +1,259 @@
+"""Elastic liner (column/Winkler model) solved together with the film (issue 15 part B).
+
+References: the column model's closed form (docs/theory.md, "Elastic liner"; Johnson, Contact
+Mechanics, 1985, Sect. 5.9) checked against the Lame constants; the coupled solution against
+that closed form node by node; the film-liner Jacobian against central differences of the
+force; the trend of a compliant liner against a rigid bore (Conway & Lee 1975, Lahmar et al.
+1998: the deformation lowers the load capacity at a given eccentricity, so under the same load
+the journal runs more eccentric, with a lower and flatter pressure peak).
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from shaftline.cases import load_case
+from shaftline.errors import InputError
+from shaftline.film import BearingGeometry, JournalBearing
+from shaftline.film.bearing import LINER_TOLERANCE
+from shaftline.film.elastic import film_residual_jacobian
+from shaftline.film.liner import LINER_PRESETS, Liner
+from shaftline.film.reynolds import apply_operator, stencil_derivative
+from shaftline.film.roughness import RoughFilm, SurfaceRoughness
+from tests.conftest import invoke
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="module")
+def ntua():  # noqa: ANN201 - the seed 004 base case
+    return load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"].cases[0]
+
+
+@pytest.mark.parametrize("name", sorted(LINER_PRESETS))
+def test_column_compliance_is_the_constrained_modulus_of_the_lame_constants(name: str) -> None:
+    # Uniaxial strain: sigma_zz = (lambda + 2 mu) eps_zz, with the Lame constants from E and nu.
+    liner = Liner.preset(name)
+    e, nu = liner.modulus, liner.poisson
+    lame = e * nu / ((1 + nu) * (1 - 2 * nu))
+    shear = e / (2 * (1 + nu))
+    assert liner.deflection(1e6) == pytest.approx(1e6 * liner.thickness / (lame + 2 * shear), rel=1e-12)
+
+
+def test_column_model_stiffens_without_bound_as_the_liner_becomes_incompressible() -> None:
+    # (1 - 2 nu) -> 0: the column model's limit for rubber (docs/theory.md).
+    compliances = [Liner(0.01, 7e6, nu).compliance for nu in (0.45, 0.49, 0.499, 0.4999)]
+    assert all(b < 0.15 * a for a, b in zip(compliances[1:], compliances[2:], strict=False))
+    assert compliances[-1] < 1e-3 * Liner(0.01, 7e6, 0.3).compliance
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        ({"thickness": 0.0}, "thickness"),
+        ({"thickness": -1e-3}, "thickness"),
+        ({"modulus": 0.0}, "modulus"),
+        ({"poisson": 0.5}, "poisson"),
+        ({"poisson": 0.0}, "poisson"),
+        ({"poisson": float("nan")}, "poisson"),
+    ],
+)
+def test_bad_liner_is_refused_naming_the_field(kwargs: dict[str, float], field: str) -> None:
+    values = {"thickness": 0.01, "modulus": 2e9, "poisson": 0.3, **kwargs}
+    with pytest.raises(InputError) as caught:
+        Liner(**values)
+    assert caught.value.field == field
+
+
+def test_liner_thicker_than_a_quarter_of_the_radius_is_refused() -> None:
+    with pytest.raises(InputError) as caught:
+        BearingGeometry(length=0.1, diameter=0.1, radial_clearance=1e-4, liner=Liner(0.013, 2e9, 0.3))
+    assert caught.value.field == "liner.thickness"
+    BearingGeometry(length=0.1, diameter=0.1, radial_clearance=1e-4, liner=Liner(0.0125, 2e9, 0.3))
+
+
+def test_liner_needs_the_reynolds_condition(ntua) -> None:  # noqa: ANN001
+    geometry = replace(ntua.geometry, liner=Liner.preset("white_metal"))
+    with pytest.raises(InputError) as caught:
+        JournalBearing(geometry, ntua.operating, replace(ntua.options, cavitation="half_sommerfeld"))
+    assert caught.value.field == "options.cavitation"
+
+
+def test_coupled_solution_obeys_the_column_law_node_by_node(ntua) -> None:  # noqa: ANN001
+    # The converged deformation is the column model's closed form of the converged pressure
+    # (film and asperities), to the Newton tolerance (1e-6 of the clearance).
+    surface = SurfaceRoughness.preset("turned_steel_white_metal")
+    liner = Liner.preset("polymer_composite")
+    operating = replace(ntua.operating, speed=np.pi / 30)
+    bearing = JournalBearing(replace(ntua.geometry, surface=surface, liner=liner), operating, ntua.options)
+    eq = bearing.equilibrium(ntua.load_y, ntua.load_z)
+    assert eq.converged
+    state = eq.state
+    assert state.liner_deformation is not None and state.asperity_pressure is not None
+    closed_form = liner.compliance * (state.pressure + state.asperity_pressure)
+    c = ntua.geometry.radial_clearance
+    assert np.abs(state.liner_deformation - closed_form).max() <= LINER_TOLERANCE * c
+    # The film is the rigid gap plus the deformation.
+    rigid = bearing.film(state.position)
+    np.testing.assert_allclose(state.film, rigid + state.liner_deformation, rtol=0, atol=1e-15)
+    # The journal has passed the rigid bore surface into the liner, which leaves a film.
+    assert rigid.min() < 0.0 < state.min_film_thickness
+    assert state.max_liner_deformation > 1e-6  # micrometres: the test is not of a stiff liner
+
+
+@pytest.mark.parametrize("rough", [False, True])
+def test_film_residual_jacobian_is_the_stencil_derivative(rough: bool) -> None:
+    # B = dr/dH assembled face by face against the film's directional derivative
+    # (stencil_derivative, as the film's other linearisations use it), for random film changes,
+    # with a squeeze rate (rough: the squeeze factor's derivative) on a small periodic grid.
+    rng = np.random.default_rng(3)
+    shape = (7, 12)
+    film = 0.3 + rng.random(shape)
+    pressure = rng.random(shape)
+    rate = rng.standard_normal(shape)
+    film_model = RoughFilm(0.2, 1.0) if rough else None
+    jacobian = film_residual_jacobian(film, pressure, 0.5, 0.2, film_model, rate)
+    for _ in range(3):
+        change = rng.standard_normal(shape)
+        dc_theta, dc_z, d_rhs = stencil_derivative(film, change, 0.5, 0.2, film_model, rate)
+        expected = apply_operator(dc_theta, dc_z, pressure) - d_rhs
+        np.testing.assert_allclose(jacobian @ change.ravel(), expected.ravel(), rtol=1e-12, atol=1e-12)
+
+
+@pytest.mark.parametrize("rough", [False, True])
+def test_film_liner_jacobian_matches_central_differences(ntua, rough: bool) -> None:  # noqa: ANN001
+    # Frozen-set derivative of the coupled system (elastic.py) against central differences of the
+    # converged force; the step (1e-4 of the clearance) moves no cavitation boundary node on
+    # this grid, and the Newton tolerance 1e-6 c leaves differences accurate to ~1e-3.
+    surface = SurfaceRoughness.preset("turned_steel_white_metal") if rough else None
+    speed = np.pi / 30 if rough else ntua.operating.speed
+    geometry = replace(ntua.geometry, surface=surface, liner=Liner.preset("polymer_composite"))
+    bearing = JournalBearing(geometry, replace(ntua.operating, speed=speed), ntua.options)
+    eq = bearing.equilibrium(ntua.load_y, ntua.load_z)
+    position = eq.state.position
+    evaluation = bearing._evaluate(position, warm=False)
+    jacobian = bearing._position_jacobian(evaluation)
+    step = 1e-4 * ntua.geometry.radial_clearance
+    columns = []
+    for axis in ("ey", "ez"):
+        forces = []
+        for sign in (1.0, -1.0):
+            moved = replace(position, **{axis: getattr(position, axis) + sign * step})
+            forces.append(bearing._evaluate(moved, warm=False, deformation=evaluation.deformation).force)
+        columns.append((forces[0] - forces[1]) / (2 * step))
+    numeric = np.column_stack(columns)
+    scale = np.abs(numeric).max()
+    assert np.abs(jacobian - numeric).max() <= 5e-3 * scale
+
+
+def test_soft_liner_lowers_and_flattens_the_pressure_under_the_same_load(ntua) -> None:  # noqa: ANN001
+    # Seed 004's bearing at 90 rpm with its misalignment: rigid, white metal, polymer, rubber.
+    # Published trend (Conway & Lee 1975; Lahmar et al. 1998): a more compliant liner carries the
+    # same load at a larger eccentricity with a lower pressure peak; h_min falls with it (the
+    # column model holds the film at the edges, at ambient pressure, to the rigid gap).
+    results = []
+    for liner in (None, Liner.preset("white_metal"), Liner.preset("polymer_composite"), Liner.preset("rubber")):
+        bearing = JournalBearing(replace(ntua.geometry, liner=liner), ntua.operating, ntua.options)
+        eq = bearing.equilibrium(ntua.load_y, ntua.load_z, tilt_y=ntua.tilt_y, tilt_z=ntua.tilt_z)
+        assert eq.converged
+        results.append(eq.state)
+    p_max = [s.max_pressure for s in results]
+    e = [s.eccentricity_ratio for s in results]
+    assert all(b < a for a, b in zip(p_max, p_max[1:], strict=False)), p_max
+    assert all(b > a for a, b in zip(e, e[1:], strict=False)), e
+    # Same load carried.
+    for s in results:
+        assert s.load_capacity == pytest.approx(results[0].load_capacity, rel=1e-6)
+    # Magnitudes: white metal changes p_max by < 0.1 %, rubber by more than 10 %.
+    assert p_max[1] == pytest.approx(p_max[0], rel=1e-3)
+    assert p_max[3] < 0.9 * p_max[0]
+
+
+def test_stiff_liner_reproduces_the_rigid_bore(ntua) -> None:  # noqa: ANN001
+    # A 0.1 mm liner of 500 GPa deflects 1e-16 m/Pa: 0.1 nm at the 1.2 MPa peak, 1e-6 of h_min.
+    stiff = Liner(1e-4, 5e11, 0.3)
+    rigid = JournalBearing(ntua.geometry, ntua.operating, ntua.options).equilibrium(ntua.load_y, ntua.load_z)
+    lined = JournalBearing(replace(ntua.geometry, liner=stiff), ntua.operating, ntua.options).equilibrium(
+        ntua.load_y, ntua.load_z
+    )
+    assert lined.state.min_film_thickness == pytest.approx(rigid.state.min_film_thickness, rel=1e-5)
+    assert lined.state.max_pressure == pytest.approx(rigid.state.max_pressure, rel=1e-5)
+    assert rigid.state.liner_deformation is None
+
+
+def test_linearisation_with_a_liner_is_that_of_the_equilibrium(ntua) -> None:  # noqa: ANN001
+    bearing = JournalBearing(
+        replace(ntua.geometry, liner=Liner.preset("polymer_composite")), ntua.operating, ntua.options
+    )
+    eq = bearing.equilibrium(ntua.load_y, ntua.load_z)
+    lin = bearing.linearise(eq.state.position)
+    np.testing.assert_allclose(lin.force, [eq.state.force_y, eq.state.force_z], rtol=1e-5)
+    assert lin.stiffness[0, 0] > 0
+
+
+RIG = """
+[case]
+name = "rig"
+
+[bearing]
+length = "1.2 m"
+diameter = "0.323 m"
+radial_clearance = "0.55 mm"
+
+[bearing.operation]
+speed = "175 rpm"
+load = "20 kN"
+
+[bearing.lubricant]
+preset = "water"
+temperature = "25 degC"
+
+[bearing.liner]
+preset = "polymer_composite"
+
+[bearing.solver]
+axial_nodes = 21
+circumferential_nodes = 60
+"""
+
+
+def test_liner_results_in_json_and_report(tmp_path: Path) -> None:
+    case = tmp_path / "rig.toml"
+    case.write_text(RIG)
+    out = tmp_path / "out"
+    result = invoke("bearing", "solve", str(case), "--out", str(out), "--workers", "1")
+    assert result.exit_code == 0, result.output
+    bearing = json.loads((out / "results.json").read_text())["bearing"]
+    base = bearing["cases"][0]
+    assert bearing["units"]["max_liner_deformation"] == "m"
+    deformation = np.array(base["liner_deformation_map"])
+    assert deformation.shape == (21, 60)
+    assert base["max_liner_deformation"] == pytest.approx(deformation.max(), rel=1e-6)
+    assert 1e-7 < base["max_liner_deformation"] < 1e-4
+    assert (out / "figures" / "bearing_0_liner.png").exists()
+    assert "max liner deformation" in result.stdout
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "field"),
+    [
+        ('preset = "polymer_composite"', 'thickness = "0 mm"\nmodulus = "2 GPa"\npoisson = 0.3', "thickness"),
+        ('preset = "polymer_composite"', 'thickness = "50 mm"\nmodulus = "2 GPa"\npoisson = 0.3', "thickness"),
+        ('preset = "polymer_composite"', 'preset = "polymer_composite"\npoisson = 0.5', "poisson"),
+        ('preset = "polymer_composite"', 'preset = "polymer_composite"\nmodulus = "0 MPa"', "modulus"),
+        ('preset = "polymer_composite"', 'thickness = "10 mm"\nmodulus = "2 GPa"', "poisson"),
+    ],
+)
+def test_bad_liner_table_is_one_line_exit_2(tmp_path: Path, old: str, new: str, field: str) -> None:
+    case = tmp_path / "rig.toml"
+    case.write_text(RIG.replace(old, new))
+    result = invoke("bearing", "solve", str(case), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 2, result.output
+    lines = [line for line in result.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and lines[0].startswith(f"error: bearing.liner.{field} = "), lines
+    assert not (tmp_path / "r.json").exists()
