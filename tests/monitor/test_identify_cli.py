@@ -300,3 +300,23 @@ def test_trend_verb_options_and_figures(tmp_path):
         assert (out / "figures" / f"{name}.png").stat().st_size > 10_000
     bad = invoke("monitor", "trend", "--db", str(database), "--limit", "2 kg")
     assert bad.exit_code == 2 and bad.stderr.startswith("error: --limit")
+
+
+def test_progress_counts_the_windows_of_each_recording(truth, tmp_path):
+    """The command line's bar: a Tally per recording counting its windows up to all of them."""
+    from shaftline.monitor.processing import identify_recordings
+    from shaftline.monitor.study import IdentifyPlan
+    from shaftline.registry import Tally
+
+    case, _ = truth
+    files = [write_csv(tmp_path / "a.csv", truth), write_csv(tmp_path / "b.csv", truth, truth[1].signals + 1e-7)]
+    told: list[Tally] = []
+    plan = IdentifyPlan(tuple(map(str, files)), str(tmp_path / "m.sqlite"), start=START)
+    done = identify_recordings(case.layout, plan, progress=lambda step: told.append(step))
+    assert [(t.label, t.done, t.total, t.unit) for t in told] == [
+        ("a.csv (1/2)", 0, 2, "windows"), ("a.csv (1/2)", 1, 2, "windows"), ("a.csv (1/2)", 2, 2, "windows"),
+        ("b.csv (2/2)", 0, 2, "windows"), ("b.csv (2/2)", 1, 2, "windows"),
+        ("b.csv (2/2)", 2, 2, "windows"),
+    ]  # fmt: skip
+    # the second file follows the first back to back
+    assert done.recordings[1].processed.recording.started_at == START + dt.timedelta(seconds=4)
