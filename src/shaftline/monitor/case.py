@@ -206,7 +206,15 @@ class IdentifySection(Section):
     masked, filled along time and counted; a window with more is an error."""
     lambda_threshold: Annotated[float, Quantity("dimensionless", gt=0, le=10)] = 1.0
     """Film parameter below which a stretch of windows is an alarm (seed 001: boundary below 1)."""
-    alarm_duration: Annotated[PositiveTime, Plausible(0.0, 1e7, "seconds to months")] = 600.0
+    alarm_duration: Annotated[
+        PositiveTime,
+        Plausible(
+            0.0,
+            86400.0,
+            "stretches of seconds to a day; a longer fall of the film is a trend, which the fitted line shows "
+            "(engineering judgement)",
+        ),
+    ] = 600.0
     """Shortest stretch below the threshold that is an alarm."""
 
 
