@@ -194,6 +194,11 @@ def test_an_unreachable_database_and_no_recording_are_one_line(truth, tmp_path):
     result = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", url)
     assert result.exit_code == 2 and result.stderr.startswith("error: database = ") and "secret" not in result.stderr
     assert result.stderr.count("\n") == 1
+    folder = tmp_path / "o"
+    inside = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", str(folder / "m.sqlite"),
+                    "--out", str(folder))  # fmt: skip
+    assert inside.exit_code == 2 and "allowed a database outside the --out folder" in inside.stderr
+    assert not folder.exists()
     none = invoke("monitor", "identify", str(case_file(tmp_path)))
     assert none.exit_code == 2 and none.stderr.startswith("error: RECORDING = 'none'")
     trend = invoke("monitor", "trend", "--db", str(tmp_path / "none.sqlite"))

@@ -458,6 +458,7 @@ def _identified_blocks(identified: Identified, levels: tuple[float, float]) -> l
                 f"monitor_identified_{index}.png",
                 figures.trend,
                 (item.trends, levels),
+                {"fit": False},
                 caption=f"{item.plan.recording.path.name}: smallest film of each section over its windows, regime "
                 "thresholds, lambda alarms shaded",
             )
@@ -489,8 +490,13 @@ def identify_command(
 ) -> None:
     """Identify probe recordings window by window (orbits, film, regimes) into the trend database;
     Ctrl-C keeps every window stored and the same command resumes."""
-    from shaftline.commandline import run_cases
+    from shaftline.commandline import fail, run_cases
+    from shaftline.errors import InputError
 
+    if db is not None and "://" not in db and out is not None:
+        if out.expanduser().resolve() in Path(db).expanduser().resolve().parents:
+            # a file in the report folder would stop that folder being written (refused as foreign)
+            fail(InputError("--db", db, "", "a database outside the --out folder"))
     overrides: dict[str, Any] = {}
     if recordings:
         overrides["monitor.identify.recordings"] = [str(path.expanduser().resolve()) for path in recordings]

@@ -178,10 +178,13 @@ def centre_line_vs_speed(points: CentreLinePoints, clearance: float, rotation: i
 
 
 @figure_function(size=(10, 5))
-def trend(trends: Sequence[SectionTrend], thresholds_m: tuple[float, float] | None = None, *, ax: Any) -> Any:
+def trend(
+    trends: Sequence[SectionTrend], thresholds_m: tuple[float, float] | None = None, fit: bool = True, *, ax: Any
+) -> Any:
     """Trend of the smallest film of each section against time, µm: the lambda alarm stretches
     shaded, the fitted straight line of the bearing's smallest film carried on to its limit
-    (the projected crossing date marked), and the regime thresholds where known."""
+    (the projected crossing date marked; not with ``fit`` False), and the regime thresholds where
+    known."""
     import matplotlib.dates as mdates
 
     top = 0.0
@@ -203,7 +206,7 @@ def trend(trends: Sequence[SectionTrend], thresholds_m: tuple[float, float] | No
             ax.axvspan(alarm.start, alarm.end, color="C3", alpha=0.2, label=None if marked else "lambda alarm")
             marked = True
     whole = next((item for item in trends if item.section == "bearing"), trends[-1] if trends else None)
-    if whole is not None and whole.crossing is not None and whole.times:
+    if fit and whole is not None and whole.crossing is not None and whole.times:
         start, end = whole.times[0], whole.times[-1]
         crossing = whole.crossing
         stop = crossing.crossing if crossing.crossing is not None and crossing.crossing > end else end
@@ -213,17 +216,15 @@ def trend(trends: Sequence[SectionTrend], thresholds_m: tuple[float, float] | No
         ax.plot([start, stop], line, "k--", lw=0.8, label="fitted trend")
         ax.axhline(whole.limit * MICRO, color="C3", lw=0.8, ls=":", label=f"limit {whole.limit * MICRO:.2f} µm")
         if crossing.crossing is not None:
-            ax.plot(
-                [crossing.crossing],
-                [whole.limit * MICRO],
-                "C3v",
-                ms=8,
-                label=f"projected crossing {crossing.crossing:%Y-%m-%d %H:%M}",
-            )
+            past = crossing.value_now <= whole.limit
+            when = f"{crossing.crossing:%Y-%m-%d %H:%M}"
+            label = "trend at or below the limit now" if past else f"projected crossing {when}"
+            ax.plot([crossing.crossing], [whole.limit * MICRO], "C3v", ms=8, label=label)
     if thresholds_m is not None:
         low, high = (level * MICRO for level in thresholds_m)
         ax.axhline(low, color=REGIME_COLOURS[0], lw=0.6, ls="-.", label=f"boundary below {low:.2f} µm")
         ax.axhline(high, color=REGIME_COLOURS[2], lw=0.6, ls="-.", label=f"hydrodynamic above {high:.2f} µm")
+        top = max(top, high)
     ax.set_ylim(bottom=0.0, top=max(1.1 * top, 1.0))
     ax.set_ylabel("h_min [µm]")
     ax.set_xlabel("time (UTC)" + ("; shaded: lambda alarms" if marked else ""))
