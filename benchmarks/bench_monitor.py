@@ -1,6 +1,8 @@
-"""Per-sample speed of the film monitor (issue 13): journal-centre orbit and film at the probe sections.
+"""Speed of the film monitor (issue 13): the per-sample part, and a long recording end to end.
 
-Run ``PYTHONPATH=src .venv/bin/python benchmarks/bench_monitor.py``. For seed 001's layout (3 sections
+Run ``PYTHONPATH=src .venv/bin/python benchmarks/bench_monitor.py [--minutes 60] [--only per-sample|end-to-end]``.
+
+**Per-sample part.** For seed 001's layout (3 sections
 x 3 probes, 9 channels) and a 32-channel one (8 sections x 4 probes, the issue's recording), times
 :func:`shaftline.monitor.identification.probe_films` on a block of one million time samples (orbit of
 every section and the film at its probe angles, exact circle geometry, two correction passes), prints
@@ -8,11 +10,34 @@ the median of five calls as time samples per second and channel samples per seco
 target: >= 5 million samples per second per core; the compiled kernel runs on one core), and, pair by
 pair in the same process, the same arithmetic written with numpy arrays (the first implementation) and
 the ratio. Three rounds.
+
+**End to end** (the issue's 1-hour, 32-channel, 10 kHz recording, 1.15 G samples). A synthetic
+recording of the 32-channel layout (a 1X whirl of 5 um about an offset centre at 120 rpm, 0.05 um
+noise, a keyphasor channel) is written in 10 s chunks to an HDF5 file (float32, chunked datasets,
+sample rate as an attribute; 4.6 GB for an hour) in a temporary folder. A fresh process (so that its
+peak resident memory is that of the processing alone) then runs what ``monitor identify`` runs on
+it, :func:`shaftline.monitor.processing.process_recording`: SHA-256 of the file, the checks of the
+first window, then every 2 s window read, masked, identified (orbits, film, the least-squares
+centre line of eight sections, regimes, descriptors) and stored in a SQLite database, one
+transaction each. It prints the wall time, the ratio of recorded time to wall time (> 1: faster
+than real time) and the peak resident memory (``ru_maxrss``). ``--model-shape`` fits the centre
+line with the shaft model's bending shape (seed 001's rig, differential evolution per window), as
+a case with ``shaft_model`` does. ``--minutes`` shortens the recording;
+the wall time of the hour is then extrapolated linearly (per window and per byte hashed), and both
+are printed.
 """
 
 from __future__ import annotations
 
+import argparse
+import datetime as dt
 import math
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
 
 import numpy as np
 from timing import median_time
@@ -66,7 +91,107 @@ def numpy_films(layout: ProbeLayout, gaps: np.ndarray, references) -> list[np.nd
     return out
 
 
-def main() -> None:
+RATE = 10_000.0
+SPEED = 4 * math.pi  # 120 rpm
+CHUNK_SECONDS = 10
+WINDOW_SECONDS = 2.0
+
+
+def write_recording(path: Path, minutes: float, seed: int = 1) -> int:
+    """The synthetic 32-channel recording, written chunk by chunk; returns its samples."""
+    import h5py
+
+    layout = layout_32()
+    total = int(round(minutes * 60 * RATE))
+    chunk = int(CHUNK_SECONDS * RATE)
+    rng = np.random.default_rng(seed)
+    with h5py.File(path, "w") as file:
+        file.attrs["sample_rate"] = RATE
+        datasets = [
+            file.create_dataset(name, shape=(total,), dtype="float32", chunks=(65_536,))
+            for name in (*layout.channels, "keyphasor")
+        ]
+        for first in range(0, total, chunk):
+            stop = min(first + chunk, total)
+            t = np.arange(first, stop) / RATE
+            phase = SPEED * t + 0.5
+            ey = -0.5e-3 + 5e-6 * np.cos(phase)
+            ez = -0.1e-3 + 5e-6 * np.sin(phase)
+            columns = 0
+            for section in layout.sections:
+                gaps = film_between_circles(ey, ez, section.angles, layout) + section.mounting_distances
+                gaps += rng.normal(0.0, 0.05e-6, gaps.shape)
+                for j in range(gaps.shape[1]):  # a loop over channels: the file has one dataset each
+                    datasets[columns + j][first:stop] = gaps[:, j]  # sensitivity 1 V/m: the output is the gap
+                columns += gaps.shape[1]
+            datasets[-1][first:stop] = np.where((phase % (2 * math.pi)) < 0.2, 5.0, 0.0)
+    return total
+
+
+def process(path: Path, model_shape: bool = False) -> None:
+    """What ``monitor identify`` does to one recording; prints wall time, windows and peak RSS."""
+    from shaftline.monitor.forward import RigCase, rig_shape_for
+    from shaftline.monitor.processing import process_recording
+    from shaftline.monitor.trends import TrendStore
+
+    layout = layout_32()
+    # the seed rig's shaft-model shape (its bearing is as long): a differential-evolution fit per window
+    shape = rig_shape_for(RigCase()) if model_shape else None
+    start = time.perf_counter()
+    with TrendStore(path.with_suffix(".sqlite")) as store:
+        done = process_recording(
+            layout,
+            path,
+            store,
+            "keyphasor",
+            WINDOW_SECONDS,
+            started_at=dt.datetime(2026, 11, 2, tzinfo=dt.UTC),
+            shape=shape,
+        )
+    wall = time.perf_counter() - start
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024  # kB on Linux
+    print(f"RESULT {wall:.3f} {done.windows} {done.written} {peak}")
+
+
+def end_to_end(minutes: float, model_shape: bool = False) -> None:
+    with tempfile.TemporaryDirectory(prefix="bench-monitor-") as folder:
+        path = Path(folder) / "recording.h5"
+        start = time.perf_counter()
+        samples = write_recording(path, minutes)
+        written = time.perf_counter() - start
+        size = path.stat().st_size
+        channels = len(layout_32().channels)
+        print(
+            f"recording: {minutes:g} min, {channels} channels + keyphasor at {RATE:g} Hz = "
+            f"{samples * channels / 1e9:.3f} G probe samples, {size / 2**30:.2f} GiB HDF5 float32 "
+            f"(written in {written:.0f} s)"
+        )
+        output = subprocess.run(
+            [sys.executable, __file__, "--process", str(path), *(["--model-shape"] if model_shape else [])],
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
+        line = next(row for row in output.splitlines() if row.startswith("RESULT"))
+        wall, windows, stored, peak = line.split()[1:]
+        wall_s, recorded = float(wall), samples / RATE
+        line_kind = "shaft-model shape by differential evolution" if model_shape else "least-squares"
+        print(
+            f"end to end ({line_kind} centre line; hash, read, identify, store {stored}/{windows} windows of "
+            f"{WINDOW_SECONDS:g} s): "
+            f"{wall_s:.1f} s for {recorded:.0f} s recorded, {recorded / wall_s:.1f} x real time; "
+            f"peak resident memory {int(peak) / 2**20:.0f} MiB"
+        )
+        if minutes < 60:
+            hour = wall_s * 60 / minutes
+            print(
+                f"extrapolated to 1 hour (linear in windows and bytes): {hour:.0f} s for 3600 s, "
+                f"{3600 / hour:.1f} x real time; memory does not grow with the length (windows of "
+                f"{WINDOW_SECONDS:g} s)"
+            )
+
+
+def per_sample() -> None:
     for name, layout in (("seed 001, 9 channels", seed001_layout()), ("32 channels", layout_32())):
         gaps = block(layout)
         references = reference_points(layout, gaps[:10_000])
@@ -80,6 +205,24 @@ def main() -> None:
                 f"({SAMPLES * channels / compiled / 1e6:.1f} M channel samples/s); "
                 f"numpy {SAMPLES / plain / 1e6:.2f} M time samples/s; ratio {plain / compiled:.1f}"
             )
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--minutes", type=float, default=60.0, help="length of the end-to-end recording")
+    parser.add_argument("--only", choices=("per-sample", "end-to-end"), default=None)
+    parser.add_argument(
+        "--model-shape", action="store_true", help="centre line from the shaft model's shape (as the example case)"
+    )
+    parser.add_argument("--process", type=Path, default=None, help=argparse.SUPPRESS)
+    arguments = parser.parse_args()
+    if arguments.process is not None:
+        process(arguments.process, arguments.model_shape)
+        return
+    if arguments.only in (None, "per-sample"):
+        per_sample()
+    if arguments.only in (None, "end-to-end"):
+        end_to_end(arguments.minutes, arguments.model_shape)
 
 
 if __name__ == "__main__":

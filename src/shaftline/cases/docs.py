@@ -8,6 +8,7 @@ that they match, and ``python -m shaftline.cases.docs README.md`` rewrites them.
 
 from __future__ import annotations
 
+import datetime
 import json
 import sys
 import types
@@ -52,7 +53,8 @@ def _type_text(annotation: Any) -> str:
         return _type_text(args[0])
     if isinstance(annotation, type) and issubclass(annotation, BaseModel):
         return "table"
-    return {int: "integer", float: "number", str: "text", bool: "true/false"}.get(annotation, str(annotation))
+    names = {int: "integer", float: "number", str: "text", bool: "true/false", datetime.datetime: "date-time"}
+    return names.get(annotation, str(annotation))
 
 
 def _bounds(metadata: list[Any]) -> str:

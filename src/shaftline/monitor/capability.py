@@ -1,19 +1,26 @@
 """Film-thickness monitoring as a capability: ``[monitor]`` in a case file, ``shaftline monitor
-simulate``, ``monitor`` in results.json, a section of the report (issue 13, part A: synthetic
-recordings of seed 001's rig; readers of real recordings, trends and alarms follow)."""
+simulate`` (synthetic recordings of seed 001's rig), ``shaftline monitor identify`` (recordings
+window by window into the trend database) and ``shaftline monitor trend`` (the database's
+trends, alarms and projected crossing of a limit), ``monitor`` in results.json, a section of
+the report (issue 13)."""
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
-from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
+import typer
+
+from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table
 
 if TYPE_CHECKING:
     from shaftline.monitor.case import MonitorSection
+    from shaftline.monitor.processing import Identified
     from shaftline.monitor.study import MonitorResult, MonitorStudy, SimulatedPoint
+    from shaftline.monitor.trends import LambdaAlarm, SectionTrend
 
 RPM = 30 / math.pi
 MICRO = 1e6
@@ -31,6 +38,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             ("monitor", "simulate"),
             "Synthetic probe recordings of seed 001's rig from the bearing solver and the shaft model, identified "
             "(orbits, film round the sections and along the bearing, regimes) and compared with the truth.",
+            options={"task": "simulate"},
         ),
     )
 
@@ -45,9 +53,25 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
         return build_study(section, context)
 
     def solve(self, study: MonitorStudy, progress: Progress = no_progress, **options: Any) -> MonitorResult:
+        from dataclasses import replace
+
         from shaftline.monitor.study import solve_monitor
 
-        return solve_monitor(study, progress)
+        task = options.get("task", "all")
+        result = solve_monitor(study, progress, simulate_rig=task in ("all", "simulate"))
+        plan = study.identify
+        if task == "identify" or (task == "all" and plan is not None and plan.recordings):
+            from shaftline.errors import InputError
+            from shaftline.monitor.processing import identify_recordings
+
+            if plan is None:
+                raise InputError("RECORDING", "none", "", "one recording file or more")
+            identified = identify_recordings(study.layout, plan, study.bending_shape(), progress)
+            result = replace(result, identified=identified)
+        return result
+
+    def commands(self) -> Sequence[Command]:
+        return (Command(("monitor", "identify"), identify_command), Command(("monitor", "trend"), trend_command))
 
     def to_json(self, result: MonitorResult) -> dict[str, Any]:
         from shaftline.monitor.regimes import thresholds
@@ -100,10 +124,11 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                 }
             )
         return {
-            "units": {"length": "m", "speed": "rad/s", "angle": "rad", "amplitude": "m"},
+            "units": {"length": "m", "speed": "rad/s", "angle": "rad", "amplitude": "m", "duration": "s"},
             "channels": list(layout.channels),
             "thresholds": {"boundary_below": low, "hydrodynamic_above": high},
             "points": points,
+            "identify": None if result.identified is None else identified_json(result.identified),
         }
 
     def _table(self, result: MonitorResult) -> Table:
@@ -141,6 +166,13 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
 
     def findings(self, result: MonitorResult) -> list[Finding]:
         found = []
+        if result.identified is not None:
+            found += [
+                Finding(_alarm_text(alarm, result.identified.lambda_threshold), criterion=True)
+                for item in result.identified.recordings
+                for trend in item.trends
+                for alarm in trend.alarms
+            ]
         for point in result.points:
             if point.recording.contact:
                 found.append(
@@ -154,9 +186,14 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
         return found
 
     def summary(self, result: MonitorResult) -> list[Block]:
-        if not result.points:
+        blocks: list[Block] = []
+        if result.identified is not None:
+            blocks += _masked_warnings(result.identified) + [_identified_table(result.identified)]
+        if result.points:
+            blocks.append(self._table(result))
+        if not blocks:
             return [Paragraph("No recordings: give [monitor.simulate] to make synthetic ones.")]
-        return [self._table(result)]
+        return blocks
 
     def report(self, result: MonitorResult) -> list[Block]:
         from dataclasses import replace
@@ -183,6 +220,8 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                 + "."
             )
         ]
+        if result.identified is not None:
+            blocks += _identified_blocks(result.identified, (low, high))
         if not result.points:
             return blocks
         rig = study.rig
@@ -276,6 +315,392 @@ def _recording_writer(point: SimulatedPoint, channels: tuple[str, ...]) -> Any:
         np.savetxt(path, table, delimiter=",", header=header, comments="", fmt="%.9g")
 
     return write
+
+
+def _when(moment: Any) -> str:
+    return f"{moment:%Y-%m-%d %H:%M:%S}"
+
+
+def _alarm_text(alarm: LambdaAlarm, threshold: float) -> str:
+    where = "along the bearing" if alarm.section == "bearing" else f"at section {alarm.section}"
+    return (
+        f"Film parameter below {threshold:g} {where} from {_when(alarm.start)} to {_when(alarm.end)} UTC "
+        f"({alarm.duration.total_seconds():.0f} s, lowest {alarm.lowest:.2f}): boundary lubrication."
+    )
+
+
+def _numbers(values: Any) -> list[float | None]:
+    return [float(v) if math.isfinite(v) else None for v in values]
+
+
+def _trend_json(trend: SectionTrend) -> dict[str, Any]:
+    crossing = trend.crossing
+    return {
+        "times": [t.isoformat() for t in trend.times],
+        "speed": _numbers(trend.speed),
+        "min_film_thickness": _numbers(trend.min_film),
+        "film_parameter": _numbers(trend.film_parameter),
+        "alarms": [
+            {
+                "start": a.start.isoformat(),
+                "end": a.end.isoformat(),
+                "duration": a.duration.total_seconds(),
+                "lowest": a.lowest,
+            }
+            for a in trend.alarms
+        ],
+        "limit": trend.limit if math.isfinite(trend.limit) else None,
+        "trend": None
+        if crossing is None
+        else {
+            "slope_per_day": crossing.slope,
+            "value_now": crossing.value_now,
+            "crossing": None if crossing.crossing is None else crossing.crossing.isoformat(),
+        },
+    }
+
+
+def identified_json(identified: Identified) -> dict[str, Any]:
+    """``monitor.identify`` of results.json: per recording its windows and trends (SI units)."""
+    return {
+        "database": identified.database,
+        "lambda_threshold": identified.lambda_threshold,
+        "alarm_duration": identified.alarm_duration,
+        "recordings": [
+            {
+                "name": item.plan.recording.path.name,
+                "content_hash": item.processed.recording.content_hash,
+                "started_at": item.processed.recording.started_at.isoformat(),
+                "sample_rate": item.plan.sample_rate,
+                "duration": item.plan.duration,
+                "windows": item.processed.windows,
+                "written": item.processed.written,
+                "masked_samples": item.processed.masked,
+                "sections": {trend.section: _trend_json(trend) for trend in item.trends},
+            }
+            for item in identified.recordings
+        ],
+    }
+
+
+def _masked_warnings(identified: Identified) -> list[Block]:
+    blocks: list[Block] = []
+    for item in identified.recordings:
+        done = item.processed
+        if done.masked:
+            blocks.append(
+                Paragraph(
+                    f"warning: {item.plan.recording.path.name}: {done.masked} probe samples of {done.samples} "
+                    f"({done.masked / done.samples:.3%}) were NaN or beyond their probe's range, masked and filled "
+                    "along time",
+                    "warn",
+                )
+            )
+    return blocks
+
+
+def _identified_table(identified: Identified) -> Table:
+    import numpy as np
+
+    rows = []
+    for item in identified.recordings:
+        done = item.processed
+        by_name = {trend.section: trend for trend in item.trends}
+        films = " / ".join(
+            f"{np.nanmean(t.min_film) * MICRO:.2f}" if np.isfinite(t.min_film).any() else "-"
+            for name, t in by_name.items()
+            if name != "bearing"
+        )
+        whole = by_name.get("bearing")
+        lowest = f"{np.nanmin(whole.film_parameter):.2f}" if whole is not None and whole.times else "-"
+        speeds = next(iter(by_name.values())).speed if by_name else np.array([])
+        rows.append(
+            [
+                item.plan.recording.path.name,
+                _when(done.recording.started_at),
+                f"{done.windows}",
+                f"{done.written}",
+                f"{np.nanmean(speeds) * RPM:.0f}" if speeds.size else "-",
+                films,
+                lowest,
+                f"{sum(len(t.alarms) for t in item.trends)}",
+            ]
+        )
+    names = "/".join(
+        t.section for t in (identified.recordings[0].trends if identified.recordings else ()) if t.section != "bearing"
+    )
+    return Table(
+        [
+            "recording",
+            "start (UTC)",
+            "windows",
+            "stored now",
+            "speed [rpm]",
+            f"mean h_min {names} [µm]",
+            "min lambda",
+            "alarms",
+        ],
+        rows,
+        f"Recordings identified into {identified.database} (lambda alarms below {identified.lambda_threshold:g} for "
+        f"{identified.alarm_duration:g} s or more)",
+    )
+
+
+def _identified_blocks(identified: Identified, levels: tuple[float, float]) -> list[Block]:
+    from shaftline.monitor import figures
+
+    blocks: list[Block] = [*_masked_warnings(identified), _identified_table(identified)]
+    for index, item in enumerate(identified.recordings):
+        if not item.trends:
+            continue
+        blocks.append(
+            Figure(
+                f"monitor_identified_{index}.png",
+                figures.trend,
+                (item.trends, levels),
+                {"fit": False},
+                caption=f"{item.plan.recording.path.name}: smallest film of each section over its windows, regime "
+                "thresholds, lambda alarms shaded",
+            )
+        )
+    return blocks
+
+
+def identify_command(
+    case_file: Annotated[Path, typer.Argument(help="Case file (TOML) with the [monitor] probes.")],
+    recordings: Annotated[
+        list[Path] | None,
+        typer.Argument(help="Recordings (CSV, Parquet, HDF5, TDMS); default: [monitor.identify] recordings."),
+    ] = None,
+    db: Annotated[
+        str | None,
+        typer.Option(
+            "--db",
+            help="Trend database: a SQLAlchemy URL (postgresql+psycopg://user@host/name) or a SQLite file; default: "
+            "[monitor.identify] database, monitor.sqlite beside the case file.",
+        ),
+    ] = None,
+    json_path: Annotated[
+        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
+    ] = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
+    strict: Annotated[
+        bool, typer.Option("--strict", help="Exit with status 3 also when a lambda alarm is raised.")
+    ] = False,
+) -> None:
+    """Identify probe recordings window by window (orbits, film, regimes) into the trend database;
+    Ctrl-C keeps every window stored and the same command resumes."""
+    from shaftline.commandline import fail, run_cases
+    from shaftline.errors import InputError
+
+    if db is not None and "://" not in db and out is not None:
+        if out.expanduser().resolve() in Path(db).expanduser().resolve().parents:
+            # a file in the report folder would stop that folder being written (refused as foreign)
+            fail(InputError("--db", db, "", "a database outside the --out folder"))
+    overrides: dict[str, Any] = {}
+    if recordings:
+        overrides["monitor.identify.recordings"] = [str(path.expanduser().resolve()) for path in recordings]
+    if db is not None:
+        overrides["monitor.identify.database"] = db if "://" in db else str(Path(db).expanduser().resolve())
+    run_cases(
+        Path(case_file),
+        json_path,
+        out,
+        only=["monitor"],
+        options={"monitor": {"task": "identify"}},
+        overrides=overrides,
+        strict=strict,
+    )
+
+
+def trend_command(
+    case_file: Annotated[
+        Path | None,
+        typer.Argument(
+            help="Optional case file: its [monitor] regime thresholds and [monitor.identify] database, "
+            "alarm threshold and duration."
+        ),
+    ] = None,
+    db: Annotated[
+        str | None,
+        typer.Option(
+            "--db",
+            help="Trend database (SQLAlchemy URL or SQLite file); default: the case's, else "
+            "monitor.sqlite in the working folder.",
+        ),
+    ] = None,
+    limit: Annotated[
+        str | None,
+        typer.Option(
+            "--limit",
+            help="Film limit the trend is projected to (e.g. '3 um'); default: the film at lambda = the threshold.",
+        ),
+    ] = None,
+    lambda_threshold: Annotated[
+        float | None, typer.Option("--lambda-threshold", help="Film parameter of an alarm (default 1).")
+    ] = None,
+    min_duration: Annotated[
+        str | None, typer.Option("--min-duration", help="Shortest alarm stretch (e.g. '10 min'; default 10 min).")
+    ] = None,
+    json_path: Annotated[
+        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
+    ] = None,
+    out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
+) -> None:
+    """Trends of the smallest film per section from the trend database: lambda alarms, the fitted
+    trend and its projected crossing of a limit, the averaged shaft centre line against speed."""
+    from shaftline.commandline import check_outputs, console, deliver, error_console, input_errors, interruptible
+    from shaftline.report.blocks import Section
+    from shaftline.report.terminal import print_blocks
+
+    with interruptible(), input_errors():
+        document, blocks, url = _trends(
+            case_file, db, limit, lambda_threshold, min_duration, out, json_path, check_outputs
+        )
+        quiet = json_path == "-"
+        print_blocks(error_console if quiet else console, [b for b in blocks if isinstance(b, Paragraph | Table)])
+        section = Section("monitor", "Film-thickness trends", blocks)
+        deliver({"monitor_trend": document}, json_path, out, [section], "Film-thickness trends", "", url, "database")
+    if out is not None and json_path != "-":
+        console.print(f"report: {out / 'report.html'}", markup=False, highlight=False)
+
+
+def _trends(
+    case_file: Path | None,
+    db: str | None,
+    limit_text: str | None,
+    threshold: float | None,
+    duration_text: str | None,
+    out: Path | None,
+    json_path: str | None,
+    check_outputs: Any,
+) -> tuple[dict[str, Any], list[Block], str]:
+    import datetime as dt
+
+    import numpy as np
+
+    from shaftline.errors import InputError
+    from shaftline.monitor import figures
+    from shaftline.monitor.trends import TrendStore, _hide_password, centre_lines, section_trends
+    from shaftline.units import to_si
+
+    plan, inputs, levels = None, [], None
+    if case_file is not None:
+        from shaftline.commandline import read_and_build
+        from shaftline.monitor.regimes import thresholds
+
+        case = read_and_build(Path(case_file), ["monitor"])
+        study = case.studies["monitor"]
+        plan, inputs, levels = study.identify, list(case.inputs), thresholds(study.layout)
+        inputs.append(Path(case_file))
+    if threshold is None:
+        threshold = plan.lambda_threshold if plan is not None else 1.0
+    if not (math.isfinite(threshold) and threshold > 0):
+        raise InputError("--lambda-threshold", threshold, "", "> 0")
+    duration = (
+        (plan.alarm_duration if plan is not None else 600.0)
+        if duration_text is None
+        else to_si(duration_text, "time", "--min-duration")
+    )
+    if not duration >= 0.0:
+        raise InputError("--min-duration", duration, "s", ">= 0")
+    limit = None if limit_text is None else to_si(limit_text, "length", "--limit")
+    if limit is not None and not limit > 0.0:
+        raise InputError("--limit", limit, "m", "> 0")
+    database = db if db is not None else plan.database if plan is not None else "monitor.sqlite"
+    url = TrendStore.url_of(database if "://" in database else Path(database).expanduser())
+    shown = _hide_password(url)
+    if url.startswith("sqlite:///") and not Path(url.removeprefix("sqlite:///")).is_file():
+        raise InputError("--db", shown, "", "an existing trend database (made by monitor identify)")
+    check_outputs(out, json_path, inputs)
+    with TrendStore(url) as store:
+        trends = section_trends(store, threshold, dt.timedelta(seconds=duration), limit)
+        lines = centre_lines(store)
+        stored = store.recordings()
+    if not trends:
+        raise InputError("--db", shown, "", "a database with identified windows (run monitor identify first)")
+    bearing = next((t for t in trends if t.section == "bearing"), trends[-1])
+    with np.errstate(all="ignore"):
+        sigma = float(np.nanmedian(bearing.min_film / bearing.film_parameter))
+    if levels is None and math.isfinite(sigma):
+        levels = (sigma, 3.0 * sigma)  # seed 001's regimes: lambda 1 and 3
+    rows = []
+    for t in trends:
+        crossing = t.crossing
+        rows.append(
+            [
+                t.section,
+                f"{len(t.times)}",
+                f"{np.nanmin(t.min_film) * MICRO:.2f}" if np.isfinite(t.min_film).any() else "-",
+                f"{np.nanmin(t.film_parameter):.2f}" if np.isfinite(t.film_parameter).any() else "-",
+                f"{len(t.alarms)}",
+                "-" if crossing is None else f"{crossing.slope * MICRO:+.3g}",
+                "-" if crossing is None or crossing.crossing is None else _when(crossing.crossing),
+            ]
+        )
+    first, last = bearing.times[0], bearing.times[-1]
+    blocks: list[Block] = [
+        Paragraph(
+            f"{len(stored)} recordings in {shown}, {len(bearing.times)} windows from {_when(first)} to {_when(last)} "
+            f"UTC. Alarms: film parameter below {threshold:g} for {duration:g} s or more. Trend: least-squares "
+            f"straight line of the smallest film against time, projected to the limit {bearing.limit * MICRO:.2f} µm."
+        ),
+        *[Paragraph("warning: " + _alarm_text(a, threshold), "warn") for t in trends for a in t.alarms],
+        Table(
+            [
+                "section",
+                "windows",
+                "lowest h_min [µm]",
+                "lowest lambda",
+                "alarms",
+                "trend [µm/day]",
+                "projected crossing (UTC)",
+            ],
+            rows,
+            "Smallest film per section over the stored windows",
+        ),
+        Figure(
+            "monitor_trend.png",
+            figures.trend,
+            (trends, levels),
+            caption="smallest film per section against time: lambda alarms shaded, fitted trend to the limit",
+        ),
+    ]
+    if lines:
+        blocks.append(
+            Figure(
+                "monitor_trend_centre_line.png",
+                figures.centre_line_ratio,
+                (lines,),
+                caption="averaged shaft centre line of each section against speed (5 rpm bins)",
+            )
+        )
+    document = {
+        "units": {"length": "m", "speed": "rad/s", "angle": "rad", "duration": "s"},
+        "database": shown,
+        "lambda_threshold": threshold,
+        "alarm_duration": duration,
+        "recordings": [
+            {
+                "name": r.name,
+                "content_hash": r.content_hash,
+                "started_at": r.started_at.isoformat(),
+                "complete": r.complete,
+            }
+            for r in stored
+        ],
+        "sections": {t.section: _trend_json(t) for t in trends},
+        "centre_line": {
+            line.section: {
+                "speed": line.speed.tolist(),
+                "eccentricity_ratio": line.eccentricity_ratio.tolist(),
+                "attitude_angle": line.attitude_angle.tolist(),
+                "windows": line.windows.tolist(),
+            }
+            for line in lines
+        },
+    }
+    return document, blocks, shown
 
 
 CAPABILITY = FilmMonitor()

@@ -7,10 +7,13 @@ Layout::
     [[monitor.sections]]            measurement sections from the loaded end
     [[monitor.sections.probes]]     probes: angle, mounting distance, calibration
     [monitor.simulate]              forward model of seed 001's rig: speeds, load, noise...
+    [monitor.identify]              recordings to identify: keyphasor, window, database...
 """
 
 from __future__ import annotations
 
+import datetime as dt
+from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import BeforeValidator, Field, StrictBool
@@ -25,6 +28,7 @@ from shaftline.cases.types import (
     PositiveLength,
     PositiveMass,
     PositiveSpeed,
+    PositiveTime,
     Quantity,
     Section,
     Temperature,
@@ -35,7 +39,7 @@ from shaftline.registry import BuildContext
 if TYPE_CHECKING:
     import numpy as np
 
-    from shaftline.monitor.study import MonitorStudy
+    from shaftline.monitor.study import IdentifyPlan, MonitorStudy
 
 _SEED = "seed 001"
 BEARING_LENGTH = Plausible(
@@ -169,6 +173,51 @@ class SimulateSection(Section):
     """Write each recording as CSV (time, channels in volts, keyphasor) beside the report."""
 
 
+class IdentifySection(Section):
+    """Recordings of the probes identified window by window into the trend database
+    (``shaftline monitor identify CASE.toml RECORDING...``)."""
+
+    keyphasor: str = "keyphasor"
+    """Name of the once-per-revolution channel."""
+    window: Annotated[
+        PositiveTime, Plausible(0.05, 600.0, "windows of a few revolutions: 0.05 s to 10 min (engineering judgement)")
+    ] = 2.0
+    """Length of a window (each gives one row of trends)."""
+    sample_rate: (
+        Annotated[PositiveFrequency, Plausible(10.0, 1e6, "data acquisition at 10 Hz to 1 MHz (engineering judgement)")]
+        | None
+    ) = None
+    """Samples per second where the files do not state it (checked against theirs where they do)."""
+    start: dt.datetime | None = None
+    """Time of the first sample of the first recording where the files do not state it (TOML date-time,
+    UTC without a zone); the recordings follow back to back in the order given. None: each file's
+    modification time."""
+    recordings: list[str] = []
+    """Recording files (CSV, Parquet, HDF5, TDMS), relative to this case; the command's RECORDING
+    arguments replace them."""
+    database: str = "monitor.sqlite"
+    """Trend database: a SQLAlchemy URL, or a SQLite file relative to this case (made if new);
+    --db replaces it."""
+    ignore_channels: list[str] = []
+    """Channels of the files that are neither probes nor the keyphasor and are left alone (any other
+    extra channel is an error: a probe named wrong)."""
+    max_invalid_share: Annotated[float, Quantity("dimensionless", gt=0, le=0.5)] = 0.01
+    """Largest share of a window's probe samples that may be NaN or beyond the probe's range: they are
+    masked, filled along time and counted; a window with more is an error."""
+    lambda_threshold: Annotated[float, Quantity("dimensionless", gt=0, le=10)] = 1.0
+    """Film parameter below which a stretch of windows is an alarm (seed 001: boundary below 1)."""
+    alarm_duration: Annotated[
+        PositiveTime,
+        Plausible(
+            0.0,
+            86400.0,
+            "stretches of seconds to a day; a longer fall of the film is a trend, which the fitted line shows "
+            "(engineering judgement)",
+        ),
+    ] = 600.0
+    """Shortest stretch below the threshold that is an alarm."""
+
+
 class MonitorSection(Section):
     """Film-thickness monitoring with eddy-current probes (seed 001)."""
 
@@ -195,6 +244,8 @@ class MonitorSection(Section):
     """Name of the monitored bearing in that [alignment] table (needed with shaft_model)."""
     simulate: SimulateSection | None = None
     """Synthetic recordings of seed 001's rig."""
+    identify: IdentifySection | None = None
+    """Recordings to identify into the trend database."""
 
 
 def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
@@ -265,7 +316,33 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
     speeds = tuple(section.simulate.speeds) if section.simulate is not None else ()
     slow_roll = section.simulate.slow_roll_speed if section.simulate is not None else 0.0
     write = section.simulate.write_recordings if section.simulate is not None else False
-    return MonitorStudy(layout, rig, speeds, slow_roll, write, shape)
+    identify = None if section.identify is None else _identify_plan(section.identify, context)
+    return MonitorStudy(layout, rig, speeds, slow_roll, write, shape, identify)
+
+
+def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyPlan:
+    from shaftline.monitor.study import IdentifyPlan
+
+    database = section.database
+    if "://" not in database:
+        # a file beside the case: kept across runs, never one of the run's inputs
+        database = str(context.base_dir / Path(database).expanduser())
+    recordings = tuple(str(context.path(name)) for name in section.recordings)
+    start = section.start
+    if start is not None and start.tzinfo is None:
+        start = start.replace(tzinfo=dt.UTC)
+    return IdentifyPlan(
+        recordings=recordings,
+        database=database,
+        keyphasor=section.keyphasor,
+        window=section.window,
+        sample_rate=section.sample_rate,
+        start=start,
+        ignore_channels=tuple(section.ignore_channels),
+        max_invalid_share=section.max_invalid_share,
+        lambda_threshold=section.lambda_threshold,
+        alarm_duration=section.alarm_duration,
+    )
 
 
 #: Stations of a bending shape along the bearing.

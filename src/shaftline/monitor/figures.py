@@ -10,6 +10,7 @@ clockwise on the page as in seed 001 (Sect. 5.1); lengths in µm and mm.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -21,6 +22,8 @@ if TYPE_CHECKING:
     from shaftline.monitor.identification import SectionOrbit
     from shaftline.monitor.orbits import CentreLinePoints
     from shaftline.monitor.probes import ProbeLayout
+    from shaftline.monitor.trends import CentreLine as TrendCentreLine
+    from shaftline.monitor.trends import SectionTrend
 
 MICRO = 1e6
 #: Colours of the regime bands: boundary, mixed, hydrodynamic.
@@ -171,4 +174,86 @@ def centre_line_vs_speed(points: CentreLinePoints, clearance: float, rotation: i
     full.legend(fontsize=8)
     zoom.set_aspect("equal", adjustable="datalim")
     zoom.set_title("averaged shaft centre line")
+    return ax
+
+
+@figure_function(size=(10, 5))
+def trend(
+    trends: Sequence[SectionTrend], thresholds_m: tuple[float, float] | None = None, fit: bool = True, *, ax: Any
+) -> Any:
+    """Trend of the smallest film of each section against time, µm: the lambda alarm stretches
+    shaded, the fitted straight line of the bearing's smallest film carried on to its limit
+    (the projected crossing date marked; not with ``fit`` False), and the regime thresholds where
+    known."""
+    import matplotlib.dates as mdates
+
+    top = 0.0
+    marked = False
+    for k, item in enumerate(trends):
+        film = np.asarray(item.min_film) * MICRO
+        style = "k-" if item.section == "bearing" else f"C{k % 10}-"
+        ax.plot(
+            item.times,
+            film,
+            style,
+            lw=1.0 if item.section != "bearing" else 1.4,
+            marker=".",
+            ms=3,
+            label=plain("smallest along the bearing" if item.section == "bearing" else item.section),
+        )
+        top = max(top, float(np.nanmax(film)) if np.isfinite(film).any() else 0.0)
+        for alarm in item.alarms:
+            ax.axvspan(alarm.start, alarm.end, color="C3", alpha=0.2, label=None if marked else "lambda alarm")
+            marked = True
+    whole = next((item for item in trends if item.section == "bearing"), trends[-1] if trends else None)
+    if fit and whole is not None and whole.crossing is not None and whole.times:
+        start, end = whole.times[0], whole.times[-1]
+        crossing = whole.crossing
+        stop = crossing.crossing if crossing.crossing is not None and crossing.crossing > end else end
+        days = np.array([0.0, (stop - start).total_seconds() / 86400.0])
+        last = (end - start).total_seconds() / 86400.0
+        line = (crossing.value_now + crossing.slope * (days - last)) * MICRO
+        ax.plot([start, stop], line, "k--", lw=0.8, label="fitted trend")
+        ax.axhline(whole.limit * MICRO, color="C3", lw=0.8, ls=":", label=f"limit {whole.limit * MICRO:.2f} µm")
+        if crossing.crossing is not None:
+            past = crossing.value_now <= whole.limit
+            when = f"{crossing.crossing:%Y-%m-%d %H:%M}"
+            label = "trend at or below the limit now" if past else f"projected crossing {when}"
+            ax.plot([crossing.crossing], [whole.limit * MICRO], "C3v", ms=8, label=label)
+    if thresholds_m is not None:
+        low, high = (level * MICRO for level in thresholds_m)
+        ax.axhline(low, color=REGIME_COLOURS[0], lw=0.6, ls="-.", label=f"boundary below {low:.2f} µm")
+        ax.axhline(high, color=REGIME_COLOURS[2], lw=0.6, ls="-.", label=f"hydrodynamic above {high:.2f} µm")
+        top = max(top, high)
+    ax.set_ylim(bottom=0.0, top=max(1.1 * top, 1.0))
+    ax.set_ylabel("h_min [µm]")
+    ax.set_xlabel("time (UTC)" + ("; shaded: lambda alarms" if marked else ""))
+    ax.xaxis.set_major_formatter(mdates.ConciseDateFormatter(ax.xaxis.get_major_locator()))
+    ax.legend(fontsize=7, ncol=2)
+    return ax
+
+
+@figure_function(layout=(1, 2), size=(10, 4.8))
+def centre_line_ratio(lines: Sequence[TrendCentreLine], *, ax: Any) -> Any:
+    """Averaged shaft centre line of each section from the stored windows, in eccentricity
+    ratio: the mean centre in each speed bin inside the clearance circle e/c = 1 (left) and
+    enlarged (right); horizontal towards rising bearing angle, as the orbits."""
+    full, zoom = ax
+    angle = np.linspace(0, 2 * np.pi, 361)
+    full.plot(np.sin(angle), np.cos(angle), "k", lw=0.8, label="clearance circle")
+    for k, line in enumerate(lines):
+        # position angle = attitude + pi, from the top towards rotation: page x = e sin, y = e cos
+        x = -line.eccentricity_ratio * np.sin(line.attitude_angle)
+        y = -line.eccentricity_ratio * np.cos(line.attitude_angle)
+        for axes in (full, zoom):
+            axes.plot(x, y, f"C{k % 10}o-", ms=3, label=plain(line.section))
+        for xi, yi, speed in zip(x, y, line.speed, strict=True):
+            zoom.annotate(f"{speed * 30 / np.pi:.0f}", (xi, yi), fontsize=6, textcoords="offset points", xytext=(3, 3))
+    full.set_aspect("equal")
+    full.set_xlabel("horizontal e/c")
+    full.set_ylabel("vertical e/c")
+    full.legend(fontsize=7)
+    zoom.set_aspect("equal", adjustable="datalim")
+    zoom.set_xlabel("horizontal e/c (labels: rpm)")
+    zoom.set_title("averaged shaft centre line against speed")
     return ax

@@ -21,13 +21,27 @@ from pathlib import Path
 import numpy as np
 
 from shaftline.errors import InputError
-from shaftline.monitor.probes import ProbeLayout
-from shaftline.monitor.recordings import open_recording
+from shaftline.monitor.orbits import revolution_marks
+from shaftline.monitor.probes import ProbeLayout, within_range
+from shaftline.monitor.recordings import Recording, open_recording
 from shaftline.monitor.regimes import film_ratio
-from shaftline.monitor.study import WindowResult, identify_window
-from shaftline.monitor.trends import StoredRecording, TrendStore
+from shaftline.monitor.study import IdentifyPlan, WindowResult, identify_window
+from shaftline.monitor.trends import SectionTrend, StoredRecording, TrendStore
+from shaftline.registry import Progress, Tally, no_progress
 
-__all__ = ["BEARING", "ProcessedRecording", "process_recording", "window_values"]
+__all__ = [
+    "BEARING",
+    "Identified",
+    "IdentifiedRecording",
+    "MAX_INVALID_SHARE",
+    "ProcessedRecording",
+    "RecordingPlan",
+    "identify_recordings",
+    "mask_invalid",
+    "plan_recording",
+    "process_recording",
+    "window_values",
+]
 
 #: Section name of the values that belong to the whole bearing (regime lengths, the smallest
 #: film along it).
@@ -69,6 +83,44 @@ def window_values(result: WindowResult, layout: ProbeLayout) -> dict[tuple[str, 
     return values
 
 
+#: Largest share of a window's probe samples that may be NaN or beyond the probe's range
+#: (masked and filled); beyond it the window is refused (engineering judgement: 1 % of a
+#: window's samples filled by interpolation moves its mean film by less than the noise).
+MAX_INVALID_SHARE = 0.01
+#: Plausible time-median film at a probe, in radial clearances: a journal inside its bore
+#: gives 0 to 2 c (plus wear); a recording in mV read as V, or um read as mm, is 1000 times off.
+FILM_PLAUSIBLE = (-1.0, 3.0)
+
+
+@dataclass(frozen=True)
+class RecordingPlan:
+    """A recording checked before anything of it is stored.
+
+    Attributes
+    ----------
+    recording : Recording
+    sample_rate : float
+        Hz.
+    size : int
+        Samples per window.
+    windows : int
+        Windows in the recording.
+    started_at : datetime
+        Time of its first sample.
+    """
+
+    recording: Recording
+    sample_rate: float
+    size: int
+    windows: int
+    started_at: dt.datetime
+
+    @property
+    def duration(self) -> float:
+        """Length of the recording, s."""
+        return self.recording.samples / self.sample_rate
+
+
 @dataclass(frozen=True)
 class ProcessedRecording:
     """What a run did with one recording.
@@ -80,16 +132,138 @@ class ProcessedRecording:
         Windows in the recording.
     written : int
         Windows identified and stored by this run (0 for a recording stored before).
+    masked : int
+        Probe samples of the windows of this run that were NaN or beyond their probe's range,
+        masked and filled by interpolation along time.
+    samples : int
+        Probe samples of the windows of this run.
     """
 
     recording: StoredRecording
     windows: int
     written: int
+    masked: int = 0
+    samples: int = 0
+
+
+def mask_invalid(layout: ProbeLayout, signals: np.ndarray) -> tuple[np.ndarray, int]:
+    """Probe outputs with the NaN and out-of-range samples (:func:`~shaftline.monitor.probes.within_range`)
+    filled by linear interpolation along time in their channel, and how many there were.
+
+    A channel without any valid sample stays NaN (the share check refuses such a window first).
+    """
+    valid = within_range(layout, layout.gaps(signals))
+    count = int(valid.size - np.count_nonzero(valid))
+    if count == 0:
+        return signals, 0
+    filled = np.array(signals, dtype=float, copy=True)
+    index = np.arange(filled.shape[0])
+    # a loop over channels (tens), not samples
+    for column in np.flatnonzero(~valid.all(axis=0)):
+        good = valid[:, column]
+        if good.any():
+            filled[~good, column] = np.interp(index[~good], index[good], filled[good, column])
+        else:
+            filled[:, column] = np.nan
+    return filled, count
+
+
+def _check_share(masked: int, total: int, limit: float, where: str) -> None:
+    if total and masked > limit * total:
+        raise InputError(
+            where,
+            f"{masked / total:.2%} of the probe samples NaN or beyond the probe's range",
+            "",
+            f"at most {limit:.2%} (max_invalid_share; check the wiring, the probes' ranges and the units)",
+        )
+
+
+def _check_units(layout: ProbeLayout, signals: np.ndarray, where: str) -> None:
+    """The time-median film at each probe must lie within the clearance (a factor 1000 off
+    in the units of the outputs or the calibration is far outside)."""
+    gaps = layout.gaps(signals)
+    with np.errstate(all="ignore"):
+        median = np.nanmedian(gaps, axis=0) if np.isfinite(gaps).any(axis=0).all() else None
+    if median is None:
+        return  # a channel of NaN only: the share check speaks
+    clearance = layout.radial_clearance
+    probes = [p for s in layout.sections for p in s.probes]
+    low, high = FILM_PLAUSIBLE
+    for probe, gap in zip(probes, median, strict=True):
+        film = gap - probe.mounting_distance
+        if not low * clearance <= film <= high * clearance:
+            raise InputError(
+                f"{where}, channel {probe.name}",
+                f"median film {film * 1e3:.6g} mm",
+                "",
+                f"within the radial clearance {clearance * 1e3:g} mm ({low:g} to {high:g} c; an output in mV read "
+                "as V, or a calibration in V/mm read as V/um, is 1000 times off)",
+            )
+
+
+def plan_recording(
+    layout: ProbeLayout,
+    path: str | Path,
+    keyphasor: str,
+    window_seconds: float = 1.0,
+    sample_rate: float | None = None,
+    started_at: dt.datetime | None = None,
+    ignore_channels: tuple[str, ...] | None = None,
+    max_invalid_share: float = MAX_INVALID_SHARE,
+) -> RecordingPlan:
+    """Open a recording and check it before anything of it is stored: its channels (every
+    probe and the keyphasor; with ``ignore_channels`` given, no others but those), one sample
+    rate, at least one window, and a first window whose films lie inside the clearance (the
+    units) with no more than ``max_invalid_share`` of its probe samples NaN or beyond range.
+
+    Raises
+    ------
+    InputError
+        One line naming the file and what is wrong.
+    """
+    if not (isinstance(window_seconds, float | int) and math.isfinite(window_seconds) and window_seconds > 0.0):
+        raise InputError("window_seconds", window_seconds, "s", "a positive length of a few revolutions")
+    recording = open_recording(path)
+    columns = [*layout.channels, keyphasor]
+    rate = recording.sample_rate(columns, given=sample_rate)
+    if ignore_channels is not None:
+        extra = [c for c in recording.channels if c not in columns and c not in ignore_channels]
+        if extra:
+            raise InputError(
+                f"{recording.path.name} channels",
+                ", ".join(extra),
+                "",
+                "only the probes' and the keyphasor's (name others in ignore_channels)",
+            )
+    size = int(round(window_seconds * rate))
+    whole, rest = divmod(recording.samples, size)
+    windows = whole + (1 if rest >= size / 2 else 0)
+    if windows == 0:
+        raise InputError(
+            "window_seconds", window_seconds, "s", f"at most the recording's {recording.samples / rate:g} s"
+        )
+    first = next(recording.blocks(columns, size=size))[1]
+    marks = revolution_marks(first[:, -1])
+    if marks.size < 2:
+        raise InputError(
+            "window",
+            window_seconds,
+            "s",
+            f"a window of one shaft revolution or more (window 0 of {recording.path.name} holds {marks.size} "
+            f"marks of the keyphasor {keyphasor})",
+        )
+    where = f"{recording.path.name} window 0"
+    _check_units(layout, first[:, :-1], where)
+    _, masked = mask_invalid(layout, first[:, :-1])
+    _check_share(masked, first[:, :-1].size, max_invalid_share, where)
+    if started_at is None:
+        started_at = dt.datetime.fromtimestamp(recording.path.stat().st_mtime, tz=dt.UTC)
+    return RecordingPlan(recording, rate, size, windows, started_at)
 
 
 def process_recording(
     layout: ProbeLayout,
-    path: str | Path,
+    path: str | Path | RecordingPlan,
     store: TrendStore,
     keyphasor: str,
     window_seconds: float = 1.0,
@@ -97,6 +271,7 @@ def process_recording(
     started_at: dt.datetime | None = None,
     shape: tuple[np.ndarray, np.ndarray] | None = None,
     progress: Callable[[int, int], None] | None = None,
+    max_invalid_share: float = MAX_INVALID_SHARE,
 ) -> ProcessedRecording:
     """Identify every window of a recording and store its summary.
 
@@ -104,8 +279,9 @@ def process_recording(
     ----------
     layout : ProbeLayout
         Probes; their names are the recording's channel names.
-    path : str or Path
-        The recording (CSV, Parquet, HDF5, TDMS).
+    path : str, Path or RecordingPlan
+        The recording (CSV, Parquet, HDF5, TDMS), or one checked by :func:`plan_recording`
+        (then ``window_seconds``, ``sample_rate`` and ``started_at`` are its own).
     store : TrendStore
     keyphasor : str
         Name of the once-per-revolution channel.
@@ -120,46 +296,180 @@ def process_recording(
         Bending shape of the shaft model for the centre line.
     progress : callable, optional
         Called with (windows done, windows in all) after each window.
+    max_invalid_share : float
+        Largest share of a window's probe samples that may be NaN or beyond range (masked,
+        filled and counted); a window beyond it raises before it is stored.
 
     Raises
     ------
     InputError
-        From the recording (channels, sample rate) or ``"window_seconds"``.
+        From the recording (channels, sample rate, units, invalid samples) or
+        ``"window_seconds"``; every window stored before stays (each whole).
     """
-    if not (isinstance(window_seconds, float | int) and math.isfinite(window_seconds) and window_seconds > 0.0):
-        raise InputError("window_seconds", window_seconds, "s", "a positive length of a few revolutions")
-    recording = open_recording(path)
-    columns = [*layout.channels, keyphasor]
-    rate = recording.sample_rate(columns, given=sample_rate)
-    size = int(round(window_seconds * rate))
-    whole, rest = divmod(recording.samples, size)
-    windows = whole + (1 if rest >= size / 2 else 0)
-    if windows == 0:
-        raise InputError(
-            "window_seconds", window_seconds, "s", f"at most the recording's {recording.samples / rate:g} s"
+    plan = (
+        path
+        if isinstance(path, RecordingPlan)
+        else plan_recording(
+            layout, path, keyphasor, window_seconds, sample_rate, started_at, max_invalid_share=max_invalid_share
         )
-    if started_at is None:
-        started_at = dt.datetime.fromtimestamp(recording.path.stat().st_mtime, tz=dt.UTC)
-    stored = store.recording(recording.content_hash(), recording.path.name, recording.samples, rate, started_at)
+    )
+    recording, rate, size, windows = plan.recording, plan.sample_rate, plan.size, plan.windows
+    columns = [*layout.channels, keyphasor]
+    stored = store.recording(recording.content_hash(), recording.path.name, recording.samples, rate, plan.started_at)
     done = store.windows_done(stored)
     if stored.complete or len(done) >= windows:
         return ProcessedRecording(stored, windows, 0)
     # The reference point from the first window, whatever windows are left to do.
     first = next(recording.blocks(columns, size=size))[1]
-    references = identify_window(layout, first[:, :-1], first[:, -1], rate, shape=shape).references
+    signals, _ = mask_invalid(layout, first[:, :-1])
+    references = identify_window(layout, signals, first[:, -1], rate, shape=shape).references
     start = min(k for k in range(windows) if k not in done)
-    written = 0
+    written = masked = samples = 0
     for first_sample, block in recording.blocks(columns, size=size, start=start * size):
         k = first_sample // size
         if k >= windows:
             break
         if k in done:
             continue
-        result = identify_window(layout, block[:, :-1], block[:, -1], rate, shape=shape, references=references)
+        signals, bad = mask_invalid(layout, block[:, :-1])
+        _check_share(bad, signals.size, max_invalid_share, f"{recording.path.name} window {k}")
+        masked, samples = masked + bad, samples + signals.size
+        result = identify_window(layout, signals, block[:, -1], rate, shape=shape, references=references)
         time = stored.started_at + dt.timedelta(seconds=first_sample / rate)
         if store.add_window(stored, k, time, window_values(result, layout), speed=result.speed):
             written += 1
         if progress is not None:
             progress(k + 1, windows)
     store.mark_complete(stored)
-    return ProcessedRecording(stored, windows, written)
+    return ProcessedRecording(stored, windows, written, masked, samples)
+
+
+@dataclass(frozen=True, eq=False)
+class IdentifiedRecording:
+    """One recording of a ``monitor identify`` run and its trends as stored.
+
+    Attributes
+    ----------
+    plan : RecordingPlan
+    processed : ProcessedRecording
+    trends : tuple of SectionTrend
+        Smallest film of each section over the recording's windows, with its lambda alarms.
+    """
+
+    plan: RecordingPlan
+    processed: ProcessedRecording
+    trends: tuple[SectionTrend, ...]
+
+
+@dataclass(frozen=True, eq=False)
+class Identified:
+    """What ``monitor identify`` did.
+
+    Attributes
+    ----------
+    database : str
+        The trend database's URL as it may be shown (password hidden).
+    recordings : tuple of IdentifiedRecording
+    lambda_threshold : float
+    alarm_duration : float
+        s.
+    """
+
+    database: str
+    recordings: tuple[IdentifiedRecording, ...]
+    lambda_threshold: float
+    alarm_duration: float
+
+
+def identify_recordings(
+    layout: ProbeLayout,
+    plan: IdentifyPlan,
+    shape: tuple[np.ndarray, np.ndarray] | None = None,
+    progress: Progress = no_progress,
+) -> Identified:
+    """Identify the recordings of ``plan`` into its trend database, window by window.
+
+    Every recording is checked (:func:`plan_recording`) and the database reached before
+    anything is stored, so bad input stores nothing. Each window is then stored in its own
+    transaction: Ctrl-C keeps every window stored so far and raises
+    :class:`~shaftline.errors.Interrupted` saying how to resume (the same command again skips
+    what is stored). ``progress`` gets a :class:`~shaftline.registry.Tally` of the windows of
+    each recording.
+
+    Raises
+    ------
+    InputError
+        No recording, a bad recording (file, channels, sample rate, units, invalid samples)
+        or a database that cannot be reached.
+    """
+    from datetime import timedelta
+
+    from shaftline.errors import Interrupted
+    from shaftline.monitor.trends import _hide_password, section_trends
+
+    if not plan.recordings:
+        raise InputError(
+            "RECORDING",
+            "none",
+            "",
+            "one recording file or more (or recordings = [...] in [monitor.identify])",
+            in_file=True,
+        )
+    plans = []
+    start = plan.start
+    for name in plan.recordings:
+        try:
+            checked = plan_recording(
+                layout,
+                name,
+                plan.keyphasor,
+                plan.window,
+                plan.sample_rate,
+                start,
+                plan.ignore_channels,
+                plan.max_invalid_share,
+            )
+        except InputError as error:
+            # named by the file, not placed under [monitor] (the file is not the case)
+            file = Path(name).name
+            field = error.field if error.field.startswith(file) else f"{file}: {error.field}"
+            raise InputError(field, error.value, error.unit, error.allowed, in_file=True) from None
+        plans.append(checked)
+        if start is not None:  # the next file follows this one
+            start = start + timedelta(seconds=checked.duration)
+    shown = _hide_password(TrendStore.url_of(plan.database))
+    done: list[IdentifiedRecording] = []
+    try:
+        opened = TrendStore(plan.database)
+    except InputError as error:
+        raise InputError("database", error.value, "", error.allowed, in_file=True) from None
+    with opened as store:
+        try:
+            for number, checked in enumerate(plans, 1):
+                label = f"{checked.recording.path.name} ({number}/{len(plans)})"
+                progress(Tally(label, 0, checked.windows, "windows"))
+
+                def told(windows: int, total: int, label: str = label) -> None:
+                    progress(Tally(label, windows, total, "windows"))
+
+                processed = process_recording(
+                    layout,
+                    checked,
+                    store,
+                    plan.keyphasor,
+                    shape=shape,
+                    progress=told,
+                    max_invalid_share=plan.max_invalid_share,
+                )
+                trends = section_trends(
+                    store,
+                    plan.lambda_threshold,
+                    timedelta(seconds=plan.alarm_duration),
+                    recording=processed.recording,
+                )
+                done.append(IdentifiedRecording(checked, processed, trends))
+        except KeyboardInterrupt:
+            raise Interrupted(
+                f"every window identified so far is kept in {shown}: run the same command again to resume"
+            ) from None
+    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration)

@@ -9,8 +9,8 @@ processing the same recording twice is recognised whatever the file is called.
 Layouts read:
 
 ``.csv``
-    A header row of channel names, one row per sample; an optional ``time`` column (s) gives
-    the sample rate.
+    A header row of channel names, one row per sample; an optional ``time`` (or ``time_s``)
+    column (s) gives the sample rate.
 ``.parquet``
     One column per channel; the sample rate from a ``time`` column or the file's key-value
     metadata ``sample_rate`` (Hz).
@@ -46,6 +46,8 @@ __all__ = [
     "open_recording",
 ]
 
+#: Names of a CSV's column of sample times, s (``time_s``: the recordings ``monitor simulate`` writes).
+TIME_COLUMNS = ("time", "time_s")
 #: Bytes read at a time to hash a file.
 _HASH_BLOCK = 8 << 20
 
@@ -91,14 +93,15 @@ class _Csv:
         self._length: int | None = None
 
     def channels(self) -> tuple[str, ...]:
-        return tuple(c for c in self._header if c != "time")
+        return tuple(c for c in self._header if c not in TIME_COLUMNS)
 
     def sample_rate(self, columns: Sequence[str]) -> float | None:
         import pandas as pd
 
-        if "time" not in self._header:
+        time = next((c for c in TIME_COLUMNS if c in self._header), None)
+        if time is None:
             return None
-        head = pd.read_csv(self._path, usecols=["time"], nrows=1000)["time"].to_numpy(float)
+        head = pd.read_csv(self._path, usecols=[time], nrows=1000)[time].to_numpy(float)
         return _rate_from_times(head, self._path.name)
 
     def length(self) -> int:

@@ -10,9 +10,11 @@ compares the result with the truth that made them.
 
 from __future__ import annotations
 
+import datetime as dt
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -35,6 +37,9 @@ from shaftline.monitor.orbits import (
 )
 from shaftline.monitor.probes import ProbeLayout
 from shaftline.monitor.regimes import RegimeLengths, regime_lengths
+
+if TYPE_CHECKING:
+    from shaftline.monitor.processing import Identified
 
 #: Stations along the bearing for h_min and the regime lengths.
 STATIONS = 121
@@ -173,6 +178,47 @@ def identify_window(
     )
 
 
+@dataclass(frozen=True)
+class IdentifyPlan:
+    """Recordings to identify into the trend database (``[monitor.identify]``).
+
+    Attributes
+    ----------
+    recordings : tuple of str
+        Files, in the order given.
+    database : str
+        SQLAlchemy URL or SQLite file.
+    keyphasor : str
+        Once-per-revolution channel.
+    window : float
+        Window length, s.
+    sample_rate : float or None
+        Hz where the files do not state it.
+    start : datetime or None
+        First sample of the first recording where the files do not state it (the others follow
+        back to back); None: each file's modification time.
+    ignore_channels : tuple of str
+        Extra channels left alone.
+    max_invalid_share : float
+        Largest share of masked probe samples in a window.
+    lambda_threshold : float
+        Film parameter of an alarm.
+    alarm_duration : float
+        Shortest alarm stretch, s.
+    """
+
+    recordings: tuple[str, ...]
+    database: str
+    keyphasor: str = "keyphasor"
+    window: float = 2.0
+    sample_rate: float | None = None
+    start: dt.datetime | None = None
+    ignore_channels: tuple[str, ...] = ()
+    max_invalid_share: float = 0.01
+    lambda_threshold: float = 1.0
+    alarm_duration: float = 600.0
+
+
 @dataclass(frozen=True, eq=False)
 class MonitorStudy:
     """A monitoring case: the probe layout and, for now, the synthetic recordings to make.
@@ -190,6 +236,8 @@ class MonitorStudy:
         Keep the recordings for CSV files beside the report.
     shape : (stations, shape) or None
         Bending shape of the journal from the machine's shaft model (None: the rig's).
+    identify : IdentifyPlan or None
+        Recordings to identify into the trend database.
     """
 
     layout: ProbeLayout
@@ -198,6 +246,14 @@ class MonitorStudy:
     slow_roll_speed: float
     write_recordings: bool
     shape: tuple[np.ndarray, np.ndarray] | None = None
+    identify: IdentifyPlan | None = None
+
+    def bending_shape(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """The bending shape ``monitor simulate`` uses: the shaft model's, else the rig's
+        forward model's where the case simulates it, else none (least squares)."""
+        if self.shape is not None:
+            return self.shape
+        return None if self.rig is None else rig_shape_for(self.rig)
 
 
 @dataclass(frozen=True, eq=False)
@@ -236,16 +292,22 @@ class MonitorResult:
         One per speed, in the order given.
     runout : ndarray (bins, channels) or None
         Runout measured at slow roll, m.
+    identified : Identified or None
+        Recordings identified into the trend database (``monitor identify``).
     """
 
     study: MonitorStudy
     points: tuple[SimulatedPoint, ...]
     runout: np.ndarray | None = field(repr=False)
+    identified: Identified | None = field(default=None, repr=False)
 
 
-def solve_monitor(study: MonitorStudy, progress: Callable[[str], None] | None = None) -> MonitorResult:
-    """Make the synthetic recordings of the study, identify each and compare with the truth."""
-    if study.rig is None:
+def solve_monitor(
+    study: MonitorStudy, progress: Callable[[str], None] | None = None, simulate_rig: bool = True
+) -> MonitorResult:
+    """Make the synthetic recordings of the study, identify each and compare with the truth
+    (none with ``simulate_rig`` False)."""
+    if study.rig is None or not simulate_rig:
         return MonitorResult(study, (), None)
     rig, layout = study.rig, study.layout
     if progress is not None:

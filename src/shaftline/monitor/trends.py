@@ -37,10 +37,14 @@ from shaftline.errors import InputError
 
 __all__ = [
     "DEFAULT_DATABASE",
+    "CentreLine",
     "LambdaAlarm",
+    "SectionTrend",
     "TrendCrossing",
     "TrendStore",
+    "centre_lines",
     "lambda_alarms",
+    "section_trends",
     "trend_crossing",
 ]
 
@@ -113,9 +117,7 @@ class TrendStore:
     def __init__(self, url: str | Path) -> None:
         import sqlalchemy as sa
 
-        text = str(url)
-        if "://" not in text:
-            text = f"sqlite:///{Path(text).resolve()}"
+        text = self.url_of(url)
         self.url = text
         try:
             self._engine = sa.create_engine(text, future=True)
@@ -127,6 +129,12 @@ class TrendStore:
         self._recordings = self._metadata.tables["recordings"]
         self._windows = self._metadata.tables["windows"]
         self._values = self._metadata.tables["window_values"]
+
+    @staticmethod
+    def url_of(url: str | Path) -> str:
+        """The SQLAlchemy URL of ``url``: itself, or a SQLite URL for a file path."""
+        text = str(url)
+        return text if "://" in text else f"sqlite:///{Path(text).resolve()}"
 
     def close(self) -> None:
         """Release the connection pool."""
@@ -232,9 +240,10 @@ class TrendStore:
             return [StoredRecording(r.id, r.content_hash, r.name, _aware(r.started_at), bool(r.complete)) for r in rows]
 
     # -- series ------------------------------------------------------------------------
-    def series(self, quantity: str, section: str | None = None) -> Any:
+    def series(self, quantity: str, section: str | None = None, recording: StoredRecording | None = None) -> Any:
         """A quantity over time as a pandas DataFrame (``time``, ``recording``, ``window``,
-        ``section``, ``speed``, ``value``), oldest first; one section or all."""
+        ``section``, ``speed``, ``value``), oldest first; one section or all, of one
+        recording or all."""
         import pandas as pd
         import sqlalchemy as sa
 
@@ -255,6 +264,8 @@ class TrendStore:
         )
         if section is not None:
             query = query.where(v.c.section == section)
+        if recording is not None:
+            query = query.where(w.c.recording_id == recording.id)
         with self._engine.connect() as connection:
             frame = pd.DataFrame(connection.execute(query).mappings().all())
         if frame.empty:
@@ -376,6 +387,138 @@ def trend_crossing(times: Iterable[dt.datetime], values: Iterable[float], limit:
     else:
         crossing = None
     return TrendCrossing(float(slope), now, crossing)
+
+
+@dataclass(frozen=True, eq=False)
+class SectionTrend:
+    """The smallest film of one section (or ``"bearing"``: the smallest along it) over time.
+
+    Attributes
+    ----------
+    section : str
+    times : list of datetime
+        Window times, oldest first.
+    min_film : ndarray
+        Time-mean smallest film of each window, m (NaN where not stored).
+    film_parameter : ndarray
+        Film parameter lambda of each window.
+    speed : ndarray
+        Shaft speed of each window, rad/s.
+    alarms : tuple of LambdaAlarm
+        Stretches with lambda below the threshold for at least the set time.
+    limit : float
+        Film the trend is projected to, m.
+    crossing : TrendCrossing or None
+        Fitted straight line and the date it reaches ``limit`` (None: fewer than two times).
+    """
+
+    section: str
+    times: list[dt.datetime]
+    min_film: np.ndarray
+    film_parameter: np.ndarray
+    speed: np.ndarray
+    alarms: tuple[LambdaAlarm, ...]
+    limit: float
+    crossing: TrendCrossing | None
+
+
+def section_trends(
+    store: TrendStore,
+    threshold: float = 1.0,
+    min_duration: dt.timedelta = dt.timedelta(minutes=10),
+    limit: float | None = None,
+    recording: StoredRecording | None = None,
+) -> tuple[SectionTrend, ...]:
+    """Trend of the smallest film of every stored section, with its lambda alarms and the
+    projected date its fitted straight line reaches ``limit``.
+
+    Parameters
+    ----------
+    store : TrendStore
+    threshold : float
+        Film parameter of an alarm (lambda < threshold).
+    min_duration : timedelta
+        Shortest alarm stretch.
+    limit : float, optional
+        Film limit, m; without it, the film at which lambda equals ``threshold``:
+        ``threshold * sigma``, the composite roughness ``sigma = h_min / lambda`` read from the
+        stored pairs (the same for every window of one installation).
+    recording : StoredRecording, optional
+        One recording only (default: all, oldest first).
+    """
+    films = store.series("min_film_thickness", recording=recording)
+    ratios = store.series("film_parameter", recording=recording)
+    if films.empty:
+        return ()
+    key = ["time", "window", "recording", "section"]
+    joined = films.merge(ratios[[*key, "value"]], on=key, how="left", suffixes=("", "_lambda"))
+    if limit is None:
+        sigma = (joined["value"] / joined["value_lambda"]).replace([np.inf, -np.inf], np.nan).median()
+        limit = float(threshold * sigma) if math.isfinite(sigma) else math.nan
+    trends = []
+    sections = list(dict.fromkeys(joined["section"]))
+    for section in sorted(sections, key=lambda name: (name == "bearing", sections.index(name))):
+        rows = joined[joined["section"] == section]
+        times = [t.to_pydatetime() for t in rows["time"]]
+        film = rows["value"].to_numpy(float)
+        parameter = rows["value_lambda"].to_numpy(float)
+        alarms = lambda_alarms(times, parameter, threshold, min_duration, section)
+        crossing = None
+        if math.isfinite(limit) and np.isfinite(film).sum() >= 2 and len(set(times)) >= 2:
+            crossing = trend_crossing(times, film, limit)
+        trends.append(
+            SectionTrend(section, times, film, parameter, rows["speed"].to_numpy(float), tuple(alarms), limit, crossing)
+        )
+    return tuple(trends)
+
+
+@dataclass(frozen=True)
+class CentreLine:
+    """Averaged shaft centre line of one section from the stored windows: mean eccentricity
+    ratio and attitude angle in speed bins.
+
+    Attributes
+    ----------
+    section : str
+    speed : ndarray
+        Bin speeds (mean of the windows in each bin), rad/s, rising.
+    eccentricity_ratio, attitude_angle : ndarray
+        Mean e/(c + k) and circular-mean attitude angle (rad, from the bottom in the direction
+        of rotation) of the windows in each bin.
+    windows : ndarray of int
+        Windows in each bin.
+    """
+
+    section: str
+    speed: np.ndarray
+    eccentricity_ratio: np.ndarray
+    attitude_angle: np.ndarray
+    windows: np.ndarray
+
+
+def centre_lines(
+    store: TrendStore, bin_width: float = 5 * math.pi / 30, recording: StoredRecording | None = None
+) -> tuple[CentreLine, ...]:
+    """The averaged shaft centre line of every section: windows grouped in speed bins of
+    ``bin_width`` (rad/s; default 5 rpm), the eccentricity vector averaged in each."""
+    ratio = store.series("eccentricity_ratio", recording=recording)
+    attitude = store.series("attitude_angle", recording=recording)
+    if ratio.empty or attitude.empty:
+        return ()
+    key = ["time", "window", "recording", "section"]
+    joined = ratio.merge(attitude[[*key, "value"]], on=key, suffixes=("", "_attitude")).dropna(
+        subset=["speed", "value", "value_attitude"]
+    )
+    lines = []
+    for section in dict.fromkeys(joined["section"]):
+        rows = joined[joined["section"] == section]
+        bins = np.round(rows["speed"].to_numpy(float) / bin_width).astype(int)
+        vector = rows["value"].to_numpy(float) * np.exp(1j * rows["value_attitude"].to_numpy(float))
+        keys, inverse, counts = np.unique(bins, return_inverse=True, return_counts=True)
+        speed = np.bincount(inverse, rows["speed"].to_numpy(float)) / counts
+        mean = (np.bincount(inverse, vector.real) + 1j * np.bincount(inverse, vector.imag)) / counts
+        lines.append(CentreLine(section, speed, np.abs(mean), np.angle(mean), counts))
+    return tuple(lines)
 
 
 def _aware(moment: dt.datetime) -> dt.datetime:

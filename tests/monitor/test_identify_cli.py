@@ -1,0 +1,327 @@
+"""``shaftline monitor identify`` and ``shaftline monitor trend`` (issue 13, part B): recordings of
+seed 001's rig made by the forward model, identified window by window into the trend database
+through the command line, the bad inputs of the issue's list (one line, exit 2, nothing stored),
+a real Ctrl-C and the resumed run, and the trends, alarms and projected crossing read back."""
+
+from __future__ import annotations
+
+import datetime as dt
+import json
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import sqlalchemy as sa
+
+from shaftline.monitor.forward import RigCase, simulate
+from shaftline.monitor.trends import TrendStore, centre_lines, section_trends
+from tests.conftest import invoke
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = ROOT / "examples" / "monitor_rig.toml"
+RPM = 2 * np.pi / 60
+START = dt.datetime(2026, 11, 2, 6, 0, tzinfo=dt.UTC)
+
+
+def case_file(folder: Path, identify: str = "") -> Path:
+    """The example's probes and [monitor.identify] (no [monitor.simulate]), its shaft model by absolute path."""
+    text = EXAMPLE.read_text()
+    text = text[: text.index("[monitor.simulate]")] + text[text.index("[monitor.identify]") :]
+    text = text.replace(
+        'shaft_model = "monitor_rig_shaft.toml"', f'shaft_model = "{ROOT / "examples" / "monitor_rig_shaft.toml"}"'
+    )
+    path = folder / "rig.toml"
+    path.write_text(text + identify)
+    return path
+
+
+@pytest.fixture(scope="module")
+def truth():
+    """8 revolutions at 120 rpm (4 s at 2048 Hz) of the forward model on a small grid."""
+    case = RigCase(revolutions=8.0, axial_nodes=31, circumferential_nodes=72)
+    return case, simulate(case, 120 * RPM)
+
+
+def write_csv(path: Path, truth, signals: np.ndarray | None = None, extra: dict | None = None) -> Path:
+    case, recording = truth
+    frame = pd.DataFrame(recording.signals if signals is None else signals, columns=list(case.layout.channels))
+    frame["keyphasor"] = recording.keyphasor
+    for name, values in (extra or {}).items():
+        frame[name] = values
+    frame.insert(0, "time", np.arange(len(frame)) / recording.sample_rate)
+    frame.to_csv(path, index=False, float_format="%.10g")
+    return path
+
+
+def rows(database: Path) -> int:
+    if not database.exists():
+        return 0
+    engine = sa.create_engine(f"sqlite:///{database}")
+    try:
+        with engine.connect() as connection:
+            return int(connection.execute(sa.text("select count(*) from windows")).scalar_one())
+    finally:
+        engine.dispose()
+
+
+def test_identify_stores_the_windows_once_and_reports_them(truth, tmp_path):
+    """Two 2 s windows; the mean h_min of each section within 2 % of the forward model's (the
+    identification's tolerance, tests/monitor/test_forward.py); the same file again stores
+    nothing; the trend verb reads the same numbers back."""
+    case, recording = truth
+    path = write_csv(tmp_path / "rig.csv", truth)
+    database, out = tmp_path / "trends.sqlite", tmp_path / "out"
+    result = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", str(database),
+                    "--out", str(out), "--json", "-")  # fmt: skip
+    assert result.exit_code == 0, result.stderr
+    stored = json.loads(result.stdout)["monitor"]["identify"]["recordings"]
+    assert [(r["windows"], r["written"], r["masked_samples"]) for r in stored] == [(2, 2, 0)]
+    assert stored[0]["started_at"] == START.isoformat()  # the case's start, not the file's time
+    for section in case.layout.sections:
+        ey, ez = recording.centres(np.array([section.position]))
+        true_film = (recording.clearance - np.hypot(ey[:, 0], ez[:, 0])).mean()
+        films = stored[0]["sections"][section.name]["min_film_thickness"]
+        np.testing.assert_allclose(films, true_film, rtol=0.02)
+    assert (out / "figures" / "monitor_identified_0.png").stat().st_size > 10_000
+    again = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", str(database), "--json", "-")
+    assert again.exit_code == 0, again.stderr
+    assert json.loads(again.stdout)["monitor"]["identify"]["recordings"][0]["written"] == 0
+    assert rows(database) == 2
+    trend = invoke("monitor", "trend", "--db", str(database), "--json", "-")
+    assert trend.exit_code == 0, trend.stderr
+    sections = json.loads(trend.stdout)["monitor_trend"]["sections"]
+    assert list(sections) == ["D1", "D2", "D3", "bearing"]
+    assert sections["D1"]["min_film_thickness"] == stored[0]["sections"]["D1"]["min_film_thickness"]
+
+
+@pytest.mark.slow
+def test_simulate_then_identify_the_example(tmp_path):
+    """The README's two commands in a row on examples/monitor_rig.toml: the simulated recordings
+    are read back (4 windows of 2 s) and their mean h_min rises with speed at each section
+    (seed 001 Fig. 12)."""
+    simulated = invoke("monitor", "simulate", str(EXAMPLE), "--out", str(tmp_path / "sim"))
+    assert simulated.exit_code == 0, simulated.stderr
+    files = sorted((tmp_path / "sim" / "data").glob("recording_*rpm.csv"))
+    assert [f.name for f in files] == ["recording_135rpm.csv", "recording_175rpm.csv", "recording_215rpm.csv"]
+    result = invoke("monitor", "identify", str(EXAMPLE), *map(str, files), "--db", str(tmp_path / "m.sqlite"),
+                    "--json", "-")  # fmt: skip
+    assert result.exit_code == 0, result.stderr
+    recordings = json.loads(result.stdout)["monitor"]["identify"]["recordings"]
+    assert [r["windows"] for r in recordings] == [2, 1, 1]
+    # back to back from the case's start
+    assert [r["started_at"][:19] for r in recordings] == ["2026-11-02T06:00:00", "2026-11-02T06:00:03",
+                                                          "2026-11-02T06:00:06"]  # fmt: skip
+    for name in ("D1", "D2", "D3"):
+        means = [np.mean(r["sections"][name]["min_film_thickness"]) for r in recordings]
+        assert means[0] < means[1] < means[2], name
+
+
+def test_nan_and_saturated_samples_are_masked_and_counted(truth, tmp_path):
+    """0.5 % of the samples NaN or beyond the probe's range: filled, counted, warned of; the films
+    agree with the clean recording's within 0.5 % or 5 nm, a tenth of the probe noise (the
+    bearing's smallest film is near zero at 120 rpm; a few samples are filled by interpolation)."""
+    case, recording = truth
+    clean = write_csv(tmp_path / "clean.csv", truth)
+    signals = recording.signals.copy()
+    rng = np.random.default_rng(3)
+    bad = rng.random(signals.shape) < 0.005
+    signals[bad & (rng.random(signals.shape) < 0.5)] = np.nan
+    signals[bad & ~np.isnan(signals)] = 50.0  # volts: far beyond every probe's range
+    dirty = write_csv(tmp_path / "dirty.csv", truth, signals)
+    results = []
+    for path in (clean, dirty):
+        result = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db",
+                        str(tmp_path / f"{path.stem}.sqlite"))  # fmt: skip
+        assert result.exit_code == 0, result.stderr
+        results.append(result)
+    assert f"{int(bad.sum())} probe samples of {signals.size}" in results[1].stdout
+    with TrendStore(tmp_path / "clean.sqlite") as a, TrendStore(tmp_path / "dirty.sqlite") as b:
+        np.testing.assert_allclose(
+            b.series("min_film_thickness")["value"], a.series("min_film_thickness")["value"], rtol=5e-3, atol=5e-9
+        )
+
+
+def hdf5_with_two_rates(path: Path, truth) -> Path:
+    import h5py
+
+    case, recording = truth
+    with h5py.File(path, "w") as file:
+        for k, name in enumerate([*case.layout.channels, "keyphasor"]):
+            data = recording.keyphasor if name == "keyphasor" else recording.signals[:, k]
+            file.create_dataset(name, data=data).attrs["sample_rate"] = 2048.0 if k else 1024.0
+    return path
+
+
+@pytest.mark.parametrize(
+    ("make", "message"),
+    [
+        (lambda p, t: _drop(write_csv(p / "r.csv", t), "D2_3"),
+         "error: r.csv: channels = 'D2_3': allowed channels of r.csv"),
+        (lambda p, t: write_csv(p / "r.csv", t, extra={"D4_1": 0.0}), "error: r.csv channels = 'D4_1'"),
+        (lambda p, t: write_csv(p / "r.csv", t, t[1].signals * 1000.0), "error: r.csv window 0, channel D1_1"),
+        (lambda p, t: write_csv(p / "r.csv", t, np.where(np.arange(t[1].signals.shape[0])[:, None] % 10 == 0,
+                                                         np.nan, t[1].signals)),
+         'error: r.csv window 0 = "10.01% of the probe samples NaN'),
+        (hdf5_with_two_rates, "error: r.h5 sample rates"),
+    ],
+    ids=["missing channel", "extra channel", "units off by 1000", "too many NaN", "two sample rates"],
+)  # fmt: skip
+def test_bad_recordings_are_one_line_and_store_nothing(truth, tmp_path, make, message):
+    path = make(tmp_path, truth) if make is not hdf5_with_two_rates else make(tmp_path / "r.h5", truth)
+    good = write_csv(tmp_path / "good.csv", truth)
+    database = tmp_path / "m.sqlite"
+    # the good recording first: nothing of it is stored either, all are checked before
+    result = invoke("monitor", "identify", str(case_file(tmp_path)), str(good), str(path), "--db", str(database),
+                    "--out", str(tmp_path / "out"))  # fmt: skip
+    assert result.exit_code == 2, result.stdout
+    assert result.stderr.startswith(message) and result.stderr.count("\n") == 1, result.stderr
+    assert rows(database) == 0 and not (tmp_path / "out").exists()
+
+
+def _drop(path: Path, column: str) -> Path:
+    pd.read_csv(path).drop(columns=[column]).to_csv(path, index=False)
+    return path
+
+
+def test_an_unreachable_database_and_no_recording_are_one_line(truth, tmp_path):
+    path = write_csv(tmp_path / "r.csv", truth)
+    url = "postgresql+psycopg://someone:secret@127.0.0.1:9/none?connect_timeout=2"
+    result = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", url)
+    assert result.exit_code == 2 and result.stderr.startswith("error: database = ") and "secret" not in result.stderr
+    assert result.stderr.count("\n") == 1
+    folder = tmp_path / "o"
+    inside = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", str(folder / "m.sqlite"),
+                    "--out", str(folder))  # fmt: skip
+    assert inside.exit_code == 2 and "allowed a database outside the --out folder" in inside.stderr
+    assert not folder.exists()
+    none = invoke("monitor", "identify", str(case_file(tmp_path)))
+    assert none.exit_code == 2 and none.stderr.startswith("error: RECORDING = 'none'")
+    trend = invoke("monitor", "trend", "--db", str(tmp_path / "none.sqlite"))
+    assert trend.exit_code == 2 and "an existing trend database" in trend.stderr
+    assert not (tmp_path / "none.sqlite").exists()
+
+
+def test_the_default_database_is_beside_the_case(truth, tmp_path):
+    path = write_csv(tmp_path / "r.csv", truth)
+    folder = tmp_path / "installation"
+    folder.mkdir()
+    result = invoke("monitor", "identify", str(case_file(folder)), str(path))
+    assert result.exit_code == 0, result.stderr
+    assert rows(folder / "monitor.sqlite") == 2
+    trend = invoke("monitor", "trend", str(case_file(folder)), "--json", "-")
+    assert trend.exit_code == 0, trend.stderr
+    assert len(json.loads(trend.stdout)["monitor_trend"]["sections"]["bearing"]["times"]) == 2
+
+
+@pytest.mark.slow
+def test_ctrl_c_keeps_the_windows_and_the_same_command_resumes(tmp_path):
+    """SIGINT to a long identification (a real process, as a user's Ctrl-C): exit 130, a line
+    saying where the windows are and how to resume, nothing in --out; the next run stores the
+    rest only, and the database then holds every window once."""
+    case = RigCase(revolutions=240.0, axial_nodes=31, circumferential_nodes=72, sample_rate=1024.0)
+    long = simulate(case, 120 * RPM)  # 120 s: 120 windows of 1 s
+    path = write_csv(tmp_path / "long.csv", (case, long))
+    # the least-squares centre line (no shaft model): about 10 ms a window
+    rig = case_file(tmp_path, "").read_text().replace('window = "2 s"', 'window = "1 s"')
+    rig = "\n".join(line for line in rig.splitlines() if not line.startswith("shaft_"))
+    (tmp_path / "rig.toml").write_text(rig)
+    database, out = tmp_path / "m.sqlite", tmp_path / "out"
+    command = [sys.executable, "-m", "shaftline.cli", "monitor", "identify", str(tmp_path / "rig.toml"), str(path),
+               "--db", str(database), "--out", str(out)]  # fmt: skip
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120.0
+    while rows(database) < 3 and time.monotonic() < deadline and process.poll() is None:
+        time.sleep(0.1)
+    process.send_signal(signal.SIGINT)
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 130, stderr
+    assert f"kept in sqlite:///{database}: run the same command again to resume" in stderr and not out.exists()
+    kept = rows(database)
+    assert 0 < kept < 120
+    again = invoke("monitor", "identify", str(tmp_path / "rig.toml"), str(path), "--db", str(database), "--json", "-")
+    assert again.exit_code == 0, again.stderr
+    assert json.loads(again.stdout)["monitor"]["identify"]["recordings"][0]["written"] == 120 - kept
+    assert rows(database) == 120
+
+
+def _store_falling(path: Path, days: int = 10) -> None:
+    """One window a day: h_min falling 0.5 um a day from 8 um at every section, lambda = h / 2 um."""
+    with TrendStore(path) as store:
+        recording = store.recording("f" * 64, "log.tdms", 100, 10.0, START)
+        for k in range(days):
+            film = 8e-6 - 0.5e-6 * k
+            values = {}
+            for section in ("D1", "bearing"):
+                values[(section, "min_film_thickness")] = film
+                values[(section, "film_parameter")] = film / 2e-6
+                values[(section, "eccentricity_ratio")] = 0.9
+                values[(section, "attitude_angle")] = 0.3
+            store.add_window(recording, k, START + dt.timedelta(days=k), values, speed=(100 + 10 * (k % 2)) * RPM)
+
+
+def test_trends_alarms_and_projected_crossing(tmp_path):
+    """Analytic: h_min = 8 - 0.5 k um on day k, lambda = h / 2 um = 4 - 0.25 k. With a threshold of
+    2.5 the default limit is 2.5 sigma = 5 um (sigma read from the stored h / lambda) and lambda is
+    below it on days 7-9 (one alarm, lowest 1.75); the straight line reaches a 2 um limit on day
+    12 exactly; the centre line has two 5-window speed bins at the stored e/c and attitude."""
+    database = tmp_path / "m.sqlite"
+    _store_falling(database)
+    with TrendStore(database) as store:
+        trends = section_trends(store, threshold=2.5, min_duration=dt.timedelta(days=1))
+        assert [t.section for t in trends] == ["D1", "bearing"]
+        whole = trends[-1]
+        assert whole.limit == pytest.approx(5e-6)  # 2.5 x sigma
+        # lambda = 4 - 0.25 k < 2.5 from k = 7 to 9: one stretch of two days, lowest 1.75
+        assert [(a.start, a.end, a.lowest) for a in whole.alarms] == [
+            (START + dt.timedelta(days=7), START + dt.timedelta(days=9), pytest.approx(1.75))
+        ]
+        own = section_trends(store, threshold=1.0, min_duration=dt.timedelta(days=1), limit=2e-6)[-1]
+        assert own.alarms == () and own.crossing is not None
+        assert abs((own.crossing.crossing - (START + dt.timedelta(days=12))).total_seconds()) < 1.0
+        lines = centre_lines(store)
+        assert [line.windows.tolist() for line in lines] == [[5, 5], [5, 5]]
+        np.testing.assert_allclose(lines[0].speed, [100 * RPM, 110 * RPM])
+        np.testing.assert_allclose(lines[0].eccentricity_ratio, 0.9)
+        np.testing.assert_allclose(lines[0].attitude_angle, 0.3)
+
+
+def test_trend_verb_options_and_figures(tmp_path):
+    database, out = tmp_path / "m.sqlite", tmp_path / "out"
+    _store_falling(database)
+    result = invoke("monitor", "trend", "--db", str(database), "--limit", "2 um", "--lambda-threshold", "2.5",
+                    "--min-duration", "1 day", "--out", str(out), "--json", "-")  # fmt: skip
+    assert result.exit_code == 0, result.stderr
+    document = json.loads(result.stdout)["monitor_trend"]
+    bearing = document["sections"]["bearing"]
+    assert bearing["limit"] == pytest.approx(2e-6) and len(bearing["alarms"]) == 1
+    assert bearing["trend"]["crossing"].startswith("2026-11-14T06:00")
+    assert document["alarm_duration"] == 86400.0
+    for name in ("monitor_trend", "monitor_trend_centre_line"):
+        assert (out / "figures" / f"{name}.png").stat().st_size > 10_000
+    bad = invoke("monitor", "trend", "--db", str(database), "--limit", "2 kg")
+    assert bad.exit_code == 2 and bad.stderr.startswith("error: --limit")
+
+
+def test_progress_counts_the_windows_of_each_recording(truth, tmp_path):
+    """The command line's bar: a Tally per recording counting its windows up to all of them."""
+    from shaftline.monitor.processing import identify_recordings
+    from shaftline.monitor.study import IdentifyPlan
+    from shaftline.registry import Tally
+
+    case, _ = truth
+    files = [write_csv(tmp_path / "a.csv", truth), write_csv(tmp_path / "b.csv", truth, truth[1].signals + 1e-7)]
+    told: list[Tally] = []
+    plan = IdentifyPlan(tuple(map(str, files)), str(tmp_path / "m.sqlite"), start=START)
+    done = identify_recordings(case.layout, plan, progress=lambda step: told.append(step))
+    assert [(t.label, t.done, t.total, t.unit) for t in told] == [
+        ("a.csv (1/2)", 0, 2, "windows"), ("a.csv (1/2)", 1, 2, "windows"), ("a.csv (1/2)", 2, 2, "windows"),
+        ("b.csv (2/2)", 0, 2, "windows"), ("b.csv (2/2)", 1, 2, "windows"),
+        ("b.csv (2/2)", 2, 2, "windows"),
+    ]  # fmt: skip
+    # the second file follows the first back to back
+    assert done.recordings[1].processed.recording.started_at == START + dt.timedelta(seconds=4)
