@@ -360,6 +360,18 @@ def _finite(objectives: np.ndarray) -> np.ndarray:
     return out
 
 
+def _first_of_each_row(rows: np.ndarray) -> np.ndarray:
+    """Index of the first of each distinct row of ``rows`` (n, k), in lexicographic order of
+    the rows: ``np.unique(rows, axis=0, return_index=True)[1]`` without its structured-array
+    view, whose comparison turns a Ctrl-C arriving inside it into a TypeError (numpy
+    converts any error of its common-dtype lookup), which lost a user's Ctrl-C message."""
+    order = np.lexsort(rows.T[::-1])  # stable: the first of equal rows comes first
+    ordered = rows[order]
+    first = np.ones(order.size, dtype=bool)
+    first[1:] = np.any(ordered[1:] != ordered[:-1], axis=1)
+    return order[first]
+
+
 def _result(
     problem: SlopeDesignProblem,
     evaluations: list[DesignEvaluation],
@@ -374,9 +386,9 @@ def _result(
     pareto = np.zeros(0, dtype=int)
     knee = None
     if feasible.size:
-        objectives = np.array([problem.minimised(evaluations[i]) for i in feasible])
+        objectives = np.array([problem.minimised(evaluations[i]) for i in feasible], dtype=float)
         # one design per distinct objective vector: a re-proposed design is not two points
-        _, unique = np.unique(objectives, axis=0, return_index=True)
+        unique = _first_of_each_row(objectives)
         front = unique[non_dominated(objectives[unique])]
         front = front[np.argsort(objectives[front, 0], kind="stable")]
         pareto = feasible[front]
