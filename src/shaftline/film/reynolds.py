@@ -102,6 +102,8 @@ class _Pattern:
     slot_row: np.ndarray
     slot_col: np.ndarray
     slot_link: np.ndarray  # index into the flattened link arrays
+    # Index of each slot's value in concat(diag(A), -c_theta, -c_z), all flattened.
+    slot_source: np.ndarray
 
 
 @lru_cache(maxsize=16)
@@ -127,7 +129,25 @@ def _pattern(nz: int, nt: int) -> _Pattern:
         slot_row=rows[order],
         slot_col=cols[order],
         slot_link=link[order],
+        slot_source=(np.where(kind == 1, n, 0) + np.where(kind == 2, 2 * n, 0) + link)[order],
     )
+
+
+def _east(field: np.ndarray) -> np.ndarray:
+    """``field`` at the next column, ``np.roll(field, -1, axis=-1)`` (theta periodic), without
+    np.roll's argument handling, which costs more than the copy on these grids."""
+    out = np.empty_like(field)
+    out[..., :-1] = field[..., 1:]
+    out[..., -1] = field[..., 0]
+    return out
+
+
+def _west(field: np.ndarray) -> np.ndarray:
+    """``field`` at the previous column, ``np.roll(field, 1, axis=-1)`` (theta periodic)."""
+    out = np.empty_like(field)
+    out[..., 1:] = field[..., :-1]
+    out[..., 0] = field[..., -1]
+    return out
 
 
 @dataclass(eq=False)
@@ -166,7 +186,7 @@ def build_stencil(
     factor, ``h_T/c + (sigma/c) w Phi_s``, and the squeeze acts on the mean gap
     (``dh_T/dt = Phi(h/sigma) dh/dt``); without it the smooth stencil, unchanged.
     """
-    h_east = 0.5 * (film + np.roll(film, -1, axis=1))
+    h_east = 0.5 * (film + _east(film))
     h_north = 0.5 * (film[:-1] + film[1:])
     if rough is None:
         c_theta = (d_z / d_theta) * h_east**3
@@ -176,7 +196,7 @@ def build_stencil(
         c_theta = (d_z / d_theta) * rough.conductance(h_east)
         c_z = (d_theta / d_z) * rough.conductance(h_north)
         couette_face = d_z * rough.transport(h_east)
-    rhs = np.roll(couette_face, 1, axis=1) - couette_face
+    rhs = _west(couette_face) - couette_face
     if film_rate is not None:
         squeeze = film_rate if rough is None else film_rate * rough.squeeze_factor(film)
         rhs = rhs - d_theta * d_z * squeeze
@@ -185,7 +205,7 @@ def build_stencil(
 
 def stencil_diagonal(stencil: Stencil) -> np.ndarray:
     """Diagonal of the discrete operator A: the sum of each node's link coefficients, (nz, nt)."""
-    diag = stencil.c_theta + np.roll(stencil.c_theta, 1, axis=1)
+    diag = stencil.c_theta + _west(stencil.c_theta)
     diag[:-1] += stencil.c_z
     diag[1:] += stencil.c_z
     return diag
@@ -193,8 +213,8 @@ def stencil_diagonal(stencil: Stencil) -> np.ndarray:
 
 def apply_operator(c_theta: np.ndarray, c_z: np.ndarray, pressure: np.ndarray) -> np.ndarray:
     """``A @ P`` on every node: net diffusive outflow of each control volume."""
-    flow_east = c_theta * (pressure - np.roll(pressure, -1, axis=1))
-    out = flow_east - np.roll(flow_east, 1, axis=1)
+    flow_east = c_theta * (pressure - _east(pressure))
+    out = flow_east - _west(flow_east)
     flow_north = c_z * (pressure[:-1] - pressure[1:])
     out[:-1] += flow_north
     out[1:] -= flow_north
@@ -215,19 +235,19 @@ def stencil_derivative(
     change of the squeeze factor ``Phi(h/sigma)`` under a given ``film_rate`` (the rate itself
     held), so that the derivative is that of :func:`build_stencil` with the same arguments.
     """
-    h_east = 0.5 * (film + np.roll(film, -1, axis=1))
-    dh_east = 0.5 * (film_derivative + np.roll(film_derivative, -1, axis=1))
+    h_east = 0.5 * (film + _east(film))
+    dh_east = 0.5 * (film_derivative + _east(film_derivative))
     h_north = 0.5 * (film[:-1] + film[1:])
     dh_north = 0.5 * (film_derivative[:-1] + film_derivative[1:])
     if rough is None:
         dc_theta = (d_z / d_theta) * 3.0 * h_east**2 * dh_east
         dc_z = (d_theta / d_z) * 3.0 * h_north**2 * dh_north
         d_couette = d_z * dh_east
-        return dc_theta, dc_z, np.roll(d_couette, 1, axis=1) - d_couette
+        return dc_theta, dc_z, _west(d_couette) - d_couette
     dc_theta = (d_z / d_theta) * rough.conductance_derivative(h_east) * dh_east
     dc_z = (d_theta / d_z) * rough.conductance_derivative(h_north) * dh_north
     d_couette = d_z * rough.transport_derivative(h_east) * dh_east
-    d_rhs = np.roll(d_couette, 1, axis=1) - d_couette
+    d_rhs = _west(d_couette) - d_couette
     if film_rate is not None:
         d_rhs = d_rhs - d_theta * d_z * film_rate * rough.squeeze_factor_derivative(film) * film_derivative
     return dc_theta, dc_z, d_rhs
@@ -334,14 +354,8 @@ class ReynoldsSolver:
         cached = self._slot_cache
         if cached is not None and cached[0] is stencil:
             return cached[1]
-        pattern = self.pattern
-        values = np.empty(pattern.slot_kind.size)
-        is_diag = pattern.slot_kind == 0
-        is_theta = pattern.slot_kind == 1
-        is_z = pattern.slot_kind == 2
-        values[is_diag] = stencil_diagonal(stencil).ravel()[pattern.slot_link[is_diag]]
-        values[is_theta] = -stencil.c_theta.ravel()[pattern.slot_link[is_theta]]
-        values[is_z] = -stencil.c_z.ravel()[pattern.slot_link[is_z]]
+        source = np.concatenate([stencil_diagonal(stencil).ravel(), -stencil.c_theta.ravel(), -stencil.c_z.ravel()])
+        values = source[self.pattern.slot_source]
         self._slot_cache = (stencil, values)
         return values
 
