@@ -83,8 +83,10 @@ def _one_of(choices: tuple[str, ...]) -> str:
 #: slot maps of the sparsity pattern, right-hand sides of the Jacobian, the result's fields).
 #: Issue 11 raised it from 500: the 4 x 4 film coefficients with tilt take eight directions'
 #: film, residual and pressure changes where the 2 x 2 took four (measured peaks rose from
-#: 0.84-1.00 to 1.00-1.16 of the old estimate on 161 x 120 and 81 x 240).
-_DENSE_BYTES = 700.0
+#: 0.84-1.00 to 1.00-1.16 of the old estimate on 161 x 120 and 81 x 240). The second pass of
+#: the solver (kept node-set factors, the red-black set prediction's colour structures and
+#: sparse products, the concatenated slot source) raised it to 780, with the factor share below.
+_DENSE_BYTES = 780.0
 #: Bytes per nonzero of the qdldl LDL^T factor (int64 row index, float64 value, workspace):
 #: measured 20.4-22.2.
 _FACTOR_BYTES = 22.0
@@ -92,13 +94,18 @@ _FACTOR_BYTES = 22.0
 #: (issue 10: only the pressurised nodes are factorised, with an ordering of their own graph,
 #: which the cavitated zone cuts open). The peak of an equilibrium with stiffness and damping
 #: then lies at 0.84-1.00 of the estimate on 41 x 120 to 2561 x 120 (loaded and lightly
-#: loaded); a film with no cavitated node at all would need up to about 1.2 times it.
-_FREE_FACTOR_SHARE = 0.7
+#: loaded); a film with no cavitated node at all would need up to about 1.2 times it. Since the
+#: factor is that of a kept node set (the free nodes and three cells around them, up to 1.35
+#: times the free nodes) the share is 0.85: measured peaks had reached 0.97-1.04 of the
+#: estimate with 0.7 and 700 bytes a node (1.12 once, on 81 x 240 in a CI run).
+_FREE_FACTOR_SHARE = 0.85
 #: Further bytes per fine-grid node of the mass-conserving ("jfo") model: its Jacobian in the
 #: fixed 5-point pattern, the residual arrays and its own coarse grids (re-measured after
 #: issue 10's semi-smooth Newton solver: peaks at 0.85-1.01 of the estimate on 81 x 120 to
-#: 321 x 240) ...
-_JFO_DENSE_BYTES = 850.0
+#: 321 x 240) ... Lowered from 850 when the Reynolds-condition part of the estimate, which a
+#: JFO film also counts, rose with the kept node-set factors (the JFO solver does not use
+#: them): peaks on 161 x 240 at 0.73-0.85 of the estimate with 850, 0.77-0.90 with 650.
+_JFO_DENSE_BYTES = 650.0
 #: ... and its SuperLU factors (about 1.75 times the nonzeros of the LDL^T factor), per
 #: nonzero of the LDL^T factor of the fine grid.
 _JFO_FACTOR_BYTES = 28.0
@@ -136,8 +143,9 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
     Calibrated against the measured peak (docs/validation.md): from 5 000 to 300 000 nodes the
     estimate is 3 % below to 27 % above it, on the high side by design. Since issue 10 only
     the free sub-matrix is factorised (:data:`_FREE_FACTOR_SHARE`), and since issue 11 the
-    stiffness and damping include the tilt terms (:data:`_DENSE_BYTES`): the measured peaks lie
-    at 0.82-0.89 of the estimate from 5 000 to 300 000 nodes (JFO 0.77-0.87).
+    stiffness and damping include the tilt terms (:data:`_DENSE_BYTES`); since the solver's
+    second pass the factor is that of a kept node set: the measured peaks lie at 0.84-0.90 of
+    the estimate from 19 000 to 77 000 nodes (docs/validation.md).
 
     Parameters
     ----------
