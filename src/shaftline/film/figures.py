@@ -26,6 +26,14 @@ def _unwrapped(state: BearingState) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     return theta_sorted, order, state.z
 
 
+def _unwrapped_axes(axes: Any) -> None:
+    """Axis labels and limits of a map over the unwrapped bore (theta, z)."""
+    axes.set_xlabel("bearing angle θ from top, in sense of rotation [deg]")
+    axes.set_ylabel("z from aft edge [m]")
+    axes.set_xlim(0, 360)
+    axes.set_xticks(range(0, 361, 60))
+
+
 @figure_function(layout=(1, 2), size=(11, 4.2))
 def film_and_pressure_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     """Unwrapped film-thickness and pressure maps over (theta, z), as seed 004 Fig. 5-1;
@@ -40,10 +48,7 @@ def film_and_pressure_maps(state: BearingState, title: str = "", *, ax: Any) -> 
         # the filled contours as an image inside the vector figure: a small, sharp SVG
         mesh = axes.contourf(theta, z, field, levels=30, cmap=cmap, rasterized=True)
         axes.figure.colorbar(mesh, ax=axes, label=label)
-        axes.set_xlabel("bearing angle θ from top, in sense of rotation [deg]")
-        axes.set_ylabel("z from aft edge [m]")
-        axes.set_xlim(0, 360)
-        axes.set_xticks(range(0, 361, 60))
+        _unwrapped_axes(axes)
     ax[0].plot(np.degrees(state.min_film_theta), state.min_film_z, "wx", ms=9, mew=2)
     head = f"{plain(title)}: " if title else ""
     ax[0].set_title(f"{head}h_min = {state.min_film_thickness * 1e6:.1f} µm")
@@ -116,10 +121,7 @@ def contact_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     ax[1].figure.colorbar(mesh, ax=ax[1], label="λ = h/σ (capped at 10)")
     ax[1].contour(theta, z, ratio, levels=[1.0, 3.0], colors="k", linewidths=0.8)
     for axes in ax:
-        axes.set_xlabel("bearing angle θ from top, in sense of rotation [deg]")
-        axes.set_ylabel("z from aft edge [m]")
-        axes.set_xlim(0, 360)
-        axes.set_xticks(range(0, 361, 60))
+        _unwrapped_axes(axes)
     head = f"{plain(title)}: " if title else ""
     ax[0].set_title(f"{head}asperities carry {100 * state.asperity_load_share:.2g} % of the load")
     ax[1].set_title(f"λ_min = {state.min_film_ratio:.2f} ({state.lubrication_regime}); contours λ = 1, 3")
@@ -137,10 +139,7 @@ def liner_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     mesh = ax[1].contourf(theta, z, state.film[:, order] * 1e6, levels=30, cmap="Blues", rasterized=True)
     ax[1].figure.colorbar(mesh, ax=ax[1], label="film h with deformation [µm]")
     for axes in ax:
-        axes.set_xlabel("bearing angle θ from top, in sense of rotation [deg]")
-        axes.set_ylabel("z from aft edge [m]")
-        axes.set_xlim(0, 360)
-        axes.set_xticks(range(0, 361, 60))
+        _unwrapped_axes(axes)
     head = f"{plain(title)}: " if title else ""
     ax[0].set_title(f"{head}liner deformation, max {state.max_liner_deformation * 1e6:.3g} µm")
     ax[1].set_title(f"film with deformation, h_min {state.min_film_thickness * 1e6:.3g} µm")

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from shaftline.commandline import JsonOption, OutOption, StrictOption
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
 
@@ -53,13 +54,9 @@ def scuffing_command(
             "seed 002's C on: SP = 1 at the first scuffed step.",
         ),
     ] = None,
-    json_path: Annotated[
-        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
-    ] = None,
-    out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
-    strict: Annotated[
-        bool, typer.Option("--strict", help="Exit with status 3 also when a design criterion is not met.")
-    ] = False,
+    json_path: JsonOption = None,
+    out: OutOption = None,
+    strict: StrictOption = False,
 ) -> None:
     """Scuffing of a gear pair along the mesh: seed 002's scuffing parameter beside ISO/TS 6336-20."""
     from shaftline.commandline import run_cases

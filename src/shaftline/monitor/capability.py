@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
+from shaftline.commandline import JsonOption, OutOption, StrictOption
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table
 
@@ -480,13 +481,9 @@ def identify_command(
             "[monitor.identify] database, monitor.sqlite beside the case file.",
         ),
     ] = None,
-    json_path: Annotated[
-        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
-    ] = None,
-    out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
-    strict: Annotated[
-        bool, typer.Option("--strict", help="Exit with status 3 also when a lambda alarm is raised.")
-    ] = False,
+    json_path: JsonOption = None,
+    out: OutOption = None,
+    strict: StrictOption = False,
 ) -> None:
     """Identify probe recordings window by window (orbits, film, regimes) into the trend database;
     Ctrl-C keeps every window stored and the same command resumes."""
@@ -542,10 +539,8 @@ def trend_command(
     min_duration: Annotated[
         str | None, typer.Option("--min-duration", help="Shortest alarm stretch (e.g. '10 min'; default 10 min).")
     ] = None,
-    json_path: Annotated[
-        str | None, typer.Option("--json", help="Write results as JSON to PATH, or '-' for standard output.")
-    ] = None,
-    out: Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")] = None,
+    json_path: JsonOption = None,
+    out: OutOption = None,
 ) -> None:
     """Trends of the smallest film per section from the trend database: lambda alarms, the fitted
     trend and its projected crossing of a limit, the averaged shaft centre line against speed."""
