@@ -707,7 +707,7 @@ class JournalBearing:
         stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate, rough)
         solver = cache.reynolds
         if start_pressure is not None and self.options.cavitation == "reynolds":
-            start = solver.predicted_set(stencil, start_pressure)
+            start = solver.trial_set(stencil, film_nd, start_pressure)
         if start is None and warm:
             start = cache.last_cavitated
         if liner is not None:
