@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
 
+import numpy as np
 import typer
 
 from shaftline.commandline import JsonOption, OutOption, StrictOption
@@ -276,7 +277,7 @@ def _clipped_thermal_correction(result: GearResult) -> Finding | None:
     zero = c <= 0.0
     if not zero.any():
         return None
-    steps = zero.any(axis=-1)
+    steps = np.asarray(zero.any(axis=-1))
     k, j = (int(v) for v in next(zip(*steps.nonzero(), strict=True)))
     study = result.study
     return Finding(
