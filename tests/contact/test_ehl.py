@@ -198,8 +198,8 @@ def test_film_ratio_and_roughness():
 
 def test_hamrock_dowson_reproduces_a_published_worked_answer():
     # A textbook exercise with its printed answer (quoted at https://tutorbin.com/questions-and-answers/
-    # a-steel-ball-starts-rolling-from-rest-down-a-steel-plate-inclined-at-4; data and conventions are
-    # those of Stachowiak & Batchelor, Engineering Tribology, Ch. 7): a steel ball, d = 30 mm, rho 7800,
+    # a-steel-ball-starts-rolling-from-rest-down-a-steel-plate-inclined-at-4; the book is not named there, its
+    # data and conventions are Stachowiak & Batchelor's, Engineering Tribology): a steel ball, d 30 mm, rho 7800,
     # E 210 GPa, nu 0.3, rolls from rest down a plate at 45 deg through oil of 50 cP, alpha 2.2e-8 1/Pa;
     # the minimum film after 1 cm and 1 m is 0.059 and 0.281 um. Worked here: load m g cos 45 (0.765 N),
     # rolling speed sqrt(2 a s) with a = 5/7 g sin 45 (a rolling sphere). The answer is reproduced with
