@@ -126,11 +126,14 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
 
         mixed = any(run.case.geometry.surface is not None for run in result.cases)
         lined = any(run.case.geometry.liner is not None for run in result.cases)
+        turbulence = any(run.case.options.turbulence != "off" for run in result.cases)
         extra = {"liner_deformation_map": "m"} if lined else {}
+        if turbulence:
+            extra["reynolds_number_map"] = "-"
         if any(run.thermal is not None for run in result.cases):
             extra.update(THERMAL_UNITS)
         out: dict[str, Any] = {
-            "units": {**units(mixed, lined), **EXTRA_UNITS, **extra},
+            "units": {**units(mixed, lined, turbulence), **EXTRA_UNITS, **extra},
             "cases": [
                 {"name": run.case.name, **equilibrium_summary(run.equilibrium, run.coefficients)}
                 for run in result.cases
@@ -144,6 +147,10 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 # Rows along the bearing from the aft edge, columns around the bore from the grid's
                 # first angle (theta of the state), metres.
                 entry["liner_deformation_map"] = np.round(deformation, 12).tolist()
+            reynolds = run.equilibrium.state.reynolds_number
+            if reynolds is not None:
+                # Rows and columns as the liner deformation map's.
+                entry["reynolds_number_map"] = np.round(reynolds, 3).tolist()
         if result.stribeck is not None:
             out["stribeck"] = stribeck_json(result.stribeck)
         return out
@@ -243,6 +250,15 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                     ("yes" if run.thermal.converged else "NO") if run.thermal is not None else "-"
                     for run in result.cases
                 ]
+            )
+        if any("max_reynolds_number" in s for s in summaries):
+            rows.append(
+                ["max local Reynolds number [-]"]
+                + [fmt(s["max_reynolds_number"], 1.0, 4) if "max_reynolds_number" in s else "-" for s in summaries]
+            )
+            rows.append(
+                ["turbulent film"]
+                + [("yes" if s["turbulent"] else "no") if "turbulent" in s else "-" for s in summaries]
             )
         if any("max_liner_deformation" in s for s in summaries):
             rows.append(
@@ -355,6 +371,16 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                         figures.liner_maps,
                         (state, name),
                         caption=f"{name}: liner deformation (column model) and the film including it",
+                    )
+                )
+            if state.reynolds_number is not None:
+                blocks.append(
+                    Figure(
+                        f"bearing_{index}_reynolds.png",
+                        figures.reynolds_map,
+                        (state, name),
+                        caption=f"{name}: local Reynolds number ρωRh/μ of the film (turbulence coefficients "
+                        f"{'applied' if state.turbulent else 'not applied'})",
                     )
                 )
             blocks.append(

@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any, Literal, get_args
+from typing import Any, Literal, Protocol, get_args
 
 import numpy as np
 
@@ -35,6 +35,7 @@ __all__ = [
     "GREENWOOD_TRIPP_FACTOR",
     "PRESETS",
     "RA_TO_RQ",
+    "FilmFlow",
     "RoughFilm",
     "SurfacePreset",
     "SurfaceRoughness",
@@ -347,6 +348,22 @@ def lubrication_regime(lam: float) -> str:
     return "full film"
 
 
+class FilmFlow(Protocol):
+    """What the film equation takes from a non-smooth flow model (:class:`RoughFilm`, or a
+    turbulent film, :class:`shaftline.film.turbulence.TurbulentFilm`): the pressure-flow
+    conductances of theta and z faces, the Couette transport of theta faces and the squeeze
+    factor of nodes, each a function of the local dimensionless film ``H``, with derivatives."""
+
+    def conductance(self, film: np.ndarray) -> np.ndarray: ...
+    def conductance_derivative(self, film: np.ndarray) -> np.ndarray: ...
+    def axial_conductance(self, film: np.ndarray) -> np.ndarray: ...
+    def axial_conductance_derivative(self, film: np.ndarray) -> np.ndarray: ...
+    def transport(self, film: np.ndarray) -> np.ndarray: ...
+    def transport_derivative(self, film: np.ndarray) -> np.ndarray: ...
+    def squeeze_factor(self, film: np.ndarray) -> np.ndarray: ...
+    def squeeze_factor_derivative(self, film: np.ndarray) -> np.ndarray: ...
+
+
 @dataclass(frozen=True)
 class RoughFilm:
     """The roughness as the dimensionless film equation needs it (films over the clearance c).
@@ -370,6 +387,14 @@ class RoughFilm:
         """``d(H^3 phi_x) / dH``."""
         lam = film / self.sigma
         return 3.0 * film**2 * pressure_flow_factor(lam) + film**3 * pressure_flow_factor_derivative(lam) / self.sigma
+
+    def axial_conductance(self, film: np.ndarray) -> np.ndarray:
+        """``H^3 phi_z`` of z-face films: ``phi_z = phi_x`` for isotropic roughness."""
+        return self.conductance(film)
+
+    def axial_conductance_derivative(self, film: np.ndarray) -> np.ndarray:
+        """``d(H^3 phi_z) / dH``."""
+        return self.conductance_derivative(film)
 
     def transport(self, film: np.ndarray) -> np.ndarray:
         """Couette transport of face films ``H`` over that of a smooth film, ``h_T/c + (sigma/c) w Phi_s``."""
