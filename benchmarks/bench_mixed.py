@@ -20,6 +20,9 @@ measure).
    work estimate of ``stribeck.estimated_seconds``), explicitly serially (workers = 1) and on
    the process pool (backend "process"), alternated run by run; ratio to the default.
    Target <= 5 s.
+4. Turbulence: seed 001's rig at 350 rpm (water, Re_h up to 7200), the equilibrium laminar and
+   with the Ng-Pan coefficients (``[solver] turbulence = "on"``), smooth and rough; ratio to the
+   laminar one.
 """
 
 from __future__ import annotations
@@ -89,6 +92,23 @@ def main() -> None:
                 + ("" if eq.converged else "  (not converged)")
             )
     rig = load_case(ROOT / "examples" / "seed001_water_rig.toml").studies["bearing"].cases[0]
+    fast = replace(rig.operating, speed=350 * np.pi / 30)
+    print("\nseed 001 rig at 350 rpm, 41 x 120: laminar against turbulent (Ng-Pan)")
+    for label, geometry in (("smooth", replace(rig.geometry, surface=None)), ("rough", rig.geometry)):
+        pair = {mode: JournalBearing(geometry, fast, replace(rig.options, turbulence=mode)) for mode in ("off", "on")}
+        times: dict[str, list[float]] = {"off": [], "on": []}
+        solved = {}
+        for _ in range(repeat):  # alternated: both see the same load of the machine
+            for mode, bearing in pair.items():
+                t, solved[mode] = median_time(lambda b=bearing: b.equilibrium(rig.load_y, rig.load_z), 1)
+                times[mode].append(t)
+        t_off, t_on = float(np.median(times["off"])), float(np.median(times["on"]))
+        eq_off, eq_on = solved["off"], solved["on"]
+        print(
+            f"{label}: laminar {t_off:.3f} s (h_min {eq_off.state.min_film_thickness * 1e6:.2f} um), turbulent "
+            f"{t_on:.3f} s (h_min {eq_on.state.min_film_thickness * 1e6:.2f} um, Re_h max "
+            f"{eq_on.state.max_reynolds_number:.0f}); ratio {t_on / t_off:.2f}"
+        )
     ntua = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"]
     curves = (
         ("seed 001 rig, 3.5-350 rpm", rig, np.geomspace(3.5, 350.0, 30) * np.pi / 30.0),

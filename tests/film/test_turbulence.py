@@ -286,3 +286,22 @@ def test_case_reports_the_reynolds_number_and_notes_an_oil_far_below_transition(
     path.write_text(RIG_CASE.format(lubricant='preset = "water"\ntemperature = "25 degC"', mode="sometimes"))
     result = invoke("bearing", "solve", str(path), "--json", "-")
     assert result.exit_code == 2 and "turbulence" in result.output
+
+
+def test_stribeck_curve_reports_the_reynolds_number_per_speed(tmp_path: Path) -> None:
+    """``bearing stribeck`` with turbulence auto: the largest Re_h at each speed, rising with
+    speed (Re_h = rho omega R h / mu, and the film thickens), and where auto applied the
+    coefficients (above 41.3 sqrt(R/c) = 708 for the largest film, 2 Re_c)."""
+    path = tmp_path / "rig.toml"
+    text = RIG_CASE.format(lubricant='preset = "water"\ntemperature = "25 degC"', mode="auto")
+    path.write_text(text + '\n[bearing.stribeck]\nlowest = "20 rpm"\nhighest = "350 rpm"\npoints = 4\n')
+    result = invoke("bearing", "stribeck", str(path), "--json", "-", "--workers", "1")
+    assert result.exit_code in (0, 3), result.output
+    curve = json.loads(result.stdout)["bearing"]["stribeck"]
+    reynolds = np.array(curve["max_reynolds_number"])
+    assert np.all(np.diff(reynolds) > 0) and reynolds[-1] > 5000
+    speeds = np.array(curve["speed_rpm"])
+    onset = transition_reynolds(RIG.radius, RIG.radial_clearance)
+    clearance_re = 2 * WATER["density"] * speeds * math.pi / 30 * RIG.radius * RIG.radial_clearance / 0.89e-3
+    assert curve["turbulent"] == list(clearance_re > onset)
+    assert curve["turbulent"][0] is False and curve["turbulent"][-1] is True

@@ -408,7 +408,7 @@ def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
     def clean(values: Any) -> list[Any]:
         return [float(v) if math.isfinite(v) else None for v in values]
 
-    return {
+    out: dict[str, Any] = {
         "speed_rpm": clean(curve.speed * 30.0 / math.pi),
         "friction_coefficient": clean(curve.friction_coefficient),
         "asperity_load_share": clean(curve.asperity_load_share),
@@ -421,6 +421,10 @@ def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
         if curve.transition_speed is None
         else float(curve.transition_speed * 30.0 / math.pi),
     }
+    if curve.max_reynolds_number is not None and curve.turbulent is not None:
+        out["max_reynolds_number"] = clean(curve.max_reynolds_number)
+        out["turbulent"] = [bool(v) for v in curve.turbulent]
+    return out
 
 
 def _stribeck_table(result: BearingStudyResult) -> Table:

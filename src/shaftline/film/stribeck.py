@@ -68,6 +68,11 @@ class StribeckCurve:
     transition_speed : float or None
         Speed above which the asperities carry less than :data:`TRANSITION_SHARE` of the load,
         rad/s (:func:`transition_speed`); None when no speed of the range crosses it.
+    max_reynolds_number : ndarray (n,) or None
+        Largest local Reynolds number at each speed (with ``options.turbulence`` on or auto;
+        None when off).
+    turbulent : ndarray of bool (n,) or None
+        Whether the turbulence coefficients applied at each speed (None when off).
     """
 
     speed: np.ndarray
@@ -79,6 +84,8 @@ class StribeckCurve:
     converged: np.ndarray
     contact: np.ndarray
     transition_speed: float | None
+    max_reynolds_number: np.ndarray | None = None
+    turbulent: np.ndarray | None = None
 
 
 def transition_speed(speed: np.ndarray, share: np.ndarray, limit: float = TRANSITION_SHARE) -> float | None:
@@ -133,6 +140,8 @@ def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float
                 state.min_film_ratio,
                 float(equilibrium.converged),
                 float(equilibrium.contact),
+                state.max_reynolds_number,
+                float(state.turbulent),
             )
         )
     return out
@@ -192,4 +201,6 @@ def stribeck_curve(
         converged=rows[:, 4].astype(bool),
         contact=rows[:, 5].astype(bool),
         transition_speed=transition_speed(values, share) if rough else None,
+        max_reynolds_number=rows[:, 6] if case.options.turbulence != "off" else None,
+        turbulent=rows[:, 7].astype(bool) if case.options.turbulence != "off" else None,
     )

@@ -220,6 +220,16 @@ STRIBECK_FIELDS: list[tuple[str, str, str]] = [
     ("stribeck.converged", "-", "equilibrium reached at each speed"),
     ("stribeck.contact", "-", "load not carried within the clearance at each speed"),
     (
+        "stribeck.max_reynolds_number",
+        "-",
+        "largest local Reynolds number at each speed (with [bearing.solver] turbulence on or auto only)",
+    ),
+    (
+        "stribeck.turbulent",
+        "-",
+        "whether the turbulence coefficients applied at each speed (with turbulence on or auto only)",
+    ),
+    (
         "stribeck.transition_speed_rpm",
         "rpm",
         "speed above which the asperities carry less than 1 % of the load (null: not crossed in the range)",
