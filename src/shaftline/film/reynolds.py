@@ -319,6 +319,11 @@ class ReynoldsSolver:
         self._relaxation: Relaxation | None = None
         self.coarse_iterations = 0
         self.pcg_iterations = 0
+        #: Flow model of the coarse grids that predict the cavitated set (:meth:`_nested_start`):
+        #: None (the smooth film) unless the caller sets it, e.g. a turbulent film's, whose
+        #: damped pressure flow moves the cavitation boundary (a function of H = h/c only, so
+        #: the same object serves every grid).
+        self.flow: FilmFlow | None = None
 
     def drop_factors(self) -> None:
         """Forget the kept node-set factors (and those of the coarser grids), keeping the
@@ -555,7 +560,8 @@ class ReynoldsSolver:
             return None
         solver = coarse.solver
         film_c = coarse.restrict(film)
-        stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z)
+        solver.flow = self.flow
+        stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z, rough=self.flow)
         solution = solver._solve_reynolds_lcp(stencil_c, None, film_c, exact=False)
         self.coarse_iterations = solution.iterations
         diag = stencil_diagonal(stencil_c)
