@@ -723,7 +723,7 @@ class JournalBearing:
         # laminar one put the boundary off by many nodes: 8 active-set solves instead of 1).
         solver.flow = rough if isinstance(rough, TurbulentFilm) else None
         if start_pressure is not None and self.options.cavitation == "reynolds":
-            start = solver.predicted_set(stencil, start_pressure)
+            start = solver.trial_set(stencil, film_nd, start_pressure)
         if start is None and warm:
             start = cache.last_cavitated
         if liner is not None:
