@@ -46,7 +46,7 @@ from shaftline.errors import SolverFailure
 from shaftline.film.geometry import coarse_shape
 from shaftline.film.problem import CAVITATION_MODELS, Cavitation
 from shaftline.film.relaxation import Relaxation
-from shaftline.film.roughness import RoughFilm
+from shaftline.film.roughness import FilmFlow
 
 __all__ = [
     "CAVITATION_MODELS",
@@ -188,14 +188,16 @@ def build_stencil(
     d_theta: float,
     d_z: float,
     film_rate: np.ndarray | None = None,
-    rough: RoughFilm | None = None,
+    rough: FilmFlow | None = None,
 ) -> Stencil:
     """Stencil for dimensionless film ``H`` (nz x nt) and its rate ``(2/omega) dH/dt``.
 
     With ``rough`` (docs/theory.md, "Mixed lubrication") the conductances carry the Patir-Cheng
     pressure flow factor, ``H^3 phi_x``, the Couette transport the mean gap and the shear flow
     factor, ``h_T/c + (sigma/c) w Phi_s``, and the squeeze acts on the mean gap
-    (``dh_T/dt = Phi(h/sigma) dh/dt``); without it the smooth stencil, unchanged.
+    (``dh_T/dt = Phi(h/sigma) dh/dt``); without it the smooth stencil, unchanged. A turbulent
+    film (:class:`~shaftline.film.turbulence.TurbulentFilm`) takes the same path: its z faces
+    use ``rough.axial_conductance`` (``12 / k_z`` where theta faces have ``12 / k_x``).
     """
     h_east = 0.5 * (film + _east(film))
     h_north = 0.5 * (film[:-1] + film[1:])
@@ -205,7 +207,7 @@ def build_stencil(
         couette_face = d_z * h_east
     else:
         c_theta = (d_z / d_theta) * rough.conductance(h_east)
-        c_z = (d_theta / d_z) * rough.conductance(h_north)
+        c_z = (d_theta / d_z) * rough.axial_conductance(h_north)
         couette_face = d_z * rough.transport(h_east)
     rhs = _west(couette_face) - couette_face
     if film_rate is not None:
@@ -237,7 +239,7 @@ def stencil_derivative(
     film_derivative: np.ndarray,
     d_theta: float,
     d_z: float,
-    rough: RoughFilm | None = None,
+    rough: FilmFlow | None = None,
     film_rate: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Derivatives of (c_theta, c_z, rhs without its change of film rate) for a film change ``dH``.
@@ -256,7 +258,7 @@ def stencil_derivative(
         d_couette = d_z * dh_east
         return dc_theta, dc_z, _west(d_couette) - d_couette
     dc_theta = (d_z / d_theta) * rough.conductance_derivative(h_east) * dh_east
-    dc_z = (d_theta / d_z) * rough.conductance_derivative(h_north) * dh_north
+    dc_z = (d_theta / d_z) * rough.axial_conductance_derivative(h_north) * dh_north
     d_couette = d_z * rough.transport_derivative(h_east) * dh_east
     d_rhs = _west(d_couette) - d_couette
     if film_rate is not None:
@@ -349,6 +351,11 @@ class ReynoldsSolver:
         self._relaxation: Relaxation | None = None
         self.coarse_iterations = 0
         self.pcg_iterations = 0
+        #: Flow model of the coarse grids that predict the cavitated set (:meth:`_nested_start`):
+        #: None (the smooth film) unless the caller sets it, e.g. a turbulent film's, whose
+        #: damped pressure flow moves the cavitation boundary (a function of H = h/c only, so
+        #: the same object serves every grid).
+        self.flow: FilmFlow | None = None
 
     def drop_factors(self) -> None:
         """Forget the kept node-set factors (and those of the coarser grids), keeping the
@@ -577,7 +584,8 @@ class ReynoldsSolver:
             return None
         solver = coarse.solver
         film_c = coarse.restrict(film)
-        stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z)
+        solver.flow = self.flow
+        stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z, rough=self.flow)
         solution = solver._solve_reynolds_lcp(stencil_c, None, film_c, exact=False)
         self.coarse_iterations = solution.iterations
         diag = stencil_diagonal(stencil_c)
