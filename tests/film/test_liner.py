@@ -151,6 +151,33 @@ def test_film_liner_jacobian_matches_central_differences(ntua, rough: bool) -> N
     assert np.abs(jacobian - numeric).max() <= 5e-3 * scale
 
 
+@pytest.mark.parametrize("name", ["white_metal", "polymer_composite"])
+def test_lined_equilibrium_does_not_depend_on_its_start(ntua, name: str) -> None:  # noqa: ANN001
+    # Without ``initial`` a lined equilibrium starts from the rigid bore's and solves the trials'
+    # liners only as far as the force residual needs (inexact Newton); from a given start it
+    # takes the same path the rigid start saves. Both must reach the same equilibrium: the
+    # positions within 1e-6 of the clearance (the force tolerance 1e-8 of the load over a
+    # stiffness of about W / h_min, h_min ~ 1e-3 c here, gives ~1e-5 c at worst; they agree far better).
+    surface = SurfaceRoughness.preset("turned_steel_white_metal")
+    operating = replace(ntua.operating, speed=np.pi / 30)
+    geometry = replace(ntua.geometry, surface=surface, liner=Liner.preset(name))
+    bearing = JournalBearing(geometry, operating, ntua.options)
+    default = bearing.equilibrium(ntua.load_y, ntua.load_z)
+    start = replace(default.state.position, ey=-0.5 * ntua.geometry.radial_clearance, ez=0.0)
+    given = bearing.equilibrium(ntua.load_y, ntua.load_z, initial=start)
+    assert default.converged and given.converged
+    c = ntua.geometry.radial_clearance
+    assert abs(default.state.position.ey - given.state.position.ey) <= 1e-6 * c
+    assert abs(default.state.position.ez - given.state.position.ez) <= 1e-6 * c
+    assert default.iterations < given.iterations  # the rigid start saves lined iterations
+    # The converged liner is solved to the end on both paths (column law, node by node).
+    for eq in (default, given):
+        st = eq.state
+        assert st.liner_deformation is not None and st.asperity_pressure is not None
+        law = geometry.liner.compliance * (st.pressure + st.asperity_pressure)
+        assert np.abs(st.liner_deformation - law).max() <= LINER_TOLERANCE * c
+
+
 def test_soft_liner_lowers_and_flattens_the_pressure_under_the_same_load(ntua) -> None:  # noqa: ANN001
     # Seed 004's bearing at 90 rpm with its misalignment: rigid, white metal, polymer, rubber.
     # Published trend (Conway & Lee 1975; Lahmar et al. 1998): a more compliant liner carries the
