@@ -1269,9 +1269,24 @@ class JournalBearing:
         return position, replace(self.geometry, bent_journal=bent)
 
     def min_film_of_line(self, centre_y: np.ndarray, centre_z: np.ndarray) -> float:
-        """Smallest film for a journal centre line given as in :meth:`film_load`, m (no solve)."""
+        """Smallest film for a journal centre line given as in :meth:`film_load`, m (no solve).
+
+        With an elastic liner the film is the rigid gap plus the liner deformation of the last
+        solution (the journal may pass the rigid bore into the liner): a prediction for nearby
+        lines, as the equilibrium's own line search uses."""
         position, geometry = self._centre_line(centre_y, centre_z)
-        return float(film_thickness(geometry, self.grid(position), position).min())
+        film = film_thickness(geometry, self.grid(position), position)
+        deformation = self._solver_state().last_deformation
+        if geometry.liner is not None and deformation is not None and deformation.shape == film.shape:
+            film = film + deformation
+        return float(film.min())
+
+    @property
+    def film_floor(self) -> float:
+        """Smallest film the solver lets a journal approach, m: ``min_film_floor`` of the
+        clearance, with rough surfaces at most 2 % of the composite roughness (see
+        :meth:`_film_floor`)."""
+        return self._film_floor()
 
     def _row_forces(
         self, grid: Grid, relative: np.ndarray, gauge: bool, contact: np.ndarray | None = None
