@@ -1492,7 +1492,9 @@ class JournalBearing:
         6 from the rigid equilibrium). Depends only on the problem and the arguments."""
         cache = self._solver_state()
         if cache.rigid_bearing is None:
-            cache.rigid_bearing = JournalBearing(replace(self.geometry, liner=None), self.operating, self.options)
+            # Its force tolerance is the coarse start's: it only places the start.
+            options = replace(self.options, tolerance=max(self.options.tolerance, CONTINUATION_TOLERANCE))
+            cache.rigid_bearing = JournalBearing(replace(self.geometry, liner=None), self.operating, options)
         try:
             rigid = cache.rigid_bearing.equilibrium(load_y, load_z, tilt_y=tilt_y, tilt_z=tilt_z)
         except SolverFailure:
