@@ -325,3 +325,80 @@ def test_progress_counts_the_windows_of_each_recording(truth, tmp_path):
     ]  # fmt: skip
     # the second file follows the first back to back
     assert done.recordings[1].processed.recording.started_at == START + dt.timedelta(seconds=4)
+
+
+def _foreign_sqlite(path: Path) -> Path:
+    engine = sa.create_engine(f"sqlite:///{path}")
+    with engine.begin() as connection:
+        connection.execute(sa.text("create table notes (line text)"))
+        connection.execute(sa.text("insert into notes values ('kept')"))
+    engine.dispose()
+    return path
+
+
+@pytest.mark.parametrize(
+    ("verb", "message"),
+    [
+        ("case database in --out", "allowed a folder that does not hold the input"),
+        ("--json is the database", "allowed a file other than the run's inputs"),
+        ("trend --json is the database", "allowed a file other than the run's inputs"),
+        ("trend database in a result --out", "allowed a folder that does not hold the input"),
+        ("database in a missing folder", "allowed a database file in an existing folder"),
+        ("another program's SQLite file", "allowed a trend database made by monitor identify, or a new file"),
+    ],
+)
+def test_outputs_never_replace_the_database_or_another_file(truth, tmp_path, verb, message):
+    """Never lose user data: the trend database (the case's, --db's, a URL's file) is kept like an
+    input, so no --json or --out may replace it or hold it, checked before anything is written;
+    a database in a folder that does not exist, or a SQLite file of another program, is refused
+    instead of SQLite's "unable to open" or our tables added to it. Every file stays as it was."""
+    path = write_csv(tmp_path / "r.csv", truth)
+    database = tmp_path / "m.sqlite"
+    setup = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", str(database))
+    assert setup.exit_code == 0, setup.stderr
+    out = tmp_path / "out"
+    if verb == "case database in --out":
+        out.mkdir()
+        rig = (
+            case_file(tmp_path, "")
+            .read_text()
+            .replace("[monitor.identify]", '[monitor.identify]\ndatabase = "out/m.sqlite"')
+        )
+        (tmp_path / "rig.toml").write_text(rig)
+        arguments = ["monitor", "identify", str(tmp_path / "rig.toml"), str(path), "--out", str(out)]
+        watched = [out]
+    elif verb == "--json is the database":
+        arguments = ["monitor", "identify", str(case_file(tmp_path)), str(path), "--db", f"sqlite:///{database}",
+                     "--json", str(database)]  # fmt: skip
+        watched = [database]
+    elif verb == "trend --json is the database":
+        arguments = ["monitor", "trend", "--db", str(database), "--json", str(database)]
+        watched = [database]
+    elif verb == "trend database in a result --out":
+        first = invoke("monitor", "trend", "--db", str(database), "--out", str(out))
+        assert first.exit_code == 0, first.stderr
+        moved = out / "m.sqlite"
+        moved.write_bytes(database.read_bytes())
+        arguments = ["monitor", "trend", "--db", str(moved), "--out", str(out)]
+        watched = [moved, out / "report.html"]
+    elif verb == "database in a missing folder":
+        arguments = [
+            "monitor",
+            "identify",
+            str(case_file(tmp_path)),
+            str(path),
+            "--db",
+            str(tmp_path / "no" / "m.sqlite"),
+        ]
+        watched = [tmp_path / "no"]
+    else:
+        foreign = _foreign_sqlite(tmp_path / "notes.sqlite")
+        arguments = ["monitor", "identify", str(case_file(tmp_path)), str(path), "--db", str(foreign)]
+        watched = [foreign]
+    before = {p: p.read_bytes() if p.is_file() else sorted(p.iterdir()) if p.is_dir() else None for p in watched}
+    result = invoke(*arguments)
+    assert result.exit_code == 2, result.stdout
+    assert message in result.stderr and result.stderr.count("\n") == 1, result.stderr
+    after = {p: p.read_bytes() if p.is_file() else sorted(p.iterdir()) if p.is_dir() else None for p in watched}
+    assert after == before
+    assert rows(database) == 2

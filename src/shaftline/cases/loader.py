@@ -284,6 +284,7 @@ def parse_case(
         studies=studies,
         source=source,
         inputs=inputs,
+        kept=tuple(dict.fromkeys(context.kept)),
         tables=tables,
         fingerprints=_fingerprints(inputs),
         unusual=lowered,

@@ -605,9 +605,11 @@ def _trends(
     database = db if db is not None else plan.database if plan is not None else "monitor.sqlite"
     url = TrendStore.url_of(database if "://" in database else Path(database).expanduser())
     shown = _hide_password(url)
-    if url.startswith("sqlite:///") and not Path(url.removeprefix("sqlite:///")).is_file():
+    file = TrendStore.file_of(url)
+    if file is not None and not file.is_file():
         raise InputError("--db", shown, "", "an existing trend database (made by monitor identify)")
-    check_outputs(out, json_path, inputs)
+    # the database is read here and written by every identify run: no output may replace it
+    check_outputs(out, json_path, [*inputs, *([file] if file is not None else [])])
     with TrendStore(url) as store:
         trends = section_trends(store, threshold, dt.timedelta(seconds=duration), limit)
         lines = centre_lines(store)

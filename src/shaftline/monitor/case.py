@@ -322,11 +322,16 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
 
 def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyPlan:
     from shaftline.monitor.study import IdentifyPlan
+    from shaftline.monitor.trends import TrendStore
 
     database = section.database
     if "://" not in database:
         # a file beside the case: kept across runs, never one of the run's inputs
         database = str(context.base_dir / Path(database).expanduser())
+    file = TrendStore.file_of(database)
+    if file is not None:
+        # written in place by the run: no --json or --out may replace it or hold it
+        context.kept.append(file)
     recordings = tuple(str(context.path(name)) for name in section.recordings)
     start = section.start
     if start is not None and start.tzinfo is None:
