@@ -19,8 +19,9 @@ from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph,
 
 if TYPE_CHECKING:
     from shaftline.monitor.case import MonitorSection
+    from shaftline.monitor.forward import Recording
     from shaftline.monitor.processing import Identified
-    from shaftline.monitor.study import MonitorResult, MonitorStudy, SimulatedPoint
+    from shaftline.monitor.study import MonitorResult, MonitorStudy
     from shaftline.monitor.trends import LambdaAlarm, SectionTrend
 
 RPM = 30 / math.pi
@@ -189,7 +190,11 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
     def summary(self, result: MonitorResult) -> list[Block]:
         blocks: list[Block] = []
         if result.identified is not None:
-            blocks += _masked_warnings(result.identified) + [_identified_table(result.identified)]
+            blocks += [
+                *_masked_warnings(result.identified),
+                _runout_note(result.identified),
+                _identified_table(result.identified),
+            ]
         if result.points:
             blocks.append(self._table(result))
         if not blocks:
@@ -298,18 +303,26 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                 blocks.append(
                     DataFile(
                         f"recording_{point.recording.speed * RPM:.0f}rpm.csv",
-                        _recording_writer(point, layout.channels),
+                        _recording_writer(point.recording, layout.channels),
                         f"synthetic recording at {_rpm(point.recording.speed)} (time, probe outputs in V, keyphasor)",
+                    )
+                )
+            if result.slow_roll is not None:
+                # what `monitor identify --slow-roll` measures the runout on
+                blocks.append(
+                    DataFile(
+                        f"slow_roll_{result.slow_roll.speed * RPM:.0f}rpm.csv",
+                        _recording_writer(result.slow_roll, layout.channels),
+                        f"synthetic slow-roll recording at {_rpm(result.slow_roll.speed)} (the runout)",
                     )
                 )
         return blocks
 
 
-def _recording_writer(point: SimulatedPoint, channels: tuple[str, ...]) -> Any:
+def _recording_writer(recording: Recording, channels: tuple[str, ...]) -> Any:
     def write(path: Path) -> None:
         import numpy as np
 
-        recording = point.recording
         time = np.arange(recording.signals.shape[0]) / recording.sample_rate
         table = np.column_stack([time, recording.signals, recording.keyphasor])
         header = ",".join(["time_s", *channels, "keyphasor"])
@@ -363,10 +376,21 @@ def _trend_json(trend: SectionTrend) -> dict[str, Any]:
 
 def identified_json(identified: Identified) -> dict[str, Any]:
     """``monitor.identify`` of results.json: per recording its windows and trends (SI units)."""
+    slow = identified.slow_roll
     return {
         "database": identified.database,
         "lambda_threshold": identified.lambda_threshold,
         "alarm_duration": identified.alarm_duration,
+        "slow_roll": None
+        if slow is None
+        else {
+            "name": slow.name,
+            "content_hash": slow.content_hash,
+            "speed": slow.speed,
+            "revolutions": slow.revolutions,
+            "masked_samples": slow.masked,
+            "runout_peak_to_peak": dict(zip(slow.channels, slow.peak_to_peak.tolist(), strict=True)),
+        },
         "recordings": [
             {
                 "name": item.plan.recording.path.name,
@@ -382,6 +406,24 @@ def identified_json(identified: Identified) -> dict[str, Any]:
             for item in identified.recordings
         ],
     }
+
+
+def _runout_note(identified: Identified) -> Paragraph:
+    slow = identified.slow_roll
+    if slow is None:
+        return Paragraph(
+            "No slow-roll recording (--slow-roll or [monitor.identify] slow_roll): the probes' runout is not "
+            "subtracted, so it shows in the orbits, the 1X vectors and each window's lowest film (not in the mean "
+            "film, over whole revolutions)."
+        )
+    import numpy as np
+
+    worst = int(np.argmax(slow.peak_to_peak))
+    return Paragraph(
+        f"Runout subtracted from every window: measured on {slow.name} ({slow.revolutions} revolutions at "
+        f"{_rpm(slow.speed)}), up to {slow.peak_to_peak[worst] * MICRO:.2f} µm peak to peak (probe "
+        f"{slow.channels[worst]})."
+    )
 
 
 def _masked_warnings(identified: Identified) -> list[Block]:
@@ -450,7 +492,7 @@ def _identified_table(identified: Identified) -> Table:
 def _identified_blocks(identified: Identified, levels: tuple[float, float]) -> list[Block]:
     from shaftline.monitor import figures
 
-    blocks: list[Block] = [*_masked_warnings(identified), _identified_table(identified)]
+    blocks: list[Block] = [*_masked_warnings(identified), _runout_note(identified), _identified_table(identified)]
     for index, item in enumerate(identified.recordings):
         if not item.trends:
             continue
@@ -481,6 +523,14 @@ def identify_command(
             "[monitor.identify] database, monitor.sqlite beside the case file.",
         ),
     ] = None,
+    slow_roll: Annotated[
+        Path | None,
+        typer.Option(
+            "--slow-roll",
+            help="Slow-roll recording whose runout of each probe is subtracted from every window; default: "
+            "[monitor.identify] slow_roll, else none.",
+        ),
+    ] = None,
     json_path: JsonOption = None,
     out: OutOption = None,
     strict: StrictOption = False,
@@ -499,6 +549,8 @@ def identify_command(
         overrides["monitor.identify.recordings"] = [str(path.expanduser().resolve()) for path in recordings]
     if db is not None:
         overrides["monitor.identify.database"] = db if "://" in db else str(Path(db).expanduser().resolve())
+    if slow_roll is not None:
+        overrides["monitor.identify.slow_roll"] = str(slow_roll.expanduser().resolve())
     run_cases(
         Path(case_file),
         json_path,

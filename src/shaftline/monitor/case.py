@@ -195,6 +195,10 @@ class IdentifySection(Section):
     recordings: list[str] = []
     """Recording files (CSV, Parquet, HDF5, TDMS), relative to this case; the command's RECORDING
     arguments replace them."""
+    slow_roll: str | None = None
+    """Slow-roll recording (same channels, a speed at which film and unbalance do not move the
+    journal): each probe's runout against the keyphasor's phase is measured on it and subtracted
+    from every window; --slow-roll replaces it. None: no runout compensation."""
     database: str = "monitor.sqlite"
     """Trend database: a SQLAlchemy URL, or a SQLite file relative to this case (made if new);
     --db replaces it."""
@@ -333,6 +337,7 @@ def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyP
         # written in place by the run: no --json or --out may replace it or hold it
         context.kept.append(file)
     recordings = tuple(str(context.path(name)) for name in section.recordings)
+    slow_roll = None if section.slow_roll is None else str(context.path(section.slow_roll))
     start = section.start
     if start is not None and start.tzinfo is None:
         start = start.replace(tzinfo=dt.UTC)
@@ -347,6 +352,7 @@ def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyP
         max_invalid_share=section.max_invalid_share,
         lambda_threshold=section.lambda_threshold,
         alarm_duration=section.alarm_duration,
+        slow_roll=slow_roll,
     )
 
 

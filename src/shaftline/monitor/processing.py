@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from shaftline.errors import InputError
-from shaftline.monitor.orbits import revolution_marks
+from shaftline.monitor.orbits import binned_average, phase_bin_sums, revolution_marks, shaft_phase
 from shaftline.monitor.probes import ProbeLayout, within_range
 from shaftline.monitor.recordings import Recording, open_recording
 from shaftline.monitor.regimes import film_ratio
@@ -38,8 +38,10 @@ __all__ = [
     "RecordingPlan",
     "identify_recordings",
     "mask_invalid",
+    "SlowRoll",
     "plan_recording",
     "process_recording",
+    "slow_roll_runout",
     "window_values",
 ]
 
@@ -201,6 +203,128 @@ def _check_units(layout: ProbeLayout, signals: np.ndarray, where: str) -> None:
             )
 
 
+@dataclass(frozen=True, eq=False)
+class SlowRoll:
+    """The runout of every probe measured on a slow-roll recording.
+
+    Attributes
+    ----------
+    name : str
+        The recording's file name.
+    content_hash : str
+        SHA-256 of its bytes.
+    speed : float
+        Mean shaft speed over its whole revolutions, rad/s.
+    revolutions : int
+        Whole revolutions averaged.
+    profile : ndarray (bins, channels)
+        Runout of each probe against the keyphasor's shaft phase, mean removed, m
+        (:func:`~shaftline.monitor.orbits.runout_profile`).
+    masked : int
+        Probe samples that were NaN or beyond range, masked and filled.
+    channels : tuple of str
+        The probes' channels, in the order of the profile's columns.
+    """
+
+    name: str
+    content_hash: str
+    speed: float
+    revolutions: int
+    profile: np.ndarray
+    masked: int = 0
+    channels: tuple[str, ...] = ()
+
+    @property
+    def peak_to_peak(self) -> np.ndarray:
+        """Peak-to-peak runout of each probe, m."""
+        return np.ptp(self.profile, axis=0)
+
+
+#: Samples read at a time from a slow-roll recording (its revolutions are long: 4 s at 15 rpm).
+SLOW_ROLL_BLOCK = 1 << 18
+#: Bins of shaft phase of the runout profile (2.8 deg; the runout is a few harmonics).
+RUNOUT_BINS = 128
+
+
+def slow_roll_runout(
+    layout: ProbeLayout,
+    path: str | Path,
+    keyphasor: str,
+    sample_rate: float | None = None,
+    ignore_channels: tuple[str, ...] | None = None,
+    max_invalid_share: float = MAX_INVALID_SHARE,
+    bins: int = RUNOUT_BINS,
+) -> SlowRoll:
+    """Runout of every probe from a slow-roll recording: the synchronous average of each probe's
+    gap over the recording's whole revolutions, less its mean (Bently Nevada's slow-roll vector,
+    every harmonic kept).
+
+    The recording is read in blocks; the samples after a block's last keyphasor mark are carried
+    into the next, so every whole revolution counts once whatever the block size. Invalid samples
+    are masked as in :func:`mask_invalid`, the share checked per block.
+
+    Raises
+    ------
+    InputError
+        One line naming the file: channels, sample rate, units (the median film inside the
+        clearance), too many invalid samples, or fewer than one whole revolution.
+    """
+    recording = open_recording(path)
+    columns = [*layout.channels, keyphasor]
+    rate = recording.sample_rate(columns, given=sample_rate)
+    name = recording.path.name
+    if ignore_channels is not None:
+        extra = [c for c in recording.channels if c not in columns and c not in ignore_channels]
+        if extra:
+            raise InputError(
+                f"{name} channels",
+                ", ".join(extra),
+                "",
+                "only the probes' and the keyphasor's (name others in ignore_channels)",
+            )
+    sums = np.zeros((bins, len(layout.channels)))
+    counts = np.zeros(bins)
+    carry_gaps = np.empty((0, len(layout.channels)))
+    carry_key = np.empty(0)
+    turns = masked = 0
+    span = 0  # samples from the first mark to the last
+    for first, block in recording.blocks(columns, size=SLOW_ROLL_BLOCK):
+        where = f"{name} samples {first}-{first + block.shape[0] - 1}"
+        if first == 0:
+            _check_units(layout, block[:, :-1], where)
+        signals, bad = mask_invalid(layout, block[:, :-1])
+        _check_share(bad, signals.size, max_invalid_share, where)
+        masked += bad
+        gaps = np.concatenate([carry_gaps, layout.gaps(signals)])
+        key = np.concatenate([carry_key, block[:, -1]])
+        marks = revolution_marks(key) if key.size >= 2 else np.empty(0, dtype=int)
+        if marks.size >= 2:
+            kept = slice(int(marks[0]), int(marks[-1]))
+            phase = shaft_phase(key.size, marks)[kept]
+            block_sums, block_counts = phase_bin_sums(gaps[kept], phase, bins)
+            sums += block_sums
+            counts += block_counts
+            turns += marks.size - 1
+            span += int(marks[-1] - marks[0])
+            # from the sample before the last mark: a mark on a block's first sample is no edge
+            carry_gaps, carry_key = gaps[int(marks[-1]) - 1 :], key[int(marks[-1]) - 1 :]
+        else:
+            carry_gaps, carry_key = gaps, key
+        if carry_key.size > 64 * SLOW_ROLL_BLOCK:
+            break  # no mark for 16 M samples: the keyphasor is not there (reported below)
+    if turns < 1:
+        raise InputError(
+            f"{name} keyphasor {keyphasor}",
+            f"{turns} whole revolutions",
+            "",
+            "a slow-roll recording of one whole revolution or more (two keyphasor marks)",
+        )
+    average = binned_average(sums, counts)
+    profile = average - average.mean(axis=0)
+    speed = 2 * np.pi * turns * rate / span
+    return SlowRoll(name, recording.content_hash(), float(speed), turns, profile, masked, layout.channels)
+
+
 def plan_recording(
     layout: ProbeLayout,
     path: str | Path,
@@ -272,6 +396,7 @@ def process_recording(
     shape: tuple[np.ndarray, np.ndarray] | None = None,
     progress: Callable[[int, int], None] | None = None,
     max_invalid_share: float = MAX_INVALID_SHARE,
+    runout: np.ndarray | None = None,
 ) -> ProcessedRecording:
     """Identify every window of a recording and store its summary.
 
@@ -299,6 +424,9 @@ def process_recording(
     max_invalid_share : float
         Largest share of a window's probe samples that may be NaN or beyond range (masked,
         filled and counted); a window beyond it raises before it is stored.
+    runout : ndarray (bins, channels), optional
+        Slow-roll runout of each probe (:func:`slow_roll_runout`), subtracted at the keyphasor's
+        shaft phase in every window before anything else.
 
     Raises
     ------
@@ -322,7 +450,7 @@ def process_recording(
     # The reference point from the first window, whatever windows are left to do.
     first = next(recording.blocks(columns, size=size))[1]
     signals, _ = mask_invalid(layout, first[:, :-1])
-    references = identify_window(layout, signals, first[:, -1], rate, shape=shape).references
+    references = identify_window(layout, signals, first[:, -1], rate, runout=runout, shape=shape).references
     start = min(k for k in range(windows) if k not in done)
     written = masked = samples = 0
     for first_sample, block in recording.blocks(columns, size=size, start=start * size):
@@ -334,7 +462,7 @@ def process_recording(
         signals, bad = mask_invalid(layout, block[:, :-1])
         _check_share(bad, signals.size, max_invalid_share, f"{recording.path.name} window {k}")
         masked, samples = masked + bad, samples + signals.size
-        result = identify_window(layout, signals, block[:, -1], rate, shape=shape, references=references)
+        result = identify_window(layout, signals, block[:, -1], rate, runout=runout, shape=shape, references=references)
         time = stored.started_at + dt.timedelta(seconds=first_sample / rate)
         if store.add_window(stored, k, time, window_values(result, layout), speed=result.speed):
             written += 1
@@ -373,12 +501,15 @@ class Identified:
     lambda_threshold : float
     alarm_duration : float
         s.
+    slow_roll : SlowRoll or None
+        The runout subtracted from every window (None: none was given).
     """
 
     database: str
     recordings: tuple[IdentifiedRecording, ...]
     lambda_threshold: float
     alarm_duration: float
+    slow_roll: SlowRoll | None = None
 
 
 def identify_recordings(
@@ -415,6 +546,26 @@ def identify_recordings(
             "one recording file or more (or recordings = [...] in [monitor.identify])",
             in_file=True,
         )
+
+    def named(error: InputError, name: str) -> InputError:
+        # named by the file, not placed under [monitor] (the file is not the case)
+        file = Path(name).name
+        field = error.field if error.field.startswith(file) else f"{file}: {error.field}"
+        return InputError(field, error.value, error.unit, error.allowed, in_file=True)
+
+    slow_roll = None
+    if plan.slow_roll is not None:
+        try:
+            slow_roll = slow_roll_runout(
+                layout,
+                plan.slow_roll,
+                plan.keyphasor,
+                plan.sample_rate,
+                plan.ignore_channels,
+                plan.max_invalid_share,
+            )
+        except InputError as error:
+            raise named(error, plan.slow_roll) from None
     plans = []
     start = plan.start
     for name in plan.recordings:
@@ -430,10 +581,7 @@ def identify_recordings(
                 plan.max_invalid_share,
             )
         except InputError as error:
-            # named by the file, not placed under [monitor] (the file is not the case)
-            file = Path(name).name
-            field = error.field if error.field.startswith(file) else f"{file}: {error.field}"
-            raise InputError(field, error.value, error.unit, error.allowed, in_file=True) from None
+            raise named(error, name) from None
         plans.append(checked)
         if start is not None:  # the next file follows this one
             start = start + timedelta(seconds=checked.duration)
@@ -460,6 +608,7 @@ def identify_recordings(
                     shape=shape,
                     progress=told,
                     max_invalid_share=plan.max_invalid_share,
+                    runout=None if slow_roll is None else slow_roll.profile,
                 )
                 trends = section_trends(
                     store,
@@ -472,4 +621,4 @@ def identify_recordings(
             raise Interrupted(
                 f"every window identified so far is kept in {shown}: run the same command again to resume"
             ) from None
-    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration)
+    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration, slow_roll)
