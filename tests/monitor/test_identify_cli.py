@@ -402,3 +402,54 @@ def test_outputs_never_replace_the_database_or_another_file(truth, tmp_path, ver
     after = {p: p.read_bytes() if p.is_file() else sorted(p.iterdir()) if p.is_dir() else None for p in watched}
     assert after == before
     assert rows(database) == 2
+
+
+@pytest.mark.parametrize("fault", ["invalid samples", "keyphasor lost"])
+def test_a_bad_window_mid_recording_is_flagged_and_the_run_goes_on(truth, tmp_path, fault):
+    """A monitoring run does not stop at a bad stretch: window 1 of 2 with 10 % of its probe samples NaN
+    (over max_invalid_share, 1 %), or with its keyphasor gone, is stored as rejected with its reason and
+    share, left out of the trends, and the run ends; the result is not acceptable (exit 3, the line at
+    the top of the output and the report), and so it stays when the same command runs again (the flag
+    is in the database). Window 0 is identified as from the clean recording. monitor trend warns too."""
+    case, recording = truth
+    signals, keyphasor = recording.signals.copy(), recording.keyphasor.copy()
+    second = slice(4096, 8192)  # window 1 of 2 s at 2048 Hz
+    if fault == "invalid samples":
+        rows_of = np.arange(second.start, second.stop)
+        signals[rows_of[rows_of % 10 == 0]] = np.nan  # 10 % of the window's samples, every channel
+        reason, share = "more than max_invalid_share of its probe samples NaN or beyond range", 0.1
+    else:
+        keyphasor[second] = 0.0
+        reason, share = "no whole shaft revolution", 0.0
+    frame = pd.DataFrame(signals, columns=list(case.layout.channels))
+    frame["keyphasor"] = keyphasor
+    frame.insert(0, "time", np.arange(len(frame)) / recording.sample_rate)
+    path = tmp_path / "r.csv"
+    frame.to_csv(path, index=False, float_format="%.10g")
+    clean = write_csv(tmp_path / "clean.csv", truth)
+    database, out = tmp_path / "m.sqlite", tmp_path / "out"
+    arguments = ["monitor", "identify", str(case_file(tmp_path)), str(path), "--db", str(database)]
+    result = invoke(*arguments, "--out", str(out), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 3, result.stderr
+    text = " ".join(result.stdout.split())  # the terminal wraps lines
+    assert text.startswith("NOT ACCEPTABLE: Film-thickness monitoring (eddy-current probes): r.csv: 1 window not")
+    assert reason in text
+    assert "NOT ACCEPTABLE" in (out / "report.html").read_text()
+    stored = json.loads((tmp_path / "r.json").read_text())["monitor"]["identify"]["recordings"][0]
+    assert (stored["windows"], stored["written"]) == (2, 2)
+    (flag,) = stored["rejected_windows"]
+    assert flag["window"] == 1 and flag["reason"] == reason
+    assert flag["invalid_share"] == pytest.approx(share, abs=1e-3)
+    assert len(stored["sections"]["D1"]["times"]) == 1  # the rejected window is not in the trend
+    with TrendStore(database) as store, TrendStore(tmp_path / "clean.sqlite") as reference:
+        process = invoke("monitor", "identify", str(case_file(tmp_path)), str(clean), "--db", str(reference.url))
+        assert process.exit_code == 0, process.stderr
+        film = store.series("min_film_thickness", "D1")
+        np.testing.assert_allclose(film["value"], reference.series("min_film_thickness", "D1")["value"][:1], rtol=1e-9)
+    again = invoke(*arguments)
+    assert again.exit_code == 3 and "r.csv: 1 window not identified" in " ".join(again.stdout.split())
+    assert rows(database) == 2
+    trend = invoke("monitor", "trend", "--db", str(database), "--json", "-")
+    assert trend.exit_code == 0, trend.stderr
+    assert "r.csv: 1 window not identified" in " ".join(trend.stderr.split())
+    assert json.loads(trend.stdout)["monitor_trend"]["recordings"][0]["rejected_windows"] == 1

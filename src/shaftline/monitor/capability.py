@@ -20,7 +20,7 @@ from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph,
 if TYPE_CHECKING:
     from shaftline.monitor.case import MonitorSection
     from shaftline.monitor.forward import Recording
-    from shaftline.monitor.processing import Identified
+    from shaftline.monitor.processing import Identified, RejectedWindow
     from shaftline.monitor.study import MonitorResult, MonitorStudy
     from shaftline.monitor.trends import LambdaAlarm, SectionTrend
 
@@ -169,6 +169,12 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
     def findings(self, result: MonitorResult) -> list[Finding]:
         found = []
         if result.identified is not None:
+            # windows that could not be identified make the run's result not acceptable (exit 3)
+            found += [
+                Finding(_rejected_text(item.plan.recording.path.name, item.processed.rejected), criterion=False)
+                for item in result.identified.recordings
+                if item.processed.rejected
+            ]
             found += [
                 Finding(_alarm_text(alarm, result.identified.lambda_threshold), criterion=True)
                 for item in result.identified.recordings
@@ -332,7 +338,20 @@ def _recording_writer(recording: Recording, channels: tuple[str, ...]) -> Any:
 
 
 def _when(moment: Any) -> str:
-    return f"{moment:%Y-%m-%d %H:%M:%S}"
+    import datetime as dt
+
+    # to the nearest second: a time a microsecond short of a whole second is shown as that second
+    return f"{moment + dt.timedelta(microseconds=500_000):%Y-%m-%d %H:%M:%S}"
+
+
+def _rejected_text(name: str, rejected: Sequence[RejectedWindow]) -> str:
+    shown = ", ".join(
+        f"{w.window} ({_when(w.time)}: {w.reason}, {w.invalid_share:.1%} invalid)" for w in rejected[:5]
+    ) + (f" and {len(rejected) - 5} more" if len(rejected) > 5 else "")
+    return (
+        f"{name}: {len(rejected)} window{'s' if len(rejected) > 1 else ''} not identified and flagged as rejected in "
+        f"the database, left out of the trends: {shown}."
+    )
 
 
 def _alarm_text(alarm: LambdaAlarm, threshold: float) -> str:
@@ -401,6 +420,15 @@ def identified_json(identified: Identified) -> dict[str, Any]:
                 "windows": item.processed.windows,
                 "written": item.processed.written,
                 "masked_samples": item.processed.masked,
+                "rejected_windows": [
+                    {
+                        "window": w.window,
+                        "time": w.time.isoformat(),
+                        "reason": w.reason,
+                        "invalid_share": w.invalid_share,
+                    }
+                    for w in item.processed.rejected
+                ],
                 "sections": {trend.section: _trend_json(trend) for trend in item.trends},
             }
             for item in identified.recordings
@@ -463,6 +491,7 @@ def _identified_table(identified: Identified) -> Table:
                 _when(done.recording.started_at),
                 f"{done.windows}",
                 f"{done.written}",
+                f"{len(done.rejected)}",
                 f"{np.nanmean(speeds) * RPM:.0f}" if speeds.size else "-",
                 films,
                 lowest,
@@ -478,6 +507,7 @@ def _identified_table(identified: Identified) -> Table:
             "start (UTC)",
             "windows",
             "stored now",
+            "rejected",
             "speed [rpm]",
             f"mean h_min {names} [µm]",
             "min lambda",
@@ -628,6 +658,7 @@ def _trends(
 
     from shaftline.errors import InputError
     from shaftline.monitor import figures
+    from shaftline.monitor.processing import rejected_windows
     from shaftline.monitor.trends import TrendStore, _hide_password, centre_lines, section_trends
     from shaftline.units import to_si
 
@@ -666,6 +697,7 @@ def _trends(
         trends = section_trends(store, threshold, dt.timedelta(seconds=duration), limit)
         lines = centre_lines(store)
         stored = store.recordings()
+        rejected = {r.id: rejected_windows(store, r) for r in stored}
     if not trends:
         raise InputError("--db", shown, "", "a database with identified windows (run monitor identify first)")
     bearing = next((t for t in trends if t.section == "bearing"), trends[-1])
@@ -694,6 +726,7 @@ def _trends(
             f"UTC. Alarms: film parameter below {threshold:g} for {duration:g} s or more. Trend: least-squares "
             f"straight line of the smallest film against time, projected to the limit {bearing.limit * MICRO:.2f} µm."
         ),
+        *[Paragraph("warning: " + _rejected_text(r.name, rejected[r.id]), "warn") for r in stored if rejected[r.id]],
         *[Paragraph("warning: " + _alarm_text(a, threshold), "warn") for t in trends for a in t.alarms],
         Table(
             [
@@ -735,6 +768,7 @@ def _trends(
                 "content_hash": r.content_hash,
                 "started_at": r.started_at.isoformat(),
                 "complete": r.complete,
+                "rejected_windows": len(rejected[r.id]),
             }
             for r in stored
         ],

@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from shaftline.errors import InputError
-from shaftline.monitor.orbits import binned_average, phase_bin_sums, revolution_marks, shaft_phase
+from shaftline.monitor.orbits import binned_average, phase_bin_sums, revolution_marks, shaft_phase, speed_from_marks
 from shaftline.monitor.probes import ProbeLayout, within_range
 from shaftline.monitor.recordings import Recording, open_recording
 from shaftline.monitor.regimes import film_ratio
@@ -85,6 +85,8 @@ def window_values(result: WindowResult, layout: ProbeLayout) -> dict[tuple[str, 
     return values
 
 
+#: Why a window was not identified (the value of ``(BEARING, "rejected")`` in the store).
+REJECTED = {1: "more than max_invalid_share of its probe samples NaN or beyond range", 2: "no whole shaft revolution"}
 #: Largest share of a window's probe samples that may be NaN or beyond the probe's range
 #: (masked and filled); beyond it the window is refused (engineering judgement: 1 % of a
 #: window's samples filled by interpolation moves its mean film by less than the noise).
@@ -139,6 +141,9 @@ class ProcessedRecording:
         masked and filled by interpolation along time.
     samples : int
         Probe samples of the windows of this run.
+    rejected : tuple of RejectedWindow
+        Windows of the recording in the store (this run's and earlier ones') that were not
+        identified: flagged there with the reason, left out of the trends.
     """
 
     recording: StoredRecording
@@ -146,6 +151,46 @@ class ProcessedRecording:
     written: int
     masked: int = 0
     samples: int = 0
+    rejected: tuple[RejectedWindow, ...] = ()
+
+
+@dataclass(frozen=True)
+class RejectedWindow:
+    """A window stored as not acceptable instead of identified.
+
+    Attributes
+    ----------
+    window : int
+        Its number in the recording.
+    time : datetime
+        Time of its first sample.
+    reason : str
+        Why (:data:`REJECTED`).
+    invalid_share : float
+        Share of its probe samples that were NaN or beyond range.
+    """
+
+    window: int
+    time: dt.datetime
+    reason: str
+    invalid_share: float
+
+
+def rejected_windows(store: TrendStore, recording: StoredRecording) -> tuple[RejectedWindow, ...]:
+    """The windows of ``recording`` flagged in ``store`` as not identified, in order."""
+    flags = store.series("rejected", BEARING, recording=recording)
+    shares = store.series("invalid_share", BEARING, recording=recording)
+    share_of = dict(zip(shares["window"], shares["value"], strict=True))
+    return tuple(
+        RejectedWindow(
+            int(row.window),
+            row.time.to_pydatetime(),
+            REJECTED.get(int(row.value), "unknown"),
+            float(share_of.get(row.window, math.nan)),
+        )
+        for row in flags.itertuples()
+        if row.value and math.isfinite(row.value)
+    )
 
 
 def mask_invalid(layout: ProbeLayout, signals: np.ndarray) -> tuple[np.ndarray, int]:
@@ -423,7 +468,10 @@ def process_recording(
         Called with (windows done, windows in all) after each window.
     max_invalid_share : float
         Largest share of a window's probe samples that may be NaN or beyond range (masked,
-        filled and counted); a window beyond it raises before it is stored.
+        filled and counted). The first window beyond it refuses the recording before anything
+        is stored (:func:`plan_recording`); a later one, or one without a whole shaft
+        revolution, is stored as rejected (``(BEARING, "rejected")`` = the :data:`REJECTED`
+        code, with its ``invalid_share``), not identified, and the run carries on.
     runout : ndarray (bins, channels), optional
         Slow-roll runout of each probe (:func:`slow_roll_runout`), subtracted at the keyphasor's
         shaft phase in every window before anything else.
@@ -431,8 +479,8 @@ def process_recording(
     Raises
     ------
     InputError
-        From the recording (channels, sample rate, units, invalid samples) or
-        ``"window_seconds"``; every window stored before stays (each whole).
+        From the recording's checks (channels, sample rate, units, its first window's invalid
+        samples) or ``"window_seconds"``, before anything is stored.
     """
     plan = (
         path
@@ -446,7 +494,7 @@ def process_recording(
     stored = store.recording(recording.content_hash(), recording.path.name, recording.samples, rate, plan.started_at)
     done = store.windows_done(stored)
     if stored.complete or len(done) >= windows:
-        return ProcessedRecording(stored, windows, 0)
+        return ProcessedRecording(stored, windows, 0, rejected=rejected_windows(store, stored))
     # The reference point from the first window, whatever windows are left to do.
     first = next(recording.blocks(columns, size=size))[1]
     signals, _ = mask_invalid(layout, first[:, :-1])
@@ -460,16 +508,27 @@ def process_recording(
         if k in done:
             continue
         signals, bad = mask_invalid(layout, block[:, :-1])
-        _check_share(bad, signals.size, max_invalid_share, f"{recording.path.name} window {k}")
-        masked, samples = masked + bad, samples + signals.size
-        result = identify_window(layout, signals, block[:, -1], rate, runout=runout, shape=shape, references=references)
         time = stored.started_at + dt.timedelta(seconds=first_sample / rate)
-        if store.add_window(stored, k, time, window_values(result, layout), speed=result.speed):
-            written += 1
+        share = bad / signals.size
+        marks = revolution_marks(block[:, -1])
+        code = 1 if share > max_invalid_share else 2 if marks.size < 2 else 0
+        if code:
+            # a monitoring run goes on past a bad stretch: the window is flagged, not identified
+            speed = 2 * math.pi * speed_from_marks(marks, rate) if marks.size >= 2 else None
+            flagged = {(BEARING, "rejected"): float(code), (BEARING, "invalid_share"): share}
+            written += store.add_window(stored, k, time, flagged, speed=speed)
+        else:
+            result = identify_window(
+                layout, signals, block[:, -1], rate, runout=runout, shape=shape, references=references
+            )
+            values = window_values(result, layout) | {(BEARING, "invalid_share"): share}
+            # counted in the windows identified only: a rejected window's samples were not filled
+            masked, samples = masked + bad, samples + signals.size
+            written += store.add_window(stored, k, time, values, speed=result.speed)
         if progress is not None:
             progress(k + 1, windows)
     store.mark_complete(stored)
-    return ProcessedRecording(stored, windows, written, masked, samples)
+    return ProcessedRecording(stored, windows, written, masked, samples, rejected_windows(store, stored))
 
 
 @dataclass(frozen=True, eq=False)
