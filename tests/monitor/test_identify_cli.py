@@ -453,3 +453,35 @@ def test_a_bad_window_mid_recording_is_flagged_and_the_run_goes_on(truth, tmp_pa
     assert trend.exit_code == 0, trend.stderr
     assert "r.csv: 1 window not identified" in " ".join(trend.stderr.split())
     assert json.loads(trend.stdout)["monitor_trend"]["recordings"][0]["rejected_windows"] == 1
+
+
+def test_identify_and_trend_verbs_on_a_real_postgresql_server(truth, tmp_path, postgres_url):
+    """The verbs, not only the store, on the PostgreSQL server the fixture starts from Debian's package
+    (tests/monitor/conftest.py): `monitor identify --db URL` stores the same numbers as into SQLite,
+    the same file again stores nothing (the content hash on the server), `monitor trend --db URL`
+    reads them back with its report, and the server holds the two windows."""
+    path = write_csv(tmp_path / "r.csv", truth)
+    documents = {}
+    for label, database in (("postgresql", postgres_url), ("sqlite", str(tmp_path / "m.sqlite"))):
+        result = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", database,
+                        "--out", str(tmp_path / f"out-{label}"), "--json", "-")  # fmt: skip
+        assert result.exit_code == 0, result.stderr
+        documents[label] = json.loads(result.stdout)["monitor"]["identify"]
+    server = documents["postgresql"]
+    assert server["database"].startswith("postgresql+psycopg://shaftline@/postgres")
+    assert [(r["windows"], r["written"]) for r in server["recordings"]] == [(2, 2)]
+    assert server["recordings"][0]["sections"] == documents["sqlite"]["recordings"][0]["sections"]
+    again = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", postgres_url, "--json", "-")
+    assert again.exit_code == 0, again.stderr
+    assert json.loads(again.stdout)["monitor"]["identify"]["recordings"][0]["written"] == 0
+    trend = invoke("monitor", "trend", "--db", postgres_url, "--out", str(tmp_path / "trend"), "--json", "-")
+    assert trend.exit_code == 0, trend.stderr
+    sections = json.loads(trend.stdout)["monitor_trend"]["sections"]
+    assert sections["D1"]["min_film_thickness"] == server["recordings"][0]["sections"]["D1"]["min_film_thickness"]
+    assert (tmp_path / "trend" / "figures" / "monitor_trend.png").stat().st_size > 10_000
+    engine = sa.create_engine(postgres_url)
+    try:
+        with engine.connect() as connection:
+            assert connection.execute(sa.text("select count(*) from windows")).scalar_one() == 2
+    finally:
+        engine.dispose()
