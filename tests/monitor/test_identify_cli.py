@@ -88,6 +88,11 @@ def test_identify_stores_the_windows_once_and_reports_them(truth, tmp_path):
         films = stored[0]["sections"][section.name]["min_film_thickness"]
         np.testing.assert_allclose(films, true_film, rtol=0.02)
     assert (out / "figures" / "monitor_identified_0.png").stat().st_size > 10_000
+    # the last window's figures, as monitor simulate draws them: film along and round the bearing, orbits
+    names = ["min_film", "film_map"] + [f"{kind}_{k}" for kind in ("orbit", "film_polar") for k in range(3)]
+    for name in names:
+        assert (out / "figures" / f"monitor_identified_{name}.png").stat().st_size > 10_000, name
+    assert "Last window identified: rig.csv, window 1" in (out / "report.html").read_text()
     again = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", str(database), "--json", "-")
     assert again.exit_code == 0, again.stderr
     assert json.loads(again.stdout)["monitor"]["identify"]["recordings"][0]["written"] == 0

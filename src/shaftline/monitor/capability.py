@@ -20,8 +20,9 @@ from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph,
 if TYPE_CHECKING:
     from shaftline.monitor.case import MonitorSection
     from shaftline.monitor.forward import Recording
+    from shaftline.monitor.probes import ProbeLayout
     from shaftline.monitor.processing import Identified, RejectedWindow
-    from shaftline.monitor.study import MonitorResult, MonitorStudy
+    from shaftline.monitor.study import MonitorResult, MonitorStudy, WindowResult
     from shaftline.monitor.trends import LambdaAlarm, SectionTrend
 
 RPM = 30 / math.pi
@@ -208,15 +209,12 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
         return blocks
 
     def report(self, result: MonitorResult) -> list[Block]:
-        from dataclasses import replace
 
         import numpy as np
 
         from shaftline.monitor import figures
-        from shaftline.monitor.bending import film_map
         from shaftline.monitor.orbits import shaft_centre_line
         from shaftline.monitor.regimes import thresholds
-        from shaftline.monitor.study import FILM_ANGLES
 
         study = result.study
         layout = study.layout
@@ -233,7 +231,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             )
         ]
         if result.identified is not None:
-            blocks += _identified_blocks(result.identified, (low, high))
+            blocks += _identified_blocks(result.identified, (low, high), layout)
         if not result.points:
             return blocks
         rig = study.rig
@@ -258,38 +256,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                 caption="smallest film along the bearing at each speed on the regime bands",
             )
         )
-        theta = FILM_ANGLES
-        stations = window.stations
-        # The map of the time-mean centre line on a 0.5 deg grid (every sample on it would not fit in memory).
-        mean_line = replace(
-            window.line,
-            coefficients_y=window.line.coefficients_y.mean(axis=0, keepdims=True),
-            coefficients_z=window.line.coefficients_z.mean(axis=0, keepdims=True),
-        )
-        fine = np.radians(np.arange(0.0, 360.0, 0.5))
-        blocks.append(
-            Figure(
-                "monitor_film_map.png",
-                figures.film_map,
-                (fine, stations, film_map(mean_line, layout, fine, stations)[0], layout),
-                caption=f"unwrapped full-bearing film of the mean centre line at {_rpm(window.speed)} with the "
-                "regime contours",
-            )
-        )
-        for index, orbit in enumerate(window.orbits):
-            blocks.append(Heading(f"Section {orbit.name} at {_rpm(window.speed)}"))
-            blocks.append(
-                Figure(f"monitor_orbit_{index}.png", figures.orbit, (orbit,), caption="orbit in the clearance circle")
-            )
-            blocks.append(
-                Figure(
-                    f"monitor_film_polar_{index}.png",
-                    figures.film_polar,
-                    (theta, window.films[index], layout),
-                    {"label": orbit.name},
-                    caption="film round the section",
-                )
-            )
+        blocks += _window_blocks(window, layout, "monitor")
         middle = len(window.orbits) // 2
         points = shaft_centre_line(
             np.array([p.window.speed / (2 * math.pi) for p in result.points]),
@@ -323,6 +290,54 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                     )
                 )
         return blocks
+
+
+def _window_blocks(window: WindowResult, layout: ProbeLayout, prefix: str, label: str = "") -> list[Block]:
+    """The unwrapped film map of a window's mean centre line, and the orbit and the film round
+    each section, as figures named ``prefix``_film_map.png, ``prefix``_orbit_<i>.png and
+    ``prefix``_film_polar_<i>.png."""
+    from dataclasses import replace
+
+    import numpy as np
+
+    from shaftline.monitor import figures
+    from shaftline.monitor.bending import film_map
+    from shaftline.monitor.study import FILM_ANGLES
+
+    blocks: list[Block] = []
+    theta = FILM_ANGLES
+    stations = window.stations
+    where = label or _rpm(window.speed)
+    # The map of the time-mean centre line on a 0.5 deg grid (every sample on it would not fit in memory).
+    mean_line = replace(
+        window.line,
+        coefficients_y=window.line.coefficients_y.mean(axis=0, keepdims=True),
+        coefficients_z=window.line.coefficients_z.mean(axis=0, keepdims=True),
+    )
+    fine = np.radians(np.arange(0.0, 360.0, 0.5))
+    blocks.append(
+        Figure(
+            f"{prefix}_film_map.png",
+            figures.film_map,
+            (fine, stations, film_map(mean_line, layout, fine, stations)[0], layout),
+            caption=f"unwrapped full-bearing film of the mean centre line at {where} with the regime contours",
+        )
+    )
+    for index, orbit in enumerate(window.orbits):
+        blocks.append(Heading(f"Section {orbit.name} at {where}"))
+        blocks.append(
+            Figure(f"{prefix}_orbit_{index}.png", figures.orbit, (orbit,), caption="orbit in the clearance circle")
+        )
+        blocks.append(
+            Figure(
+                f"{prefix}_film_polar_{index}.png",
+                figures.film_polar,
+                (theta, window.films[index], layout),
+                {"label": orbit.name},
+                caption="film round the section",
+            )
+        )
+    return blocks
 
 
 def _recording_writer(recording: Recording, channels: tuple[str, ...]) -> Any:
@@ -519,7 +534,7 @@ def _identified_table(identified: Identified) -> Table:
     )
 
 
-def _identified_blocks(identified: Identified, levels: tuple[float, float]) -> list[Block]:
+def _identified_blocks(identified: Identified, levels: tuple[float, float], layout: ProbeLayout) -> list[Block]:
     from shaftline.monitor import figures
 
     blocks: list[Block] = [*_masked_warnings(identified), _runout_note(identified), _identified_table(identified)]
@@ -536,6 +551,26 @@ def _identified_blocks(identified: Identified, levels: tuple[float, float]) -> l
                 "thresholds, lambda alarms shaded",
             )
         )
+    # what the trends leave out: the film round and along the bearing, the orbits, of the last
+    # window identified of each recording (the figures `monitor simulate` draws of its recordings)
+    last = [(item, item.processed.last) for item in identified.recordings if item.processed.last is not None]
+    if last:
+        item, window = last[-1]
+        name = item.plan.recording.path.name
+        blocks.append(Heading(f"Last window identified: {name}, window {item.processed.last_window}"))
+        blocks.append(
+            Figure(
+                "monitor_identified_min_film.png",
+                figures.min_film_along,
+                (
+                    window.stations,
+                    {f"{i.plan.recording.path.name} ({_rpm(w.speed)})": w.min_film for i, w in last},
+                    layout,
+                ),  # fmt: skip
+                caption="smallest film along the bearing in the last window of each recording on the regime bands",
+            )
+        )
+        blocks += _window_blocks(window, layout, "monitor_identified", f"{_rpm(window.speed)} ({name})")
     return blocks
 
 

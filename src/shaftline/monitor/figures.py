@@ -59,7 +59,8 @@ def orbit(section: SectionOrbit, *, ax: Any) -> Any:
     zoom.plot(*mean, "C3+")
     zoom.set_aspect("equal", adjustable="datalim")
     zoom.set_xlabel("horizontal [µm]")
-    zoom.set_title(f"orbit, h_min {section.min_film.min() * MICRO:.2f} µm")
+    film = section.min_film
+    zoom.set_title(f"orbit, h_min {film.mean() * MICRO:.2f} µm (mean), {film.min() * MICRO:.2f} µm (lowest)")
     return ax
 
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 import datetime as dt
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -144,6 +144,11 @@ class ProcessedRecording:
     rejected : tuple of RejectedWindow
         Windows of the recording in the store (this run's and earlier ones') that were not
         identified: flagged there with the reason, left out of the trends.
+    last : WindowResult or None
+        The last window this run identified (for the report's figures), None when it
+        identified none.
+    last_window : int
+        Its number (-1 without one).
     """
 
     recording: StoredRecording
@@ -152,6 +157,8 @@ class ProcessedRecording:
     masked: int = 0
     samples: int = 0
     rejected: tuple[RejectedWindow, ...] = ()
+    last: WindowResult | None = field(default=None, repr=False, compare=False)
+    last_window: int = -1
 
 
 @dataclass(frozen=True)
@@ -501,6 +508,7 @@ def process_recording(
     references = identify_window(layout, signals, first[:, -1], rate, runout=runout, shape=shape).references
     start = min(k for k in range(windows) if k not in done)
     written = masked = samples = 0
+    last, last_window = None, -1
     for first_sample, block in recording.blocks(columns, size=size, start=start * size):
         k = first_sample // size
         if k >= windows:
@@ -522,13 +530,16 @@ def process_recording(
                 layout, signals, block[:, -1], rate, runout=runout, shape=shape, references=references
             )
             values = window_values(result, layout) | {(BEARING, "invalid_share"): share}
+            last, last_window = result, k
             # counted in the windows identified only: a rejected window's samples were not filled
             masked, samples = masked + bad, samples + signals.size
             written += store.add_window(stored, k, time, values, speed=result.speed)
         if progress is not None:
             progress(k + 1, windows)
     store.mark_complete(stored)
-    return ProcessedRecording(stored, windows, written, masked, samples, rejected_windows(store, stored))
+    return ProcessedRecording(
+        stored, windows, written, masked, samples, rejected_windows(store, stored), last, last_window
+    )
 
 
 @dataclass(frozen=True, eq=False)
