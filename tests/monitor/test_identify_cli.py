@@ -490,3 +490,34 @@ def test_identify_and_trend_verbs_on_a_real_postgresql_server(truth, tmp_path, p
             assert connection.execute(sa.text("select count(*) from windows")).scalar_one() == 2
     finally:
         engine.dispose()
+
+
+def test_a_recording_without_a_keyphasor_at_a_given_speed(truth, tmp_path):
+    """The issue's optional keyphasor: a file without one, `keyphasor = ""` and the shaft speed given,
+    is cut into revolutions at that speed from its first sample; the mean h_min per section is the
+    forward model's within 2 % (as with the keyphasor), the stored speed is the given one. Without
+    the speed, and with a slow roll (runout needs the shaft's phase), one-line errors."""
+    case, recording = truth
+    path = write_csv(tmp_path / "r.csv", truth)
+    pd.read_csv(path).drop(columns=["keyphasor"]).to_csv(path, index=False, float_format="%.10g")
+    identify = '[monitor.identify]\nkeyphasor = ""\nspeed = "120 rpm"'
+    rig = case_file(tmp_path).read_text().replace('[monitor.identify]\nkeyphasor = "keyphasor"', identify)
+    (tmp_path / "rig.toml").write_text(rig)
+    result = invoke("monitor", "identify", str(tmp_path / "rig.toml"), str(path), "--db", str(tmp_path / "m.sqlite"),
+                    "--json", "-")  # fmt: skip
+    assert result.exit_code == 0, result.stderr
+    stored = json.loads(result.stdout)["monitor"]["identify"]["recordings"][0]
+    assert (stored["windows"], stored["written"]) == (2, 2)
+    for section in case.layout.sections:
+        ey, ez = recording.centres(np.array([section.position]))
+        true_film = (recording.clearance - np.hypot(ey[:, 0], ez[:, 0])).mean()
+        trend = stored["sections"][section.name]
+        np.testing.assert_allclose(trend["min_film_thickness"], true_film, rtol=0.02)
+        np.testing.assert_allclose(trend["speed"], 120 * RPM, rtol=1e-3)  # whole revolutions of 1024 samples
+    (tmp_path / "nospeed.toml").write_text(rig.replace('speed = "120 rpm"\n', ""))
+    none = invoke("monitor", "identify", str(tmp_path / "nospeed.toml"), str(path), "--db", str(tmp_path / "n.sqlite"))
+    assert none.exit_code == 2 and none.stderr.startswith("error: r.csv: speed = 'none'"), none.stderr
+    slow = invoke("monitor", "identify", str(tmp_path / "rig.toml"), str(path), "--slow-roll", str(path),
+                  "--db", str(tmp_path / "s.sqlite"))  # fmt: skip
+    assert slow.exit_code == 2 and "allowed recordings with a keyphasor" in slow.stderr, slow.stderr
+    assert not (tmp_path / "n.sqlite").exists() and not (tmp_path / "s.sqlite").exists()

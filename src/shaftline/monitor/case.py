@@ -178,7 +178,10 @@ class IdentifySection(Section):
     (``shaftline monitor identify CASE.toml RECORDING...``)."""
 
     keyphasor: str = "keyphasor"
-    """Name of the once-per-revolution channel."""
+    """Name of the once-per-revolution channel; "" for recordings without one (then speed)."""
+    speed: Annotated[PositiveSpeed, SHAFT_SPEED] | None = None
+    """Shaft speed of recordings without a keyphasor: windows are cut into revolutions from the first
+    sample at this speed (1X phases are then against the recording's start; no slow-roll runout)."""
     window: Annotated[
         PositiveTime, Plausible(0.05, 600.0, "windows of a few revolutions: 0.05 s to 10 min (engineering judgement)")
     ] = 2.0
@@ -353,6 +356,7 @@ def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyP
         lambda_threshold=section.lambda_threshold,
         alarm_duration=section.alarm_duration,
         slow_roll=slow_roll,
+        speed=section.speed,
     )
 
 

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import datetime as dt
 import math
-from collections.abc import Callable
-from dataclasses import dataclass, field
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -111,6 +111,12 @@ class RecordingPlan:
         Windows in the recording.
     started_at : datetime
         Time of its first sample.
+    keyphasor : str
+        Its once-per-revolution channel ("": none; then ``speed``).
+    speed : float or None
+        Shaft speed given for a recording without a keyphasor, rad/s.
+    channels : tuple of str
+        The probes' channels, in the layout's order.
     """
 
     recording: Recording
@@ -118,6 +124,25 @@ class RecordingPlan:
     size: int
     windows: int
     started_at: dt.datetime
+    keyphasor: str = "keyphasor"
+    speed: float | None = None
+    channels: tuple[str, ...] = ()
+
+    def blocks(self, start: int = 0) -> Iterator[tuple[int, np.ndarray]]:
+        """Windows of probe outputs with the keyphasor as the last column, from window ``start``:
+        the recording's channel, or without one, one-sample marks at every revolution of the given
+        speed counted from the first sample (the 1X phases are then against the recording's
+        start, not a mark on the shaft)."""
+        layout_columns = list(self.channels)
+        if self.keyphasor:
+            yield from self.recording.blocks([*layout_columns, self.keyphasor], size=self.size, start=start * self.size)
+            return
+        assert self.speed is not None
+        step = self.speed / (2 * math.pi) / self.sample_rate  # revolutions a sample
+        for first, block in self.recording.blocks(layout_columns, size=self.size, start=start * self.size):
+            turns = (first + np.arange(block.shape[0])) * step
+            marks = np.floor(turns) != np.floor(turns - step)
+            yield first, np.column_stack([block, np.where(marks, 5.0, 0.0)])
 
     @property
     def duration(self) -> float:
@@ -386,11 +411,13 @@ def plan_recording(
     started_at: dt.datetime | None = None,
     ignore_channels: tuple[str, ...] | None = None,
     max_invalid_share: float = MAX_INVALID_SHARE,
+    speed: float | None = None,
 ) -> RecordingPlan:
     """Open a recording and check it before anything of it is stored: its channels (every
     probe and the keyphasor; with ``ignore_channels`` given, no others but those), one sample
     rate, at least one window, and a first window whose films lie inside the clearance (the
     units) with no more than ``max_invalid_share`` of its probe samples NaN or beyond range.
+    ``keyphasor`` "" reads a recording without one at the given shaft ``speed`` (rad/s).
 
     Raises
     ------
@@ -399,8 +426,12 @@ def plan_recording(
     """
     if not (isinstance(window_seconds, float | int) and math.isfinite(window_seconds) and window_seconds > 0.0):
         raise InputError("window_seconds", window_seconds, "s", "a positive length of a few revolutions")
+    if not keyphasor and not (speed is not None and math.isfinite(speed) and speed > 0.0):
+        raise InputError(
+            "speed", "none" if speed is None else speed, "rad/s", "the shaft speed of recordings without a keyphasor"
+        )
     recording = open_recording(path)
-    columns = [*layout.channels, keyphasor]
+    columns = [*layout.channels, keyphasor] if keyphasor else list(layout.channels)
     rate = recording.sample_rate(columns, given=sample_rate)
     if ignore_channels is not None:
         extra = [c for c in recording.channels if c not in columns and c not in ignore_channels]
@@ -418,7 +449,10 @@ def plan_recording(
         raise InputError(
             "window_seconds", window_seconds, "s", f"at most the recording's {recording.samples / rate:g} s"
         )
-    first = next(recording.blocks(columns, size=size))[1]
+    plan = RecordingPlan(
+        recording, rate, size, windows, dt.datetime.now(dt.UTC), keyphasor, speed, tuple(layout.channels)
+    )
+    first = next(plan.blocks())[1]
     marks = revolution_marks(first[:, -1])
     if marks.size < 2:
         raise InputError(
@@ -426,7 +460,7 @@ def plan_recording(
             window_seconds,
             "s",
             f"a window of one shaft revolution or more (window 0 of {recording.path.name} holds {marks.size} "
-            f"marks of the keyphasor {keyphasor})",
+            f"marks of the keyphasor {keyphasor or 'made from the given speed'})",
         )
     where = f"{recording.path.name} window 0"
     _check_units(layout, first[:, :-1], where)
@@ -434,7 +468,7 @@ def plan_recording(
     _check_share(masked, first[:, :-1].size, max_invalid_share, where)
     if started_at is None:
         started_at = dt.datetime.fromtimestamp(recording.path.stat().st_mtime, tz=dt.UTC)
-    return RecordingPlan(recording, rate, size, windows, started_at)
+    return replace(plan, started_at=started_at)
 
 
 def process_recording(
@@ -497,19 +531,18 @@ def process_recording(
         )
     )
     recording, rate, size, windows = plan.recording, plan.sample_rate, plan.size, plan.windows
-    columns = [*layout.channels, keyphasor]
     stored = store.recording(recording.content_hash(), recording.path.name, recording.samples, rate, plan.started_at)
     done = store.windows_done(stored)
     if stored.complete or len(done) >= windows:
         return ProcessedRecording(stored, windows, 0, rejected=rejected_windows(store, stored))
     # The reference point from the first window, whatever windows are left to do.
-    first = next(recording.blocks(columns, size=size))[1]
+    first = next(plan.blocks())[1]
     signals, _ = mask_invalid(layout, first[:, :-1])
     references = identify_window(layout, signals, first[:, -1], rate, runout=runout, shape=shape).references
     start = min(k for k in range(windows) if k not in done)
     written = masked = samples = 0
     last, last_window = None, -1
-    for first_sample, block in recording.blocks(columns, size=size, start=start * size):
+    for first_sample, block in plan.blocks(start):
         k = first_sample // size
         if k >= windows:
             break
@@ -624,6 +657,10 @@ def identify_recordings(
         return InputError(field, error.value, error.unit, error.allowed, in_file=True)
 
     slow_roll = None
+    if plan.slow_roll is not None and not plan.keyphasor:
+        raise InputError(
+            "slow_roll", plan.slow_roll, "", "recordings with a keyphasor (the runout is a function of shaft phase)"
+        )
     if plan.slow_roll is not None:
         try:
             slow_roll = slow_roll_runout(
@@ -649,6 +686,7 @@ def identify_recordings(
                 start,
                 plan.ignore_channels,
                 plan.max_invalid_share,
+                plan.speed,
             )
         except InputError as error:
             raise named(error, name) from None

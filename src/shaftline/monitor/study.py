@@ -207,6 +207,8 @@ class IdentifyPlan:
         Shortest alarm stretch, s.
     slow_roll : str or None
         Slow-roll recording whose runout is subtracted from every window (None: none).
+    speed : float or None
+        Shaft speed of recordings without a keyphasor (``keyphasor`` ""), rad/s.
     """
 
     recordings: tuple[str, ...]
@@ -220,6 +222,7 @@ class IdentifyPlan:
     lambda_threshold: float = 1.0
     alarm_duration: float = 600.0
     slow_roll: str | None = None
+    speed: float | None = None
 
 
 @dataclass(frozen=True, eq=False)
