@@ -9,10 +9,11 @@ coefficient ``B_M = sqrt(lambda rho c)``::
 with ``w = X_Gamma w_Bt`` the shared transverse unit load (``w_Bt = F_t / b``, F_t at the
 reference circle, as ISO uses it), ``b_H = sqrt(8 w rho_rel / (pi E_r))`` the Hertz half-width
 for that load, v the flank speeds across the line of action. This is ISO's general form
-(its constant 2.52 in mixed units is K = 0.80); ISO's form for cylindrical gears with the
-thermo-elastic, geometry and angle factors (X_M = 50 for steel, X_G, X_alpha_beta) is the same
-expression with rounded constants (within 1.1 %, tests/gears/test_scuffing.py). For helical gears the
-factor sqrt(cos beta_b) of ISO's angle factor X_alpha_beta is applied.
+(its constant 2.52 in mixed units is K = 0.80, to 0.4 %). ISO's form for cylindrical gears with the
+thermo-elastic, geometry and angle factors (X_M = 50 for steel, X_G, X_alpha_beta in its full form)
+is Blok on the normal load w_Bt / cos(alpha_t) with K = 0.786, 2.6 % above this on 20 deg gears: which
+of the two ISO means is an open point (docs/theory.md Sect. 19.3, tests/gears/test_scuffing.py). For
+helical gears the factor sqrt(cos beta_b) of ISO's angle factor X_alpha_beta is applied.
 
 Mean friction coefficient (ISO's method, constant along the path)::
 
