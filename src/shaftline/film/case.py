@@ -453,6 +453,23 @@ def surface_roughness(section: SurfaceSection) -> SurfaceRoughness:
         )
 
 
+def checked_surface(section: SurfaceSection, clearance: float) -> SurfaceRoughness:
+    """:func:`surface_roughness` of a ``surface`` table, its composite roughness checked against
+    the radial clearance ``clearance`` (m): below half of it (errors placed under ``surface``)."""
+    with located("surface"):
+        surface = surface_roughness(section)
+    if surface.sigma >= 0.5 * clearance:
+        name = "bore_roughness" if surface.bore_rq >= surface.journal_rq else "journal_roughness"
+        raise InputError(
+            f"surface.{name}",
+            getattr(section, name),
+            "m",
+            f"a composite roughness (now {surface.sigma:.3g} m Rq) below half the radial clearance "
+            f"({0.5 * clearance:.3g} m)",
+        )
+    return surface
+
+
 class LinerSection(Section):
     """Thin elastic liner bonded to the bore: deforms under the film and asperity pressure by
     the column (Winkler) model, solved together with the film (docs/theory.md, "Elastic liner").
@@ -825,19 +842,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
         with located("film_profile"):
             profile = read_film_profile(context.path(section.film_profile.file), section.film_profile.length_unit)
 
-    surface = None
-    if section.surface is not None:
-        with located("surface"):
-            surface = surface_roughness(section.surface)
-        if surface.sigma >= 0.5 * clearance:
-            name = "bore_roughness" if surface.bore_rq >= surface.journal_rq else "journal_roughness"
-            raise InputError(
-                f"surface.{name}",
-                getattr(section.surface, name),
-                "m",
-                f"a composite roughness (now {surface.sigma:.3g} m Rq) below half the radial clearance "
-                f"({0.5 * clearance:.3g} m)",
-            )
+    surface = None if section.surface is None else checked_surface(section.surface, clearance)
 
     liner = None
     if section.liner is not None:

@@ -92,6 +92,10 @@ class Relaxation:
         self.size = size
         self.order = order
         self._colours = tuple(colours)
+        self._neighbours = tuple(
+            sp.csr_matrix((np.zeros(c.links.size), c.columns, c.indptr), shape=(c.stop - c.start, size))
+            for c in colours
+        )
 
     def sweep(
         self,
@@ -113,8 +117,10 @@ class Relaxation:
         b = rhs.ravel()[order]
         x = np.array(pressure, dtype=float).ravel()[order]
         parts = []
-        for c in self._colours:
-            neighbours = sp.csr_matrix((conductance[c.links], c.columns, c.indptr), shape=(c.stop - c.start, self.size))
+        for c, neighbours in zip(self._colours, self._neighbours, strict=True):
+            # The kept matrices' values refilled: building scipy matrices per call costs more
+            # than the sweeps' arithmetic on these grids.
+            neighbours.data[:] = conductance[c.links]
             parts.append((x[c.start : c.stop], neighbours, b[c.start : c.stop], step[c.start : c.stop]))
         keep = 1.0 - omega
         zero = x <= 0.0

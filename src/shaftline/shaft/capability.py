@@ -81,6 +81,9 @@ FILM_UNITS = {
     "line_load": "N/m",
     "stiffness": "rows F_y, F_z [N], M_y, M_z [N m]; columns y, z [m], tilt_y, tilt_z [rad]",
     "damping": "rows F_y, F_z [N], M_y, M_z [N m]; columns vy, vz [m/s], tilt rates [rad/s]",
+    "asperity_load_share": "share of the film force carried by asperity contact (rough surfaces; 0 smooth)",
+    "min_film_ratio": "h_min over the composite roughness (rough surfaces; null smooth)",
+    "max_liner_deformation": "m (elastic liner; 0 without)",
 }
 
 
@@ -112,6 +115,10 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                 "relative_slope": f.relative_slope,
                 "power_loss": f.state.power_loss,
                 "side_leakage": f.state.side_leakage,
+                # Mixed lubrication and the liner (issue 15): a water-lubricated, soft-lined stern tube.
+                "asperity_load_share": f.state.asperity_load_share,
+                "min_film_ratio": f.state.min_film_ratio if math.isfinite(f.state.min_film_ratio) else None,
+                "max_liner_deformation": f.state.max_liner_deformation,
                 "centre_line": {
                     "z": f.z.tolist(),
                     "centre_y": f.centre_y.tolist(),

@@ -54,8 +54,10 @@ from shaftline.film.case import (
     _CLEARANCE,
     EDGE_PRESSURE,
     BoreSegmentSection,
+    LinerSection,
     LubricantSection,
     SolverSection,
+    SurfaceSection,
     _rotation_alias,
 )
 from shaftline.film.geometry import BearingGeometry, BoreAnchor
@@ -368,6 +370,11 @@ class FilmSection(Section):
     """Pressure at which the film ruptures, above ambient."""
     solver: SolverSection = SolverSection()
     """Film grid and models."""
+    surface: SurfaceSection | None = None
+    """Rough journal and bore (mixed lubrication), as [bearing.surface]: the same fields and checks."""
+    liner: LinerSection | None = None
+    """Elastic liner of the bore (column model solved with the film), as [bearing.liner]: the same
+    fields and checks; a water-lubricated stern tube is aligned with its soft liner."""
     elements: Annotated[int, Field(ge=2, le=50)] = 10
     """Shaft elements across the bearing (at least; seed 004 uses 10)."""
 
@@ -923,7 +930,7 @@ def _film_support(
 ) -> tuple[FilmSupport, tuple[Lubricant, float | None]]:
     """The film of ``bearings[k]`` as a domain object (errors placed under its table), with its
     lubricant and film temperature (None for a viscosity given as such)."""
-    from shaftline.film.case import _bore, lubricant_properties, solver_options
+    from shaftline.film.case import _bore, checked_surface, liner_of, lubricant_properties, solver_options
     from shaftline.film.problem import BearingProblem
 
     bearing = section.bearings[k]
@@ -951,6 +958,12 @@ def _film_support(
         )
     with located(f"{where}.solver"):
         options = solver_options(film.solver)
+    with located(where):
+        surface = None if film.surface is None else checked_surface(film.surface, clearance)
+    liner = None
+    if film.liner is not None:
+        with located(f"{where}.liner"):
+            liner = liner_of(film.liner)
     with located(where, {"length": f"bearings[{k}].length", "diameter": "shaft.segments"}):
         geometry = BearingGeometry(
             length=bearing.length,
@@ -959,6 +972,8 @@ def _film_support(
             bore=_bore(film.bore, bearing.length, clearance),
             bore_anchor=film.bore_anchor,
             rotation=1 if film.rotation == "clockwise" else -1,
+            surface=surface,
+            liner=liner,
         )
     # a rename replaces the prefix too: the operating point's fields are the film table's own
     with located(where, {"operating": where, "options": f"{where}.solver"}):

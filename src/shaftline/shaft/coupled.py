@@ -468,7 +468,8 @@ class CoupledAlignment:
         shares = []
         for film, (cy, cz) in zip(self._films, self._centre_lines(s, condition), strict=True):
             c = film.support.problem.geometry.radial_clearance
-            floor = film.support.problem.options.min_film_floor
+            # The bearing's own floor: lower with rough surfaces (their asperities carry load).
+            floor = film.bearing.film_floor / c
             shares.append(film.bearing.min_film_of_line(cy, cz) / c - floor)
         return min(shares)
 
@@ -667,8 +668,7 @@ class CoupledAlignment:
         """Film bearings (indices into the films) whose film is within twice its floor."""
         grounded = []
         for k, (film, (cy, cz)) in enumerate(zip(self._films, self._centre_lines(s, condition), strict=True)):
-            c = film.support.problem.geometry.radial_clearance
-            floor = film.support.problem.options.min_film_floor * c
+            floor = film.bearing.film_floor
             if film.bearing.min_film_of_line(cy, cz) <= 2.0 * floor:
                 grounded.append(k)
         return grounded

@@ -1,0 +1,82 @@
+"""Work and time of one lined equilibrium (issue 15, soft liner): coupled LU factorisations, film
+solutions and Newton iterations per equilibrium, with the median time.
+
+Run ``PYTHONPATH=src .venv/bin/python benchmarks/bench_liner_work.py [--repeat N]`` in a tree;
+the counts do not depend on the machine, so running it on two trees (e.g. main before a change,
+a branch after) compares the work exactly where the shared machine makes the times noisy.
+
+NTUA stern tube (seed 004 Table 5-1, examples/ntua_stern_tube.toml), 100 x 60, rough
+turned-steel / white-metal surfaces, with seed 001's polymer liner and a white-metal liner: aligned
+at 1 rpm (mixed lubrication, the issue's <= 0.3 s case) and at the seed's 90 rpm with psi 0.3.
+The film solutions include those of a rigid start where the equilibrium makes one.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+from timing import median_time
+
+import shaftline.film.elastic as elastic
+import shaftline.film.reynolds as reynolds
+from shaftline.cases import load_case
+from shaftline.film import JournalBearing
+from shaftline.film.liner import Liner
+from shaftline.film.roughness import SurfaceRoughness, gaussian_integral_table
+
+ROOT = Path(__file__).resolve().parents[1]
+COUNT = {"lu": 0, "film": 0}
+
+
+def _counted() -> None:
+    """Count the coupled factorisations and the film solutions (wrappers, same results)."""
+    build = elastic.LinerSystem.build.__func__  # type: ignore[attr-defined]
+    solve = reynolds.ReynoldsSolver.solve
+
+    def counted_build(cls, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
+        COUNT["lu"] += 1
+        return build(cls, *args, **kwargs)
+
+    def counted_solve(self, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
+        COUNT["film"] += 1
+        return solve(self, *args, **kwargs)
+
+    elastic.LinerSystem.build = classmethod(counted_build)  # type: ignore[method-assign, assignment]
+    reynolds.ReynoldsSolver.solve = counted_solve  # type: ignore[method-assign]
+
+
+def main() -> None:
+    repeat = int(sys.argv[sys.argv.index("--repeat") + 1]) if "--repeat" in sys.argv else 7
+    gaussian_integral_table(2.5)  # built once per process: not an equilibrium's cost
+    gaussian_integral_table(2.0)
+    _counted()
+    case = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"].cases[0]
+    surface = SurfaceRoughness.preset("turned_steel_white_metal")
+    print(f"{'case':50s} {'median s':>9s} {'its':>4s} {'LU':>4s} {'film':>5s} {'h_min um':>9s} {'p_max MPa':>10s}")
+    for rpm, tilt in ((1.0, 0.0), (90.0, case.tilt_y)):
+        operating = replace(case.operating, speed=rpm * np.pi / 30)
+        for name in ("polymer_composite", "white_metal"):
+            geometry = replace(case.geometry, surface=surface, liner=Liner.preset(name))
+            bearing = JournalBearing(geometry, operating, case.options)
+
+            def solve(b: JournalBearing = bearing, t: float = tilt):  # noqa: ANN202 - benchmark helper
+                return b.equilibrium(case.load_y, case.load_z, tilt_y=t, tilt_z=case.tilt_z)
+
+            COUNT["lu"] = COUNT["film"] = 0
+            eq = solve()
+            lu, film = COUNT["lu"], COUNT["film"]
+            t, _ = median_time(solve, repeat)
+            st = eq.state
+            label = f"{rpm:g} rpm, tilt {tilt * 1e3:.3f} mrad, {name} liner"
+            print(
+                f"{label:50s} {t:9.3f} {eq.iterations:4d} {lu:4d} {film:5d} "
+                f"{st.min_film_thickness * 1e6:9.4f} {st.max_pressure / 1e6:10.5f}"
+                + ("" if eq.converged else "  (not converged)")
+            )
+
+
+if __name__ == "__main__":
+    main()

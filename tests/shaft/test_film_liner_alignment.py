@@ -1,0 +1,94 @@
+"""The coupled alignment with the film model of issue 15: `[alignment.bearings.film]` takes the
+`surface` and `liner` tables of `[bearing.surface]` / `[bearing.liner]`, with the same fields and
+checks, so a stern tube is aligned on its soft liner (and mixed-lubrication film).
+
+The line and its oil film are those of tests/shaft/test_film_supports_cli.py (seed 004's
+bearing in a 14 m line, coarse film grid). References: the standalone bearing's light-load trend
+(tests/film/test_liner.py: a soft liner lowers the pressure peak and h_min under the same load).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import invoke
+from tests.shaft.test_film_supports_cli import LINE, OWN_FILM
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def solve(tmp_path: Path, extra: str, name: str) -> tuple[int, dict, str]:
+    path = tmp_path / f"{name}.toml"
+    path.write_text(LINE.replace("FILM", OWN_FILM + extra).replace("MOMENT", "-409948 N*m"))
+    out = tmp_path / f"{name}.json"
+    result = invoke("align", str(path), "--json", str(out))
+    data = json.loads(out.read_text())["alignment"]["film_supports"][0] if out.exists() else {}
+    return result.exit_code, data, result.stderr
+
+
+def test_stern_tube_aligned_on_its_soft_liner(tmp_path: Path) -> None:
+    # Seed 004's stern tube at 90 rpm in oil, on a rigid bore and on a rubber liner: the coupled
+    # solution converges on both, and the liner acts as on the standalone bearing under light
+    # load (the deformation spreads the pressure: a lower peak, and a lower h_min at the ends).
+    code, rigid, _ = solve(tmp_path, "", "rigid")
+    assert code == 0 and rigid["converged"]
+    code, lined, _ = solve(tmp_path, '  liner = { preset = "rubber" }\n', "rubber")
+    assert code == 0 and lined["converged"]
+    (r,), (s,) = rigid["films"], lined["films"]
+    assert r["max_liner_deformation"] == 0.0 and s["max_liner_deformation"] > 10e-6
+    assert s["max_pressure"] < 0.9 * r["max_pressure"]
+    assert s["min_film_thickness"] < r["min_film_thickness"]
+    # Both carry the bearing's share of the same line: the film forces agree within 1 %.
+    assert s["force_y"] == pytest.approx(r["force_y"], rel=0.01)
+    # Smooth surfaces: no asperity load, no film ratio.
+    assert s["asperity_load_share"] == 0.0 and s["min_film_ratio"] is None
+
+
+def test_rough_film_in_the_alignment_reports_its_asperities(tmp_path: Path) -> None:
+    # A rough white-metal pair at 90 rpm: full film (lambda far above 3), so the same alignment
+    # as the smooth one within 1e-6 of the force, and the film ratio is reported.
+    code, smooth, _ = solve(tmp_path, "", "smooth")
+    code_rough, rough, _ = solve(tmp_path, '  surface = { preset = "turned_steel_white_metal" }\n', "rough")
+    assert code == code_rough == 0
+    (a,), (b,) = smooth["films"], rough["films"]
+    assert b["min_film_ratio"] > 3.0 and b["asperity_load_share"] < 1e-9
+    assert b["force_y"] == pytest.approx(a["force_y"], rel=1e-6)
+
+
+@pytest.mark.parametrize(
+    ("table", "field"),
+    [
+        ('liner = { thickness = "0 mm", modulus = "2 GPa", poisson = 0.3 }', "liner.thickness"),
+        ('liner = { thickness = "100 mm", modulus = "2 GPa", poisson = 0.3 }', "liner.thickness"),
+        ('liner = { preset = "rubber", modulus = "0 MPa" }', "liner.modulus"),
+        ('liner = { preset = "rubber", poisson = 0.5 }', "liner.poisson"),
+        ('liner = { preset = "rubber", poisson = 0 }', "liner.poisson"),
+        ('liner = { thickness = "10 mm", modulus = "2 GPa" }', "liner.poisson"),
+        ('surface = { preset = "steel_polymer", bore_roughness = "400 um" }', "surface.bore_roughness"),
+        ('surface = { journal_roughness = "0.8 um" }', "surface.bore_roughness"),
+    ],
+)
+def test_bad_liner_or_surface_in_the_alignment_is_one_line(tmp_path: Path, table: str, field: str) -> None:
+    code, data, stderr = solve(tmp_path, f"  {table}\n", "bad")
+    assert code == 2 and not data
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and lines[0].startswith(f"error: alignment.bearings[0].film.{field} = "), lines
+
+
+@pytest.mark.slow
+def test_seed001_rig_alignment_example(tmp_path: Path) -> None:
+    """``shaftline align examples/seed001_rig_alignment_liner.toml``: the rig's stern bearing on its
+    water film and polymer liner at 175 rpm. Its film nearly carries the bearing's share (the
+    liner deformed by about 10 um), but its thinnest film, at the ends, sits at the floor: the
+    bearing is reported in contact (exit 3), the column model's end limit (docs/theory.md)."""
+    out = tmp_path / "r.json"
+    result = invoke("align", str(EXAMPLES / "seed001_rig_alignment_liner.toml"), "--json", str(out))
+    assert result.exit_code == 3, result.stderr
+    (film,) = json.loads(out.read_text())["alignment"]["film_supports"][0]["films"]
+    assert film["contact"]
+    assert 5e-6 < film["max_liner_deformation"] < 20e-6
+    assert film["min_film_ratio"] < 0.1  # boundary lubrication at the ends
+    assert film["asperity_load_share"] < 0.01  # the film, not the asperities, carries the load
