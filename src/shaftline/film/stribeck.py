@@ -45,8 +45,8 @@ EQUILIBRIUM_SECONDS_PER_NODE = 2e-5
 LINER_FACTOR = 5.0
 #: A curve estimated below this many seconds serially runs serially by default: the pool's
 #: start-up (1-3 s: the workers import the solver and build their tables) and the cold start
-#: of every chunk pay off only on long curves. Measured on 30 speeds: pool of 2 workers 8.5 s,
-#: serial 4.3 s (seed 001's rig); 9.2 s against 3.3 s (NTUA, rough), docs/validation.md.
+#: of every chunk pay off only on long curves. Measured on 30 speeds (docs/validation.md): pool
+#: of 2 workers 7.1 s, serial 4.1 s (seed 001's rig); 5.9 s against 2.8 s (NTUA, rough).
 POOL_MIN_SECONDS = 20.0
 
 
