@@ -568,7 +568,7 @@ class ReynoldsSolver:
             self._coarse_grid = CoarseGrid.under(self, halved)
         return self._coarse_grid
 
-    def _nested_start(self, film: np.ndarray, stencil: Stencil) -> np.ndarray | None:
+    def _nested_start(self, film: np.ndarray, stencil: Stencil, guess: np.ndarray | None = None) -> np.ndarray | None:
         """Cavitated set predicted by solving the same problem on the coarser grid.
 
         The coarse indicator ``P - w / diag(A)`` (pressure where the film is full,
@@ -586,7 +586,10 @@ class ReynoldsSolver:
         film_c = coarse.restrict(film)
         solver.flow = self.flow
         stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z, rough=self.flow)
-        solution = solver._solve_reynolds_lcp(stencil_c, None, film_c, exact=False)
+        # A Newton trial's pressure guess, restricted and swept on the coarse grid, starts the
+        # coarse set there: two coarse solves instead of the coarser grids' cold chain.
+        start_c = None if guess is None else solver.predicted_set(stencil_c, coarse.restrict(guess))
+        solution = solver._solve_reynolds_lcp(stencil_c, start_c, film_c, exact=False)
         self.coarse_iterations = solution.iterations
         diag = stencil_diagonal(stencil_c)
         multiplier = apply_operator(stencil_c.c_theta, stencil_c.c_z, solution.pressure) - stencil_c.rhs
@@ -602,7 +605,7 @@ class ReynoldsSolver:
         the NTUA case the first Newton trial's guess is 5 % negative and its swept set 31
         nodes off, four factorisations; from the coarse grids 4 nodes off, two)."""
         if np.count_nonzero((pressure < 0.0) & ~self.fixed) > NESTED_SWING * pressure.size:
-            nested = self._nested_start(film, stencil)
+            nested = self._nested_start(film, stencil, pressure)
             if nested is not None:
                 return nested
         return self.predicted_set(stencil, pressure)
