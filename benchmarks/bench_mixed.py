@@ -14,8 +14,15 @@ measure).
    the ratio to the rigid rough one.
 2. The same smooth equilibrium as bench_bearing.py, to show the smooth path's time unchanged
    (its stencil is the smooth one: ``rough`` None takes the old code).
-3. Seed 001's rig (examples/seed001_water_rig.toml, 41 x 120): a 30-speed Stribeck curve from
-   3.5 to 350 rpm, serially (workers = 1) and on the process pool. Target <= 5 s.
+3. 30-speed Stribeck curves, warm-started: seed 001's rig (examples/seed001_water_rig.toml,
+   41 x 120, 3.5 to 350 rpm) and the NTUA bearing with the turned-steel / white-metal roughness
+   (100 x 60, the case's default 9 to 900 rpm), each by default (which runs serially below the
+   work estimate of ``stribeck.estimated_seconds``), explicitly serially (workers = 1) and on
+   the process pool (backend "process"), alternated run by run; ratio to the default.
+   Target <= 5 s.
+4. Turbulence: seed 001's rig at 350 rpm (water, Re_h up to 7200), the equilibrium laminar and
+   with the Ng-Pan coefficients (``[solver] turbulence = "on"``), smooth and rough; ratio to the
+   laminar one.
 """
 
 from __future__ import annotations
@@ -84,16 +91,54 @@ def main() -> None:
                 f"  (max deformation {st.max_liner_deformation * 1e6:.2f} um)"
                 + ("" if eq.converged else "  (not converged)")
             )
-    rig = load_case(ROOT / "examples" / "seed001_water_rig.toml").studies["bearing"]
-    speeds = np.geomspace(3.5, 350.0, 30) * np.pi / 30.0
-    print(f"\nseed 001 rig, Stribeck curve of {speeds.size} speeds (3.5-350 rpm), 41 x 120")
-    for workers in (1, None):
-        t, curve = median_time(lambda w=workers: stribeck_curve(rig.cases[0], speeds, workers=w), max(1, repeat // 3))
-        transition = curve.transition_speed * 30.0 / np.pi if curve.transition_speed else float("nan")
+    rig = load_case(ROOT / "examples" / "seed001_water_rig.toml").studies["bearing"].cases[0]
+    fast = replace(rig.operating, speed=350 * np.pi / 30)
+    print("\nseed 001 rig at 350 rpm, 41 x 120: laminar against turbulent (Ng-Pan)")
+    for label, geometry in (("smooth", replace(rig.geometry, surface=None)), ("rough", rig.geometry)):
+        pair = {mode: JournalBearing(geometry, fast, replace(rig.options, turbulence=mode)) for mode in ("off", "on")}
+        times: dict[str, list[float]] = {"off": [], "on": []}
+        solved = {}
+        for _ in range(repeat):  # alternated: both see the same load of the machine
+            for mode, bearing in pair.items():
+                t, solved[mode] = median_time(lambda b=bearing: b.equilibrium(rig.load_y, rig.load_z), 1)
+                times[mode].append(t)
+        t_off, t_on = float(np.median(times["off"])), float(np.median(times["on"]))
+        eq_off, eq_on = solved["off"], solved["on"]
         print(
-            f"workers {workers or 'pool'}: median {t:.2f} s; transition speed {transition:.1f} rpm; "
-            f"{int(curve.contact.sum())} speeds in contact"
+            f"{label}: laminar {t_off:.3f} s (h_min {eq_off.state.min_film_thickness * 1e6:.2f} um), turbulent "
+            f"{t_on:.3f} s (h_min {eq_on.state.min_film_thickness * 1e6:.2f} um, Re_h max "
+            f"{eq_on.state.max_reynolds_number:.0f}); ratio {t_on / t_off:.2f}"
         )
+    ntua = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"]
+    curves = (
+        ("seed 001 rig, 3.5-350 rpm", rig, np.geomspace(3.5, 350.0, 30) * np.pi / 30.0),
+        (
+            "NTUA, white metal rough, 9-900 rpm",
+            replace(ntua.cases[0], geometry=replace(ntua.cases[0].geometry, surface=surface)),
+            np.asarray(ntua.stribeck_speeds),
+        ),
+    )
+    ways = (("default", {}), ("serial", {"workers": 1}), ("pool", {"backend": "process"}))
+    runs = max(3, repeat // 2)
+    for label, base, speeds in curves:
+        grid = f"{base.options.axial_nodes} x {base.options.circumferential_nodes}"
+        print(f"\nStribeck curve, {label}, {speeds.size} speeds, {grid}")
+        times: dict[str, list[float]] = {name: [] for name, _ in ways}
+        results = {}
+        for _ in range(runs):  # alternated way by way: each sees the same load of the machine
+            for name, options in ways:
+                t, results[name] = median_time(lambda o=options, c=base, v=speeds: stribeck_curve(c, v, **o), 1)
+                times[name].append(t)
+        reference = float(np.median(times["default"]))
+        for name, _ in ways:
+            curve = results[name]
+            transition = curve.transition_speed * 30.0 / np.pi if curve.transition_speed else float("nan")
+            median = float(np.median(times[name]))
+            print(
+                f"{name:8s} median {median:6.2f} s (runs {', '.join(f'{t:.2f}' for t in times[name])}), "
+                f"ratio to default {median / reference:5.2f}; transition {transition:.1f} rpm; "
+                f"{int(curve.contact.sum())} speeds in contact"
+            )
 
 
 if __name__ == "__main__":

@@ -31,12 +31,14 @@ from __future__ import annotations
 
 import argparse
 import datetime as dt
+import json
 import math
 import resource
 import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -54,13 +56,15 @@ from shaftline.monitor.identification import (
 from shaftline.monitor.probes import Probe, ProbeLayout, Section, seed001_layout
 
 SAMPLES = 1_000_000
+ROOT = Path(__file__).resolve().parents[1]
 
 
-def layout_32() -> ProbeLayout:
-    """8 sections of 4 probes (45, 135, 225, 315 deg) along a 1.2 m bearing: 32 channels."""
+def layout_32(prefix: str = "") -> ProbeLayout:
+    """8 sections of 4 probes (45, 135, 225, 315 deg) along a 1.2 m bearing: 32 channels, named
+    ``prefix`` + S<section>_<probe>."""
     angles = [math.radians(a) for a in (45.0, 135.0, 225.0, 315.0)]
     sections = tuple(
-        Section(f"S{i}", 0.075 + 0.15 * i, tuple(Probe(f"S{i}_{j}", a, 1e-3) for j, a in enumerate(angles)))
+        Section(f"S{i}", 0.075 + 0.15 * i, tuple(Probe(f"{prefix}S{i}_{j}", a, 1e-3) for j, a in enumerate(angles)))
         for i in range(8)
     )
     return ProbeLayout(sections, 1.2, 0.16205, 0.55e-3)
@@ -97,53 +101,120 @@ CHUNK_SECONDS = 10
 WINDOW_SECONDS = 2.0
 
 
-def write_recording(path: Path, minutes: float, seed: int = 1) -> int:
-    """The synthetic 32-channel recording, written chunk by chunk; returns its samples."""
-    import h5py
-
+def _chunks(minutes: float, seed: int = 1) -> tuple[int, Iterator[tuple[int, list[np.ndarray], np.ndarray]]]:
+    """Samples of the synthetic 32-channel recording and its 10 s chunks: (first sample, one
+    float32 array per probe, keyphasor)."""
     layout = layout_32()
     total = int(round(minutes * 60 * RATE))
     chunk = int(CHUNK_SECONDS * RATE)
     rng = np.random.default_rng(seed)
-    with h5py.File(path, "w") as file:
-        file.attrs["sample_rate"] = RATE
-        datasets = [
-            file.create_dataset(name, shape=(total,), dtype="float32", chunks=(65_536,))
-            for name in (*layout.channels, "keyphasor")
-        ]
+
+    def chunks() -> Iterator[tuple[int, list[np.ndarray], np.ndarray]]:
         for first in range(0, total, chunk):
             stop = min(first + chunk, total)
             t = np.arange(first, stop) / RATE
             phase = SPEED * t + 0.5
             ey = -0.5e-3 + 5e-6 * np.cos(phase)
             ez = -0.1e-3 + 5e-6 * np.sin(phase)
-            columns = 0
+            probes = []
             for section in layout.sections:
                 gaps = film_between_circles(ey, ez, section.angles, layout) + section.mounting_distances
                 gaps += rng.normal(0.0, 0.05e-6, gaps.shape)
-                for j in range(gaps.shape[1]):  # a loop over channels: the file has one dataset each
-                    datasets[columns + j][first:stop] = gaps[:, j]  # sensitivity 1 V/m: the output is the gap
-                columns += gaps.shape[1]
-            datasets[-1][first:stop] = np.where((phase % (2 * math.pi)) < 0.2, 5.0, 0.0)
+                # sensitivity 1 V/m: the output is the gap
+                probes += [gaps[:, j].astype(np.float32) for j in range(gaps.shape[1])]
+            keyphasor = np.where((phase % (2 * math.pi)) < 0.2, 5.0, 0.0).astype(np.float32)
+            yield first, probes, keyphasor
+
+    return total, chunks()
+
+
+#: Group of the channels in the TDMS file: its channels are named "probes/<name>".
+TDMS_GROUP = "probes"
+
+
+def write_recording(path: Path, minutes: float, seed: int = 1) -> int:
+    """The synthetic 32-channel recording, written chunk by chunk as HDF5 (``.h5``: one chunked
+    float32 dataset per channel, the sample rate as a file attribute) or TDMS (``.tdms``, npTDMS:
+    one segment per chunk holding every channel, float32, the sample rate as each channel's
+    ``wf_increment``); returns its samples."""
+    names = [*layout_32().channels, "keyphasor"]
+    total, chunks = _chunks(minutes, seed)
+    if path.suffix == ".tdms":
+        from nptdms import ChannelObject, TdmsWriter
+
+        properties = {"wf_increment": 1.0 / RATE, "wf_start_offset": 0.0}
+        with TdmsWriter(str(path)) as writer:
+            for _, probes, keyphasor in chunks:
+                writer.write_segment(
+                    [
+                        ChannelObject(TDMS_GROUP, name, data, properties=properties)
+                        for name, data in zip(names, [*probes, keyphasor], strict=True)
+                    ]
+                )
+        return total
+    import h5py
+
+    with h5py.File(path, "w") as file:
+        file.attrs["sample_rate"] = RATE
+        datasets = [file.create_dataset(name, shape=(total,), dtype="float32", chunks=(65_536,)) for name in names]
+        for first, probes, keyphasor in chunks:
+            # a loop over channels: the file has one dataset each
+            for dataset, data in zip(datasets, [*probes, keyphasor], strict=True):
+                dataset[first : first + data.size] = data
     return total
 
 
+def case_text(prefix: str, model_shape: bool) -> str:
+    """A case file of the 32-channel layout for ``monitor identify``; channel names with ``prefix``
+    (a TDMS file's group)."""
+    layout = layout_32()
+    lines = [
+        "[case]",
+        'name = "bench_monitor: 32 channels"',
+        "[monitor]",
+        f'length = "{layout.length} m"',
+        f'diameter = "{2 * layout.radius} m"',
+        f'radial_clearance = "{layout.radial_clearance} m"',
+    ]
+    if model_shape:  # the seed rig's shaft model (its bearing is as long): differential evolution per window
+        lines += [f'shaft_model = "{ROOT / "examples" / "monitor_rig_shaft.toml"}"', 'shaft_bearing = "stern"']
+    for section in layout.sections:
+        lines += ["[[monitor.sections]]", f'name = "{section.name}"', f'position = "{section.position} m"']
+        for probe in section.probes:
+            lines += [
+                "[[monitor.sections.probes]]",
+                f'name = "{prefix}{probe.name}"',
+                f'angle = "{math.degrees(probe.angle):g} deg"',
+                f'mounting_distance = "{probe.mounting_distance} m"',
+                'sensitivity = "1 V/m"',
+            ]
+    lines += [
+        "[monitor.identify]",
+        f'keyphasor = "{prefix}keyphasor"',
+        f'window = "{WINDOW_SECONDS} s"',
+        "start = 2026-11-02T00:00:00Z",
+    ]
+    return "\n".join(lines) + "\n"
+
+
 def process(path: Path, model_shape: bool = False) -> None:
-    """What ``monitor identify`` does to one recording; prints wall time, windows and peak RSS."""
+    """What ``monitor identify`` does to one recording, through its functions (``--via function``);
+    prints wall time, windows and peak RSS."""
     from shaftline.monitor.forward import RigCase, rig_shape_for
     from shaftline.monitor.processing import process_recording
     from shaftline.monitor.trends import TrendStore
 
-    layout = layout_32()
+    layout = layout_32(f"{TDMS_GROUP}/" if path.suffix == ".tdms" else "")
     # the seed rig's shaft-model shape (its bearing is as long): a differential-evolution fit per window
     shape = rig_shape_for(RigCase()) if model_shape else None
+    keyphasor = f"{TDMS_GROUP}/keyphasor" if path.suffix == ".tdms" else "keyphasor"
     start = time.perf_counter()
     with TrendStore(path.with_suffix(".sqlite")) as store:
         done = process_recording(
             layout,
             path,
             store,
-            "keyphasor",
+            keyphasor,
             WINDOW_SECONDS,
             started_at=dt.datetime(2026, 11, 2, tzinfo=dt.UTC),
             shape=shape,
@@ -153,9 +224,27 @@ def process(path: Path, model_shape: bool = False) -> None:
     print(f"RESULT {wall:.3f} {done.windows} {done.written} {peak}")
 
 
-def end_to_end(minutes: float, model_shape: bool = False) -> None:
+def run_verb(path: Path, model_shape: bool) -> tuple[float, int, int, int]:
+    """``shaftline monitor identify CASE RECORDING --db ... --json ...`` in a fresh process (the
+    whole command: case, input fingerprints, hash, checks, windows, store, JSON): wall time, windows,
+    windows stored and the child's peak resident memory in bytes."""
+    prefix = f"{TDMS_GROUP}/" if path.suffix == ".tdms" else ""
+    case = path.with_name("case.toml")
+    case.write_text(case_text(prefix, model_shape))
+    result = path.with_name("result.json")
+    command = [sys.executable, "-m", "shaftline.cli", "monitor", "identify", str(case), str(path), "--db",
+               str(path.with_suffix(".sqlite")), "--json", str(result)]  # fmt: skip
+    start = time.perf_counter()
+    subprocess.run(command, capture_output=True, text=True, check=True)
+    wall = time.perf_counter() - start
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024  # the largest child so far
+    stored = json.loads(result.read_text())["monitor"]["identify"]["recordings"][0]
+    return wall, int(stored["windows"]), int(stored["written"]), int(peak)
+
+
+def end_to_end(minutes: float, model_shape: bool = False, kind: str = "hdf5", via: str = "verb") -> None:
     with tempfile.TemporaryDirectory(prefix="bench-monitor-") as folder:
-        path = Path(folder) / "recording.h5"
+        path = Path(folder) / ("recording.tdms" if kind == "tdms" else "recording.h5")
         start = time.perf_counter()
         samples = write_recording(path, minutes)
         written = time.perf_counter() - start
@@ -163,24 +252,29 @@ def end_to_end(minutes: float, model_shape: bool = False) -> None:
         channels = len(layout_32().channels)
         print(
             f"recording: {minutes:g} min, {channels} channels + keyphasor at {RATE:g} Hz = "
-            f"{samples * channels / 1e9:.3f} G probe samples, {size / 2**30:.2f} GiB HDF5 float32 "
+            f"{samples * channels / 1e9:.3f} G probe samples, {size / 2**30:.2f} GiB {kind.upper()} float32 "
             f"(written in {written:.0f} s)"
         )
-        output = subprocess.run(
-            [sys.executable, __file__, "--process", str(path), *(["--model-shape"] if model_shape else [])],
-            capture_output=True,
-            text=True,
-            check=True,
-        ).stdout
-        line = next(row for row in output.splitlines() if row.startswith("RESULT"))
-        wall, windows, stored, peak = line.split()[1:]
-        wall_s, recorded = float(wall), samples / RATE
+        if via == "verb":
+            wall_s, windows, stored, peak = run_verb(path, model_shape)
+        else:
+            output = subprocess.run(
+                [sys.executable, __file__, "--process", str(path), *(["--model-shape"] if model_shape else [])],
+                capture_output=True,
+                text=True,
+                check=True,
+            ).stdout
+            line = next(row for row in output.splitlines() if row.startswith("RESULT"))
+            wall, window_count, stored_count, peak_text = line.split()[1:]
+            wall_s, windows, stored, peak = float(wall), int(window_count), int(stored_count), int(peak_text)
+        recorded = samples / RATE
         line_kind = "shaft-model shape by differential evolution" if model_shape else "least-squares"
+        how = "`shaftline monitor identify`" if via == "verb" else "process_recording"
         print(
-            f"end to end ({line_kind} centre line; hash, read, identify, store {stored}/{windows} windows of "
-            f"{WINDOW_SECONDS:g} s): "
-            f"{wall_s:.1f} s for {recorded:.0f} s recorded, {recorded / wall_s:.1f} x real time; "
-            f"peak resident memory {int(peak) / 2**20:.0f} MiB"
+            f"end to end, {kind.upper()}, {how} ({line_kind} centre line; hash, read, identify, store "
+            f"{stored}/{windows} windows of {WINDOW_SECONDS:g} s): "
+            f"{wall_s:.1f} s for {recorded:.0f} s recorded, {recorded / wall_s:.1f} x real time, "
+            f"{samples * channels / wall_s / 1e6:.2f} M probe samples/s; peak resident memory {peak / 2**20:.0f} MiB"
         )
         if minutes < 60:
             hour = wall_s * 60 / minutes
@@ -214,6 +308,15 @@ def main() -> None:
     parser.add_argument(
         "--model-shape", action="store_true", help="centre line from the shaft model's shape (as the example case)"
     )
+    parser.add_argument(
+        "--format", choices=("hdf5", "tdms", "both"), default="hdf5", help="file format of the end-to-end recording"
+    )
+    parser.add_argument(
+        "--via",
+        choices=("verb", "function"),
+        default="verb",
+        help="the whole `monitor identify` command (default) or process_recording alone (as before)",
+    )
     parser.add_argument("--process", type=Path, default=None, help=argparse.SUPPRESS)
     arguments = parser.parse_args()
     if arguments.process is not None:
@@ -222,7 +325,8 @@ def main() -> None:
     if arguments.only in (None, "per-sample"):
         per_sample()
     if arguments.only in (None, "end-to-end"):
-        end_to_end(arguments.minutes, arguments.model_shape)
+        for kind in ("hdf5", "tdms") if arguments.format == "both" else (arguments.format,):
+            end_to_end(arguments.minutes, arguments.model_shape, kind, arguments.via)
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import copy
 
+import numpy as np
 import pytest
 
 from shaftline.cases import parse_case
@@ -284,3 +285,27 @@ def test_booleans_are_not_numbers():
     with pytest.raises(InputError) as error:
         parse_case(example, only=["cpp"])
     assert error.value.field == "cpp.loads.harmonics[0].amplitude"
+
+
+def test_input_fingerprints_are_read_in_blocks(tmp_path):
+    """The report's SHA-256 of each input file equals hashlib's of its bytes, and fingerprinting a
+    64 MiB input (a recording ``monitor identify`` names is an input) holds at most a few blocks of
+    it in memory: read whole, an hour's recording of 4.4 GiB would take that much memory."""
+    import hashlib
+    import tracemalloc
+
+    from shaftline.cases.loader import FINGERPRINT_BLOCK, _fingerprints
+
+    path = tmp_path / "recording.bin"
+    data = np.random.default_rng(1).bytes(64 << 20)
+    path.write_bytes(data)
+    expected = hashlib.sha256(data).hexdigest()
+    del data
+    tracemalloc.start()
+    try:
+        (found,) = _fingerprints([path, tmp_path / "missing.csv"])
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert found == (str(path), expected, 64 << 20)
+    assert peak < 3 * FINGERPRINT_BLOCK, peak

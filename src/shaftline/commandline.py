@@ -179,7 +179,7 @@ def run_cases(
     quiet = json_path == "-"
     with interruptible(), input_errors():
         case = read_and_build(case_file, only, overrides)
-        check_outputs(out, json_path, case.inputs)
+        check_outputs(out, json_path, [*case.inputs, *case.kept])
         # before solving: a long run's reader sees at once what was left out
         print_blocks(error_console if quiet else console, [Paragraph(f"warning: {w}", "warn") for w in case.warnings])
         with ProgressDisplay(error_console) as show:
@@ -236,7 +236,7 @@ def compare_cases(
     results: list[tuple[str, Any]] = []
     with interruptible(), input_errors():
         cases = [read_and_build(path, [key]) for path in case_files]
-        check_outputs(out, json_path, [source for case in cases for source in case.inputs])
+        check_outputs(out, json_path, [source for case in cases for source in (*case.inputs, *case.kept)])
         with error_console.status("solving") as status:
             for path, case in zip(case_files, cases, strict=True):
                 status.update(f"solving {path.name}")

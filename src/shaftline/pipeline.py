@@ -38,6 +38,9 @@ class Case:
     inputs : tuple of Path
         Every file the case was read from: the case file and the data files it names (no
         output may be one of them).
+    kept : tuple of Path
+        Files the run writes in place and keeps (:attr:`~shaftline.registry.BuildContext.kept`,
+        a trend database): no output may be one of them or a result folder hold one.
     tables : mapping
         The case's tables as validated, in SI with every default filled in (the record of
         what was solved).
@@ -58,6 +61,7 @@ class Case:
     studies: Mapping[str, Any] = field(default_factory=dict)
     source: Path | None = None
     inputs: tuple[Path, ...] = ()
+    kept: tuple[Path, ...] = ()
     tables: Mapping[str, Any] = field(default_factory=dict)
     fingerprints: tuple[tuple[str, str, int], ...] = ()
     unusual: tuple[str, ...] = ()

@@ -132,6 +132,10 @@ class BuildContext:
         What a build left out of, or changed from, what the file asked for by default, that the
         reader must not miss (e.g. default scenarios a lubricant cannot take): one sentence each,
         shown before solving and at the top of the report and kept in the JSON.
+    kept : list of Path
+        Files the run reads and writes in place and that outlive it (a trend database): like
+        the inputs, no output of the run may replace one or sit in a result folder holding one;
+        unlike them, they are not fingerprinted (they change with every run and may be large).
     """
 
     case: CaseInfo
@@ -139,6 +143,7 @@ class BuildContext:
     inputs: list[Path] = field(default_factory=list)
     studies: dict[str, Any] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    kept: list[Path] = field(default_factory=list)
 
     def path(self, name: str) -> Path:
         """A data file named in the case, relative to the case file unless absolute; the

@@ -107,3 +107,18 @@ def test_boundary_dominated_contact_is_a_design_finding(tmp_path):
     assert any("boundary-dominated" in f["text"] and f["criterion"] for f in document["findings"])
     strict = invoke("contact", "ehl", str(case), "--strict", "--json", "-")
     assert strict.exit_code == 3
+
+
+def test_thermal_correction_clipped_to_zero_is_not_acceptable(tmp_path):
+    # issue 14 (g): the ester at 10 degC gives eta0 p_H u of about 7 Pa s GPa m/s, beyond Eq. 6's fit
+    # range, where its c is negative; extrapolate clips it to 0 and the friction comes out 0. A finding
+    # that makes the run not acceptable (exit 3 without --strict), first in the output and in the JSON.
+    text = EXAMPLE.read_text().replace('temperature = "90 degC"', 'temperature = "10 degC"\nextrapolate = true')
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    result = invoke("contact", "ehl", str(case), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 3, result.stdout
+    assert result.stdout.lstrip().startswith("NOT ACCEPTABLE") and "clipped to c = 0" in result.stdout
+    document = json.loads((tmp_path / "r.json").read_text())
+    assert document["contact"]["operating"]["friction"] == 0.0
+    assert any("clipped to c = 0" in f["text"] and not f["criterion"] for f in document["findings"])

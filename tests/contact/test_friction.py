@@ -31,10 +31,12 @@ def test_mixed_friction_is_continuous_at_full_film():
 
 
 def test_full_film_friction_limits():
-    # Eq. 5: Newtonian 3 eta S u / (2 h p_H) at low shear; 3 tau_L / (2 p_H) = tau_L / p_m at high.
-    f_low = friction.full_film_friction(5e7, 0.01, 10.0, 0.01, 1e-6, 1e9)
-    assert float(f_low) == pytest.approx(1.5 * 0.01 * 0.01 * 10.0 / (1e-6 * 1e9), rel=1e-3)
-    f_high = friction.full_film_friction(5e7, 1e4, 10.0, 0.5, 1e-6, 1e9)
+    # Eq. 3 and 5: Newtonian eta S u / (h p_m) at low shear; tau_L / p_m at high (p_m = 2/3 GPa here,
+    # the seed's elliptical contact at p_H = 1 GPa).
+    p_m = 2e9 / 3
+    f_low = friction.full_film_friction(5e7, 0.01, 10.0, 0.01, 1e-6, p_m)
+    assert float(f_low) == pytest.approx(0.01 * 0.01 * 10.0 / (1e-6 * p_m), rel=1e-3)
+    f_high = friction.full_film_friction(5e7, 1e4, 10.0, 0.5, 1e-6, p_m)
     assert float(f_high) == pytest.approx(1.5 * 5e7 / 1e9, rel=1e-12)
 
 
@@ -74,6 +76,7 @@ def test_seed_friction_regimes():
         slide_roll=0.3,
         central_film=4e-7,
         peak_pressure=1e9,
+        mean_pressure=np.pi / 4 * 1e9,
     )
     dry = friction.seed_friction(film_ratio=0.0, **kwargs)
     assert float(dry.coefficient) == pytest.approx(0.1 * float(dry.thermal))

@@ -55,3 +55,23 @@ def test_rolling_speed_must_be_positive():
     model = ContactModel(contact_lubricant("iso vg 100"))
     with pytest.raises(InputError, match="rolling_speed"):
         evaluate(model, SURFACES, 3e5, 1.0, -1.0, 60.0, 0.012)
+
+
+@pytest.mark.parametrize("geometry", ["line", "point"])
+def test_full_film_friction_divides_by_the_contacts_own_mean_pressure(geometry):
+    # Seed 002 Eq. 3 defines f_c = tau / p_m and estimates p_m = 2 p_H/3 "for elliptical contacts such
+    # as crowned gear teeth"; a line contact's mean Hertz pressure is pi p_H/4 (Johnson Eq. 4.43-4.45).
+    # f_c must be the Bair-Winer stress (Eq. 4, eta and tau_L at p_m) over the p_m of the geometry
+    # evaluated: pi/4 p_H (line), 2/3 p_H (point), to round-off.
+    lub = contact_lubricant("mil-prf-23699")
+    model = ContactModel(lub, geometry, extrapolate=True)
+    kwargs = {"radius_y": 0.1} if geometry == "point" else {}
+    load = 3e5 if geometry == "line" else 500.0
+    state = evaluate(model, SURFACES, load, 5.0, 45.0, 90.0, 0.012, **kwargs)
+    p_m = float(state.mean_pressure)
+    assert p_m / float(state.peak_pressure) == pytest.approx(np.pi / 4 if geometry == "line" else 2 / 3, rel=1e-12)
+    tau_l = float(lub.limiting_shear_stress(p_m))
+    eta = float(lub.viscosity_at(p_m, 90.0, "roelands"))
+    rate = abs(float(state.sliding_speed)) / float(state.central_film)
+    expected = tau_l * (1 - np.exp(-eta * rate / tau_l)) / p_m
+    assert float(state.full_film_friction) == pytest.approx(expected, rel=1e-12)

@@ -72,3 +72,18 @@ def test_validity_ranges_error_or_warn():
         rheology.contact_lubricant("SAE 90")
     with pytest.raises(InputError, match="pressure_viscosity_model"):
         oil.viscosity_at(1e8, 60.0, "eyring")
+
+
+@pytest.mark.parametrize(("name", "tolerance"), [("iso vg 100", 0.03), ("fva 3", 0.05)])
+def test_mineral_alpha_from_the_published_oil_of_the_same_viscosity(name, tolerance):
+    # Issue 14 (e): alpha of the ISO VG 100 class is taken from Stachowiak & Batchelor, Engineering
+    # Tribology, Table 2.3 (adapted there from Jones et al.), the 'heavy machine oil' with 153, 34 and
+    # 9.1 mPa s at 30, 60, 100 degC and alpha 23.7, 20.5, 15.8 GPa^-1. The choice is justified only if
+    # the oil here has that viscosity: ISO VG 100's ASTM D341 line gives 153.5, 34.1, 9.3 mPa s (within
+    # 3 %), FVA 3's 146.6, 32.6, 9.0 (5 %) - the tolerances, measured, that a wrong pick would break
+    # (the table's other heavy machine oils miss by 19-27 % at one of the temperatures or more). alpha
+    # must be the table's at its temperatures.
+    lubricant = rheology.contact_lubricant(name)
+    for temperature, viscosity, alpha in ((30.0, 0.153, 2.37e-8), (60.0, 0.034, 2.05e-8), (100.0, 0.0091, 1.58e-8)):
+        assert float(lubricant.dynamic_viscosity(temperature)) == pytest.approx(viscosity, rel=tolerance)
+        assert float(lubricant.alpha(temperature)) == pytest.approx(alpha, rel=1e-12)

@@ -211,3 +211,33 @@ def test_stribeck_curve_is_the_same_on_a_pool_and_a_rough_bearing_pickles() -> N
     a = bearing.equilibrium(load_y=-LOAD).state
     b = copy.equilibrium(load_y=-LOAD).state
     assert a.asperity_load == b.asperity_load and a.friction_force == b.friction_force
+
+
+def test_stribeck_curve_runs_serially_below_the_work_estimate(monkeypatch: pytest.MonkeyPatch) -> None:
+    """By default a curve of little work (30 speeds on 41 x 120: estimated 3 s) runs serially
+    (the pool was twice as slow there, docs/validation.md); one of much work (500 speeds on
+    161 x 240: 390 s) goes to the pool; an explicit workers, backend or scheduler is obeyed."""
+    from shaftline import parallel
+    from shaftline.film import stribeck
+    from shaftline.film.study import BearingCase
+
+    asked: list[str | None] = []
+
+    def record(function: object, items: object, *, backend: str | None = None, **options: object) -> object:
+        asked.append(backend)
+        raise RuntimeError("recorded")
+
+    monkeypatch.setattr(parallel, "map", record)
+    operating = OperatingPoint(speed=1.0, viscosity=1e-3, density=1000.0)
+    small = BearingCase("rig", RIG, operating, SolverOptions(), -LOAD)
+    large = BearingCase("rig", RIG, operating, SolverOptions(axial_nodes=161, circumferential_nodes=240), -LOAD)
+    assert stribeck.estimated_seconds(small, 30) < stribeck.POOL_MIN_SECONDS < stribeck.estimated_seconds(large, 500)
+    for case, count, options in (
+        (small, 30, {}),
+        (large, 500, {}),
+        (small, 30, {"workers": 2}),
+        (small, 30, {"backend": "process"}),
+    ):
+        with pytest.raises(RuntimeError, match="recorded"):
+            stribeck.stribeck_curve(case, np.geomspace(1.0, 40.0, count), **options)  # type: ignore[arg-type]
+    assert asked == ["serial", None, None, "process"]

@@ -223,3 +223,48 @@ def test_roughness_larger_than_the_clearance_is_refused() -> None:
         )
     assert info.value.field == "surface.bore_rq"
     assert "half the radial clearance" in str(info.value)
+
+
+def test_patir_cheng_constants_against_a_second_transcription() -> None:
+    """Patir & Cheng's gamma = 1 rows (1978 Table 1: C 0.90, r 0.56; 1979 Table 2: A1 1.899,
+    a1 0.98, a2 0.92, a3 0.05, A2 1.126) against a public regression of their whole tables
+    over gamma (rboman/progs, apps/EHD/EHD/ehd_flow_factors.c): its phi_x at gamma -> 1
+    (C = 0.89679, r = 0.43006 - 0.10828 + 0.23821) within 0.004 for lambda 0.5-10 (the
+    table's two digits of C, +-0.005, times exp(-r lambda) <= 0.76; measured 0.0024); its
+    Phi_s tail A2 = 1.0766 within 5 % of ours (a fit across gamma 1/9-6, 4 % off). The 1979
+    row's own check: its two branches meet at lambda = 5 within 0.1 % only with A2 = 1.126
+    (the regression's 1.077 would leave a 4 % step)."""
+    lam = np.linspace(0.5, 10.0, 96)
+    regression = 1.0 - 0.89679 * np.exp(-(0.43006 - 0.10828 + 0.23821) * lam)
+    np.testing.assert_allclose(pressure_flow_factor(lam), regression, rtol=0.0, atol=4e-3)
+    tail = float(shear_flow_factor(8.0)) / math.exp(-0.25 * 8.0)
+    assert tail == pytest.approx(1.0766, rel=0.05)
+    low = 1.899 * 5.0**0.98 * math.exp(-0.92 * 5.0 + 0.05 * 25.0)
+    assert low == pytest.approx(tail * math.exp(-1.25), rel=1e-3)
+    assert low != pytest.approx(1.0766 * math.exp(-1.25), rel=1e-2)
+
+
+def test_shear_flow_factor_sign_follows_patir_and_cheng() -> None:
+    """Patir & Cheng (1979): q_x = ... + (U1 + U2)/2 h_T + (U1 - U2)/2 sigma Phi_s with
+    Phi_s = V_r1 Phi_s(H) - V_r2 Phi_s(H), V_ri = Rq_i^2 / sigma^2, surface 1 the moving journal
+    (U2 = 0). A rough journal on a smooth bore carries more than the mean gap (its valleys
+    drag liquid along), a rough bore at rest less; equal roughness cancels. The same weight
+    (Rq1^2 - Rq2^2)/sigma^2 is in the public transcription above."""
+    film = np.linspace(0.005, 0.05, 10)
+    cases = {(1e-6, 0.0): 1.0, (0.0, 1e-6): -1.0, (1e-6, 1e-6): 0.0}
+    for (journal, bore), weight in cases.items():
+        surface = SurfaceRoughness(journal_rq=journal, bore_rq=bore)
+        assert surface.shear_weight == pytest.approx(weight)
+        rough = RoughFilm(sigma=0.01, shear_weight=surface.shear_weight)
+        extra = rough.transport(film) - 0.01 * mean_gap(film / 0.01)
+        assert np.all(np.sign(extra) == np.sign(weight))
+
+
+def test_white_metal_presets_use_astm_b23_grade_2() -> None:
+    """Tin babbitt ASTM B23 grade 2 (UNS L13890): E = 53 GPa, nu = 0.35 (MakeItFrom's sheet);
+    on steel (206 GPa, 0.3) the contact modulus is 47.7 GPa."""
+    for name in ("turned_steel_white_metal", "ground_steel_white_metal"):
+        surface = SurfaceRoughness.preset(name)
+        expected = 1.0 / ((1 - 0.3**2) / 206e9 + (1 - 0.35**2) / 53e9)
+        assert surface.contact_modulus == pytest.approx(expected, rel=1e-12)
+        assert surface.contact_modulus == pytest.approx(47.68e9, rel=1e-3)

@@ -211,4 +211,6 @@ def test_linearisation_from_the_equilibrium_set_is_the_cold_linearisation():
     pairs = ((cold.offset_derivative, warm.offset_derivative), (cold.velocity_derivative, warm.velocity_derivative))
     for a, b in pairs:
         assert np.abs(a - b).max() <= 1e-9 * np.abs(a).max()
-    np.testing.assert_allclose(warm.force, cold.force, rtol=1e-12)
+    # Per component against the force's size: the horizontal one is the equilibrium's residual
+    # (1e-5 N of 6 kN), which a low-rank corrected solve rounds differently from a factor.
+    np.testing.assert_allclose(warm.force, cold.force, rtol=1e-12, atol=1e-12 * np.abs(cold.force).max())

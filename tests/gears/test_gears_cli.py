@@ -132,3 +132,25 @@ def test_a_load_distribution_table_replaces_isos_load_sharing(tmp_path):
     case.write_text(bad)
     result = invoke("gears", "scuffing", str(case))
     assert result.exit_code == 2 and "gears.load_sharing.share = 2: allowed 3 values" in result.stderr
+
+
+def test_thermal_correction_clipped_to_zero_is_a_loud_finding(tmp_path):
+    # issue 14 (g): with extrapolate, seed 002's Eq. 6 beyond its fit range (eta0 p_H u above ~4, the
+    # ester at 10 degC on the fast, heavy steps) gives c < 0, clipped to 0: friction 0 there and SP
+    # understated. That must not pass as a warning: a finding (not acceptable, exit 3) at the top of the
+    # output and in results.json, even without --strict.
+    text = SEED.read_text().replace('oil_temperature = "90 degC"', 'oil_temperature = "10 degC"')
+    text = text.replace('calibration = "gears_scuffing_test.csv"', 'thermal_coefficient = "40000 W/(m*K)"')
+    case = tmp_path / "cold.toml"
+    case.write_text(text)
+    result = invoke("gears", "scuffing", str(case), "--json", str(tmp_path / "r.json"))
+    assert result.exit_code == 3, result.stdout
+    assert result.stdout.lstrip().startswith("NOT ACCEPTABLE") and "clipped to c = 0" in result.stdout
+    document = json.loads((tmp_path / "r.json").read_text())
+    clipped = [f for f in document["findings"] if "clipped to c = 0" in f["text"]]
+    assert len(clipped) == 1 and clipped[0]["criterion"] is False
+    # the same case at 90 degC (the example) clips nothing to 0: no such finding
+    warm = text.replace('oil_temperature = "10 degC"', 'oil_temperature = "90 degC"')
+    case.write_text(warm)
+    result = invoke("gears", "scuffing", str(case), "--json", "-")
+    assert "clipped to c = 0" not in result.stdout

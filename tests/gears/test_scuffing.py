@@ -220,3 +220,72 @@ def test_sp_and_iso_rank_the_fzg_load_stages_alike():
     sp = scuffing_parameter(state.power_integral, 1000.0, 150.0, 90.0)
     safety = fzg_rating(9).safety
     assert list(np.argsort(sp)) == list(np.argsort(-safety)) == list(range(12))
+
+
+def _band_source_constant(flux) -> float:
+    """K of theta_max = K mu w |sqrt(v1) - sqrt(v2)| / (B_M sqrt(b_H)) for a heat flux of the given
+    shape on |x| < b_H (flux(s), s = x/b_H, of mean 1), from Jaeger's moving band source at high Peclet
+    number: the surface temperature of a body passing under flux q at speed v is
+    (1/(B sqrt(pi v))) int q(xi) / sqrt(x - xi) dxi; the frictional heat mu w |v1 - v2| / (2 b_H) split
+    so that both surfaces reach the same temperature gives the |sqrt(v1) - sqrt(v2)| form."""
+    from scipy.integrate import quad
+    from scipy.optimize import minimize_scalar
+
+    def temperature(x: float) -> float:
+        return quad(lambda s: flux(s) / math.sqrt(x - s), -1.0, min(x, 1.0), limit=200)[0]
+
+    peak = minimize_scalar(lambda x: -temperature(x), bounds=(-0.99, 1.5), method="bounded")
+    return -peak.fun / math.sqrt(math.pi) / 2.0
+
+
+def test_blok_constant_of_iso_from_the_moving_band_source():
+    # Issue 14 (c): ISO's K = 0.80 (first transcription) against first principles. The uniform flux over
+    # the Hertzian width gives K = 2/sqrt(pi) / sqrt(2) = 0.798, the semi-elliptic (Hertzian) flux 0.786 =
+    # Blok's 1.11 on sqrt(2 b_H) (1.11/sqrt(2); Blok's constant as a second public implementation writes it,
+    # 1.110 mu X w |v1 - v2| / (B_M sqrt(2 b_H) (sqrt(v1) + sqrt(v2)))). ISO's 0.80 is the uniform band to
+    # 0.3 % and Blok's Hertzian value to 1.8 %: confirmed as Blok's constant, rounded up. Tolerances: the
+    # quadrature's 1e-4; 0.3 % and 2 % are the measured gaps, stated so that a slip in K shows.
+    from shaftline.gears.flash import BLOK_CONSTANT
+
+    uniform = _band_source_constant(lambda s: 1.0)
+    hertzian = _band_source_constant(lambda s: 4.0 / math.pi * math.sqrt(max(1.0 - s * s, 0.0)))
+    assert uniform == pytest.approx(math.sqrt(2.0 / math.pi), rel=1e-4)
+    assert hertzian == pytest.approx(1.11 / math.sqrt(2.0), rel=2e-3)
+    assert BLOK_CONSTANT == pytest.approx(uniform, rel=0.003)
+    assert BLOK_CONSTANT == pytest.approx(hertzian, rel=0.02)
+
+
+def test_integral_methods_fzg_torque_law_against_the_fzg_table():
+    # Issue 14 (c): ISO/TS 6336-21's pinion torque of an FZG stage, T_1T = 3.726 S_FZG^2 N m (from the
+    # transcription), against the FZG stage torques of ISO 14635-1 (the table of gears/case.py, used by
+    # [gears.test] fzg_load_stages): within 1.1 % from stage 5 on (found: 1.01 % at stage 5, 0.4 % at 12),
+    # 5.5 % from stage 3; stages 1 and 2 are 13 % and 9 % off (the table's low stages do not follow the
+    # square law). Two sources agreeing on the constant 3.726 where the integral method uses it (failure
+    # stages 5-12).
+    from shaftline.gears.case import FZG_TORQUES
+
+    table = np.array(FZG_TORQUES)
+    law = 3.726 * np.arange(1, 13) ** 2.0
+    np.testing.assert_allclose(law[4:], table[4:], rtol=0.011)
+    np.testing.assert_allclose(law[2:], table[2:], rtol=0.055)
+    np.testing.assert_array_equal(table, FZG_TORQUE)
+
+
+def test_fzg_rating_does_not_depend_on_the_wheel_shift_given():
+    # Issue 14 (d): the wheel's shift of type A is quoted as -0.5 (the example; its tip 112.5 mm is then
+    # exactly d + 2m(1 + x)) and as -0.5024 (the issue's statement of ISO 14635-1; tip 112.478 mm by the
+    # same rule, working centre distance 91.532 mm without backlash). With the rig's 91.5 mm and the tip
+    # diameters given, the mesh is fixed by them: both readings rate the 12 stages identically (1e-12).
+    eta = float(contact_lubricant("FVA 3").dynamic_viscosity(90.0))
+    ratings = []
+    for shift in (-0.5, -0.5024):
+        pair = GearPair(
+            16, 24, 4.5e-3, 20 * DEG, 20e-3, shift_1=0.8635, shift_2=shift, centre_distance=91.5e-3,
+            tip_radius_1=88.77e-3 / 2, tip_radius_2=112.5e-3 / 2, allow_undercut=True,
+        )  # fmt: skip
+        rho = np.linspace(pair.start_of_contact, pair.end_of_contact, 200)
+        share = iso_load_sharing(pair, rho)
+        rating = iso_scuffing(pair, IsoScuffingData(6, roughness_ra=0.3e-6), FZG_TORQUE[:, None], FZG_SPEED, 90.0,
+                              eta, share, rho)  # fmt: skip
+        ratings.append(rating.safety)
+    np.testing.assert_allclose(ratings[0], ratings[1], rtol=1e-12)

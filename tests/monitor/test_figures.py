@@ -63,3 +63,20 @@ def test_polar_film_and_centre_line_vs_speed_draw():
     axes = Figure().subplots(1, 2)
     figures.centre_line_vs_speed(points, 0.55e-3, ax=axes)
     assert axes[1].lines[0].get_xydata()[:, 1] == pytest.approx([-500.0, -400.0])
+
+
+def test_the_centre_line_zoom_keeps_its_tick_labels_apart():
+    """The stored centre line of the example (e/c 0.98-0.97 over three speeds): the equal-aspect zoom
+    widened its x range and matplotlib put six or more labels of six characters on it (nine in the
+    example's report, overlapping); at most five ticks now, on a figure of the report's size."""
+    from shaftline.monitor.trends import CentreLine
+
+    speed = np.array([135.0, 175.0, 215.0]) * math.pi / 30
+    lines = [CentreLine("D1", speed, np.array([0.993, 0.991, 0.989]), np.array([2.99, 2.96, 2.94]), np.ones(3))]
+    figure = Figure(figsize=(10, 4.8), layout="constrained")
+    axes = figure.subplots(1, 2)
+    figures.centre_line_ratio(lines, ax=axes)
+    figure.draw_without_rendering()  # the layout, as the report's drawing, fixes the limits
+    low, high = axes[1].get_xlim()
+    shown = [t for t in axes[1].get_xticks() if low <= t <= high]
+    assert 2 <= len(shown) <= 5

@@ -128,3 +128,17 @@ def test_unknown_or_missing_files_are_one_line_errors(tmp_path):
         open_recording(tmp_path / "rec.wav")
     with pytest.raises(InputError, match="existing file"):
         open_recording(tmp_path / "none.csv")
+
+
+def test_csv_sample_rate_from_times_printed_with_nine_digits(tmp_path):
+    """`monitor simulate` writes times with 9 significant digits. From 10 s on a time is rounded to
+    1e-7 s, so single steps at 2048 Hz (0.488 ms) are 0.4882 or 0.4883 ms and their median is off by up
+    to 1e-4 relative (the example's files, from 0 s, were off by 2e-7: a window at 2 s a microsecond
+    early, shown as the second before). The mean step over the span read (1000 samples, 0.49 s) is off
+    by 1e-7 s / 0.49 s = 2e-7 relative at most."""
+    path = tmp_path / "r.csv"
+    times = 10.0 + np.arange(2000) / 2048.0  # a file that starts late makes the rounding coarse
+    np.savetxt(path, np.column_stack([times, np.ones_like(times)]), delimiter=",", header="time,p315",
+               comments="", fmt="%.9g")  # fmt: skip
+    rate = open_recording(path).sample_rate(["p315"])
+    assert rate == pytest.approx(2048.0, rel=3e-7)

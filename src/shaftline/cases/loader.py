@@ -284,6 +284,7 @@ def parse_case(
         studies=studies,
         source=source,
         inputs=inputs,
+        kept=tuple(dict.fromkeys(context.kept)),
         tables=tables,
         fingerprints=_fingerprints(inputs),
         unusual=lowered,
@@ -291,17 +292,28 @@ def parse_case(
     )
 
 
+#: Bytes read at a time to fingerprint an input file.
+FINGERPRINT_BLOCK = 8 << 20
+
+
 def _fingerprints(paths: Iterable[Path]) -> tuple[tuple[str, str, int], ...]:
-    """(path, SHA-256, size in bytes) of each input file, for the report's record."""
+    """(path, SHA-256, size in bytes) of each input file, for the report's record.
+
+    Read in blocks: an input may be a recording of several GB (``monitor identify``), which
+    read whole would hold its size in memory."""
     import hashlib
 
     out = []
     for path in paths:
+        digest, size = hashlib.sha256(), 0
         try:
-            data = Path(path).read_bytes()
+            with open(path, "rb") as file:
+                while block := file.read(FINGERPRINT_BLOCK):
+                    digest.update(block)
+                    size += len(block)
         except OSError:
             continue
-        out.append((str(path), hashlib.sha256(data).hexdigest(), len(data)))
+        out.append((str(path), digest.hexdigest(), size))
     return tuple(out)
 
 

@@ -169,15 +169,27 @@ class LubricatedContact(Capability["ContactSection", "ContactStudy", "ContactRes
         )
 
     def findings(self, result: ContactResult) -> list[Finding]:
-        if result.lubrication != "boundary-dominated":
-            return []
         op = result.operating
+        found = []
+        if float(op.thermal_correction) <= 0.0:
+            # extrapolate clipped Eq. 6's c to 0: a friction of 0 is no result (issue 14 (g))
+            found.append(
+                Finding(
+                    "seed 002's thermal correction (Eq. 6) was clipped to c = 0 beyond its fit range of eta0 p_H u at "
+                    "the operating point: friction and frictional power come out 0 - not a result; the correlation "
+                    "does not cover this oil, load and speed.",
+                    criterion=False,
+                )
+            )
+        if result.lubrication != "boundary-dominated":
+            return found
         return [
+            *found,
             Finding(
                 f"the contact runs boundary-dominated: Lambda = {float(op.film_ratio):.2f}, the film carries "
                 f"{float(op.load_sharing):.0%} of the load (seed 002 Eq. 2); friction {float(op.friction):.3f}.",
                 criterion=True,
-            )
+            ),
         ]
 
     def _warnings(self, result: ContactResult) -> list[Block]:

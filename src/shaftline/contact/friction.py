@@ -4,10 +4,11 @@ Sect. 1.1, Eq. 1-6), read as documented in docs/theory.md Sect. 15.4:
 * Eq. 1: ``f_a = f_c g(Lambda) + f_b (1 - g(Lambda))``, boundary friction f_b (0.08-0.1);
 * Eq. 2: Zhu-Hu load sharing ``g = 1.21 Lambda^0.64 / (1 + 0.37 Lambda^1.26)``, set to 1 for
   Lambda > 2 (it passes 1 at Lambda = 2.013, peaks at 1.003 at 2.26 and falls beyond, seed Fig. 1);
-* Eq. 3 and 5: full-film friction from the Bair-Winer stress at the mean Hertz pressure
-  ``p_m = 2 p_H / 3`` (elliptical contact):
-  ``f_c = tau / p_m = 3 tau_L / (2 p_H) (1 - exp(-eta u S / (tau_L h_c)))``, shear rate
-  ``Delta u / h_c = S u / h_c``;
+* Eq. 3 and 5: full-film friction from the Bair-Winer stress over the mean Hertz pressure,
+  ``f_c = tau / p_m = (tau_L / p_m) (1 - exp(-eta u S / (tau_L h_c)))``, shear rate
+  ``Delta u / h_c = S u / h_c``; p_m is the contact's own: ``2 p_H / 3`` for the elliptical
+  (crowned-tooth) contact the seed writes Eq. 3 for, ``pi p_H / 4`` for a line contact
+  (docs/theory.md Sect. 15.4, issue 14 (f));
 * Eq. 6: thermal correction ``f = c f_a`` with, for ``S > S_m = 0.01 X^-3/2``,
   ``c = (0.39 - 0.28 ln X) S^-(0.088 ln X + 0.220)``, ``X = eta0 p_H u`` in Pa s x GPa x m/s
   (the units in which c(S_m) = 1 within 8 % over the fit range X = 0.1-1.8), and c = 1
@@ -55,16 +56,17 @@ def full_film_friction(
     rolling_speed: ArrayLike,
     slide_roll: ArrayLike,
     central_film: ArrayLike,
-    peak_pressure: ArrayLike,
+    mean_pressure: ArrayLike,
 ) -> np.ndarray:
-    """Full-film friction coefficient f_c of seed 002 Eq. 5: the Bair-Winer shear stress at the
-    shear rate ``|S| u / h_c`` over the mean pressure ``2 p_H / 3``; 0 where the film is 0."""
+    """Full-film friction coefficient f_c of seed 002 Eq. 3 and 5: the Bair-Winer shear stress at
+    the shear rate ``|S| u / h_c`` over the mean Hertz pressure p_m (Pa; ``2 p_H / 3`` elliptical,
+    ``pi p_H / 4`` line contact); 0 where the film is 0."""
     tau_l = np.asarray(limiting_stress, dtype=float)
     h = np.asarray(central_film, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
         rate = np.abs(np.asarray(slide_roll)) * np.asarray(rolling_speed) / h
         stress = tau_l * -np.expm1(-np.asarray(viscosity) * rate / tau_l)
-    return np.where(h > 0.0, 1.5 * stress / np.asarray(peak_pressure), 0.0)
+    return np.where(h > 0.0, stress / np.asarray(mean_pressure), 0.0)
 
 
 def mixed_friction(full_film: ArrayLike, boundary: ArrayLike, film_ratio: ArrayLike) -> np.ndarray:
@@ -173,15 +175,17 @@ def seed_friction(
     slide_roll: ArrayLike,
     central_film: ArrayLike,
     peak_pressure: ArrayLike,
+    mean_pressure: ArrayLike,
     extrapolate: bool = False,
 ) -> SeedFriction:
     """Seed 002's friction coefficient ``f = c f_a`` (Eq. 1-6) at every point.
 
     ``viscosity_at_pressure`` is the viscosity in the contact (at the mean Hertz pressure) that
-    the Bair-Winer stress uses; ``viscosity`` is eta0 (ambient pressure) of Eq. 6.
+    the Bair-Winer stress uses; ``viscosity`` is eta0 (ambient pressure) of Eq. 6;
+    ``mean_pressure`` divides the stress (Eq. 3), ``peak_pressure`` enters Eq. 6's eta0 p_H u.
     """
     f_c = full_film_friction(
-        limiting_stress, viscosity_at_pressure, rolling_speed, slide_roll, central_film, peak_pressure
+        limiting_stress, viscosity_at_pressure, rolling_speed, slide_roll, central_film, mean_pressure
     )
     g = load_sharing(film_ratio)
     f_a = f_c * g + np.asarray(boundary) * (1.0 - g)

@@ -223,6 +223,7 @@ def evaluate(
         slide_roll=slide_roll,
         central_film=central,
         peak_pressure=p_h,
+        mean_pressure=p_m,
         extrapolate=model.extrapolate,
     )
     shape = np.broadcast_shapes(np.shape(central), np.shape(friction.coefficient), np.shape(p_h))

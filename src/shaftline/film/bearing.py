@@ -54,6 +54,7 @@ from shaftline.film.reynolds import (
     stencil_derivative,
 )
 from shaftline.film.roughness import (
+    FilmFlow,
     RoughFilm,
     asperity_pressure,
     asperity_pressure_derivative,
@@ -61,6 +62,7 @@ from shaftline.film.roughness import (
     lubrication_regime,
     mean_gap,
 )
+from shaftline.film.turbulence import TurbulentFilm, clearance_reynolds, couette_shear_factor, turbulence_active
 
 __all__ = [
     # Problem data, defined in shaftline.film.problem and re-exported here for compatibility.
@@ -226,6 +228,14 @@ class BearingState:
         Its largest value, m.
     liner_iterations : int
         Newton iterations of the film-liner system in this solution.
+    reynolds_number : ndarray (nz, nt) or None
+        Local Reynolds number ``Re_h = rho omega R h / mu`` over the bore (with
+        ``options.turbulence`` on or auto; None when off).
+    max_reynolds_number : float
+        Its largest value (0 when off).
+    turbulent : bool
+        Whether the turbulence coefficients were applied (docs/theory.md Sect. 17, "Turbulent
+        films"): ``options.turbulence`` on, or auto above the transition.
 
     Equality is identity: the fields hold arrays, which have no single truth value.
     """
@@ -278,6 +288,9 @@ class BearingState:
     liner_deformation: np.ndarray | None = field(default=None, repr=False)
     max_liner_deformation: float = 0.0
     liner_iterations: int = 0
+    reynolds_number: np.ndarray | None = field(default=None, repr=False)
+    max_reynolds_number: float = 0.0
+    turbulent: bool = False
 
 
 @dataclass(frozen=True)
@@ -723,8 +736,11 @@ class JournalBearing:
         rough = self._rough_film()
         stencil = build_stencil(film_nd, cache.d_theta, cache.d_z, rate, rough)
         solver = cache.reynolds
+        # A turbulent film's coarse-grid prediction of the cavitated set uses its own flow (the
+        # laminar one put the boundary off by many nodes: 8 active-set solves instead of 1).
+        solver.flow = rough if isinstance(rough, TurbulentFilm) else None
         if start_pressure is not None and self.options.cavitation == "reynolds":
-            start = solver.predicted_set(stencil, start_pressure)
+            start = solver.trial_set(stencil, film_nd, start_pressure)
         if start is None and warm:
             start = cache.last_cavitated
         if liner is not None:
@@ -871,12 +887,29 @@ class JournalBearing:
             )
         return evaluation.liner_system
 
-    def _rough_film(self) -> RoughFilm | None:
-        """The roughness of the film equation (None for smooth surfaces)."""
+    def _rough_film(self) -> FilmFlow | None:
+        """The flow factors of the film equation: the roughness's, combined with the turbulence
+        coefficients when they apply (:attr:`turbulent`); None for a smooth laminar film."""
         surface = self.geometry.surface
-        if surface is None:
-            return None
-        return RoughFilm(surface.sigma / self.geometry.radial_clearance, surface.shear_weight)
+        rough = None
+        if surface is not None:
+            rough = RoughFilm(surface.sigma / self.geometry.radial_clearance, surface.shear_weight)
+        if self.turbulent:
+            return TurbulentFilm(self.reynolds_number, self.options.turbulence_model, rough)
+        return rough
+
+    @property
+    def reynolds_number(self) -> float:
+        """Clearance Reynolds number ``Re_c = rho omega R c / mu``; the local one is ``Re_c h / c``."""
+        g, op = self.geometry, self.operating
+        return clearance_reynolds(op.density, op.speed, g.radius, g.radial_clearance, op.viscosity)
+
+    @property
+    def turbulent(self) -> bool:
+        """Whether the turbulence coefficients apply (``options.turbulence``: on, or auto with the
+        largest local Reynolds number above the Taylor-vortex onset)."""
+        g = self.geometry
+        return turbulence_active(self.options.turbulence, self.reynolds_number, g.radius, g.radial_clearance)
 
     def _film_floor(self) -> float:
         """Smallest film the equilibrium may approach, m: ``min_film_floor`` of the clearance, or
@@ -1672,8 +1705,13 @@ class JournalBearing:
         dp_dx = (np.roll(pressure, -1, axis=1) - np.roll(pressure, 1, axis=1)) / (2.0 * grid.d_theta * g.radius)
         shearing = fraction if self.options.cavitated_shear == "film_fraction" else np.ones_like(fraction)
         surface = g.surface
+        turbulent = self.turbulent
+        local_reynolds = self.reynolds_number * film / g.radial_clearance
+        # Turbulent films: the Couette shear times C_f(Re_h); the Poiseuille part as laminar
+        # (the linearised theory, docs/theory.md Sect. 17 "Turbulent films").
+        couette = couette_shear_factor(local_reynolds) if turbulent else 1.0
         if surface is None:
-            shear = op.viscosity * speed * shearing / film + 0.5 * film * dp_dx
+            shear = op.viscosity * speed * shearing * couette / film + 0.5 * film * dp_dx
             friction = float(np.sum(shear * weights))
             fluid_friction, boundary_friction = friction, 0.0
         else:
@@ -1681,7 +1719,7 @@ class JournalBearing:
             # boundary friction on the asperity pressure (docs/theory.md, "Mixed lubrication").
             lam = film / surface.sigma
             gap = surface.sigma * mean_gap(lam)
-            shear = op.viscosity * speed * shearing / gap + 0.5 * film * dp_dx
+            shear = op.viscosity * speed * shearing * couette / gap + 0.5 * film * dp_dx
             fluid_friction = float(np.sum(shear * weights))
             assert contact is not None
             boundary_friction = float(np.sum(surface.boundary_friction * contact * weights))
@@ -1734,6 +1772,10 @@ class JournalBearing:
             rough["liner_deformation"] = evaluation.deformation
             rough["max_liner_deformation"] = float(evaluation.deformation.max())
             rough["liner_iterations"] = evaluation.liner_iterations
+        if self.options.turbulence != "off":
+            rough["reynolds_number"] = local_reynolds
+            rough["max_reynolds_number"] = float(local_reynolds.max())
+            rough["turbulent"] = turbulent
         return BearingState(
             position=evaluation.position,
             eccentricity_ratio=e / g.radial_clearance,

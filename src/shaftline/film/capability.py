@@ -126,11 +126,14 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
 
         mixed = any(run.case.geometry.surface is not None for run in result.cases)
         lined = any(run.case.geometry.liner is not None for run in result.cases)
+        turbulence = any(run.case.options.turbulence != "off" for run in result.cases)
         extra = {"liner_deformation_map": "m"} if lined else {}
+        if turbulence:
+            extra["reynolds_number_map"] = "-"
         if any(run.thermal is not None for run in result.cases):
             extra.update(THERMAL_UNITS)
         out: dict[str, Any] = {
-            "units": {**units(mixed, lined), **EXTRA_UNITS, **extra},
+            "units": {**units(mixed, lined, turbulence), **EXTRA_UNITS, **extra},
             "cases": [
                 {"name": run.case.name, **equilibrium_summary(run.equilibrium, run.coefficients)}
                 for run in result.cases
@@ -144,6 +147,10 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 # Rows along the bearing from the aft edge, columns around the bore from the grid's
                 # first angle (theta of the state), metres.
                 entry["liner_deformation_map"] = np.round(deformation, 12).tolist()
+            reynolds = run.equilibrium.state.reynolds_number
+            if reynolds is not None:
+                # Rows and columns as the liner deformation map's.
+                entry["reynolds_number_map"] = np.round(reynolds, 3).tolist()
         if result.stribeck is not None:
             out["stribeck"] = stribeck_json(result.stribeck)
         return out
@@ -243,6 +250,15 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                     ("yes" if run.thermal.converged else "NO") if run.thermal is not None else "-"
                     for run in result.cases
                 ]
+            )
+        if any("max_reynolds_number" in s for s in summaries):
+            rows.append(
+                ["max local Reynolds number [-]"]
+                + [fmt(s["max_reynolds_number"], 1.0, 4) if "max_reynolds_number" in s else "-" for s in summaries]
+            )
+            rows.append(
+                ["turbulent film"]
+                + [("yes" if s["turbulent"] else "no") if "turbulent" in s else "-" for s in summaries]
             )
         if any("max_liner_deformation" in s for s in summaries):
             rows.append(
@@ -357,6 +373,16 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                         caption=f"{name}: liner deformation (column model) and the film including it",
                     )
                 )
+            if state.reynolds_number is not None:
+                blocks.append(
+                    Figure(
+                        f"bearing_{index}_reynolds.png",
+                        figures.reynolds_map,
+                        (state, name),
+                        caption=f"{name}: local Reynolds number ρωRh/μ of the film (turbulence coefficients "
+                        f"{'applied' if state.turbulent else 'not applied'})",
+                    )
+                )
             blocks.append(
                 Figure(
                     f"bearing_{index}_circumferential.png",
@@ -382,7 +408,7 @@ def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
     def clean(values: Any) -> list[Any]:
         return [float(v) if math.isfinite(v) else None for v in values]
 
-    return {
+    out: dict[str, Any] = {
         "speed_rpm": clean(curve.speed * 30.0 / math.pi),
         "friction_coefficient": clean(curve.friction_coefficient),
         "asperity_load_share": clean(curve.asperity_load_share),
@@ -395,6 +421,10 @@ def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
         if curve.transition_speed is None
         else float(curve.transition_speed * 30.0 / math.pi),
     }
+    if curve.max_reynolds_number is not None and curve.turbulent is not None:
+        out["max_reynolds_number"] = clean(curve.max_reynolds_number)
+        out["turbulent"] = [bool(v) for v in curve.turbulent]
+    return out
 
 
 def _stribeck_table(result: BearingStudyResult) -> Table:

@@ -68,6 +68,7 @@ from shaftline.film.problem import (
 )
 from shaftline.film.roughness import SurfaceRoughness
 from shaftline.film.study import BearingCase
+from shaftline.film.turbulence import TurbulenceMode, TurbulenceModel
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
@@ -357,6 +358,12 @@ class SolverSection(Section):
     memory_limit: Annotated[float, Quantity("memory", gt=0)] | None = None
     """Largest memory a film solution may take (e.g. "8 GiB"); a finer grid is refused before
     anything is allocated. Default: half the machine's memory."""
+    turbulence: TurbulenceMode = default_of(SolverOptions, "turbulence")
+    """Turbulent film (large, fast, low-viscosity films such as water): off (laminar), on (the turbulence
+    coefficients at every node), or auto (on above the Taylor-vortex onset, 2 rho omega R c / mu > 41.3 sqrt(R/c));
+    the local Reynolds number is reported unless off."""
+    turbulence_model: TurbulenceModel = default_of(SolverOptions, "turbulence_model")
+    """Coefficients of the turbulent film: ng_pan (Ng & Pan 1965) or constantinescu (Constantinescu 1962)."""
 
 
 _SURFACE_ROUGHNESS = (
@@ -771,6 +778,30 @@ def lubricant_properties(lube: LubricantSection) -> tuple[Lubricant, float, floa
     return lubricant, viscosity, density
 
 
+#: ``turbulence = "on"`` with a largest local Reynolds number below this share of the transition
+#: is noted (not refused): the coefficients are fits to turbulent films, and a film this far
+#: below transition is laminar (issue 15, "Bad input").
+FAR_BELOW_TRANSITION = 0.1
+
+
+def turbulence_note(geometry: BearingGeometry, operating: OperatingPoint, speed: float) -> str | None:
+    """A note when turbulence is asked for with a film whose largest local Reynolds number
+    (``2 Re_c``, a film of at most 2c) is far below the Taylor-vortex onset; None otherwise."""
+    from shaftline.film.turbulence import clearance_reynolds, pressure_flow_coefficients, transition_reynolds
+
+    radius, clearance = geometry.radius, geometry.radial_clearance
+    largest = 2.0 * clearance_reynolds(operating.density, speed, radius, clearance, operating.viscosity)
+    transition = transition_reynolds(radius, clearance)
+    if largest >= FAR_BELOW_TRANSITION * transition:
+        return None
+    kx, _ = pressure_flow_coefficients(largest)
+    return (
+        f"solver.turbulence = on with a film whose largest local Reynolds number is {largest:.3g}, far below the "
+        f"transition at {transition:.3g} (41.3 sqrt(R/c)): the film is laminar; the turbulence coefficients change "
+        f"its pressure flow by at most {100 * (1 - 12 / float(kx)):.2g} % (set turbulence = off or auto)."
+    )
+
+
 def solver_options(s: SolverSection) -> SolverOptions:
     """The film's :class:`SolverOptions` of a ``solver`` table."""
     return SolverOptions(
@@ -783,6 +814,8 @@ def solver_options(s: SolverSection) -> SolverOptions:
         tolerance=s.tolerance,
         max_iterations=s.max_iterations,
         memory_limit=s.memory_limit,
+        turbulence=s.turbulence,
+        turbulence_model=s.turbulence_model,
     )
 
 
@@ -868,6 +901,10 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
         options = solver_options(section.solver)
     with located("", {"operating": "operation", "options": "solver"}):
         BearingProblem(base_geometry, operating, options)
+    if options.turbulence == "on":
+        note = turbulence_note(base_geometry, operating, op.speed)
+        if note is not None:
+            context.warnings.append(note)
     tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)
     tilt_z = _tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, length, clearance)
 

@@ -34,7 +34,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from shaftline.film.reynolds import Stencil
-from shaftline.film.roughness import RoughFilm
+from shaftline.film.roughness import FilmFlow
 
 __all__ = ["LinerSystem", "film_operator", "film_residual_jacobian"]
 
@@ -52,7 +52,7 @@ def film_residual_jacobian(
     relative_pressure: np.ndarray,
     d_theta: float,
     d_z: float,
-    rough: RoughFilm | None,
+    rough: FilmFlow | None,
     film_rate: np.ndarray | None,
 ) -> sp.csr_matrix:
     """``B = dr/dH`` (n x n, n = nz nt, row-major), the film residual's change with the film at
@@ -74,7 +74,7 @@ def film_residual_jacobian(
         t_theta = np.full(h_east.shape, d_z)
     else:
         g_theta = (d_z / d_theta) * rough.conductance_derivative(h_east)
-        g_z = (d_theta / d_z) * rough.conductance_derivative(h_north)
+        g_z = (d_theta / d_z) * rough.axial_conductance_derivative(h_north)
         t_theta = d_z * rough.transport_derivative(h_east)
     p = relative_pressure.ravel()
     along = 0.5 * (g_theta.ravel() * (p[theta_a] - p[theta_b]) + t_theta.ravel())
@@ -139,7 +139,7 @@ class LinerSystem:
         held: np.ndarray,
         d_theta: float,
         d_z: float,
-        rough: RoughFilm | None,
+        rough: FilmFlow | None,
         film_rate: np.ndarray | None,
         coupling: float,
         diagonal: np.ndarray,

@@ -20,6 +20,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+#: Node values within this share of the field's largest magnitude of the extreme are a tie.
+TIE_SHARE = 1e-12
+
 
 @dataclass(frozen=True)
 class Extreme:
@@ -66,7 +69,11 @@ def local_extreme(values: np.ndarray, usable: np.ndarray | None = None, maximum:
     sign = -1.0 if maximum else 1.0
     f = sign * np.asarray(values, dtype=float)  # locate the minimum of f
     rows, columns = f.shape
-    j, i = (int(k) for k in np.unravel_index(np.argmin(f), f.shape))
+    # Ties to rounding (a film uniform along the bearing, an aligned bore) go to the first node
+    # in storage order, so that the reported place does not hop with the last bit.
+    lowest = float(f.min())
+    tie = TIE_SHARE * max(abs(lowest), float(np.abs(f).max()))
+    j, i = (int(k) for k in np.unravel_index(np.argmax(f <= lowest + tie), f.shape))
     ok = np.ones(f.shape, dtype=bool) if usable is None else np.asarray(usable, dtype=bool)
     f0 = float(f[j, i])
     right, left = (i + 1) % columns, (i - 1) % columns

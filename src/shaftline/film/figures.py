@@ -146,6 +146,21 @@ def liner_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     return ax
 
 
+@figure_function(size=(7, 4.2))
+def reynolds_map(state: BearingState, title: str = "", *, ax: Any) -> Any:
+    """Unwrapped map of the local Reynolds number ``rho omega R h / mu`` (``state.reynolds_number``,
+    with ``[solver] turbulence`` on or auto)."""
+    theta, order, z = _unwrapped(state)
+    assert state.reynolds_number is not None
+    mesh = ax.contourf(theta, z, state.reynolds_number[:, order], levels=30, cmap="cividis", rasterized=True)
+    ax.figure.colorbar(mesh, ax=ax, label="local Reynolds number Re_h [-]")
+    _unwrapped_axes(ax)
+    head = f"{plain(title)}: " if title else ""
+    kind = "turbulent" if state.turbulent else "laminar"
+    ax.set_title(f"{head}Re_h max {state.max_reynolds_number:.4g} ({kind} film)")
+    return ax
+
+
 @figure_function(layout=(1, 2), size=(11, 4.2))
 def stribeck(curve: Any, title: str = "", *, ax: Any) -> Any:
     """Friction coefficient (Stribeck curve) and h_min against speed, shaded by lubrication

@@ -34,6 +34,7 @@ from shaftline.film.geometry import (
     coarse_shape,
     require_nodes,
 )
+from shaftline.film.turbulence import TURBULENCE_MODELS, TURBULENCE_MODES, TurbulenceMode, TurbulenceModel
 
 #: Cavitation model of the film (see :mod:`shaftline.film.reynolds`).
 Cavitation = Literal["reynolds", "jfo", "half_sommerfeld"]
@@ -242,7 +243,9 @@ class OperatingPoint:
     viscosity : float
         Effective dynamic viscosity of the lubricant, Pa*s.
     density : float
-        Lubricant density, kg/m^3 (reported flows by mass; no effect on pressures).
+        Lubricant density, kg/m^3 (reported flows by mass; with turbulence
+        (:attr:`SolverOptions.turbulence`) it sets the local Reynolds number, otherwise no effect
+        on pressures).
     aft_pressure, fore_pressure : float
         Pressures at the aft and forward bearing edges above ambient, Pa.
     cavitation_pressure : float
@@ -320,6 +323,13 @@ class SolverOptions:
         Relative force residual at which the equilibrium is accepted.
     max_iterations : int
         Newton iterations allowed for the equilibrium (>= 1).
+    turbulence : TurbulenceMode
+        ``"off"`` (default: laminar), ``"on"`` (the turbulence coefficients of ``turbulence_model``
+        at every node; they tend to the laminar values as the local Reynolds number falls) or
+        ``"auto"`` (on when the largest local Reynolds number ``2 rho omega R c / mu`` exceeds the
+        Taylor-vortex onset ``41.3 sqrt(R/c)``; docs/theory.md Sect. 17, "Turbulent films").
+    turbulence_model : TurbulenceModel
+        ``"ng_pan"`` (Ng & Pan 1965, default) or ``"constantinescu"`` (Constantinescu 1962).
     memory_limit : float or None
         Largest estimated memory of a film solution on this grid, bytes
         (:func:`estimated_memory`); a finer grid is refused when the options are made, before
@@ -349,6 +359,8 @@ class SolverOptions:
     tolerance: float = 1e-8
     max_iterations: int = 60
     memory_limit: float | None = None
+    turbulence: TurbulenceMode = "off"
+    turbulence_model: TurbulenceModel = "ng_pan"
 
     def __post_init__(self) -> None:
         require_nodes("axial_nodes", self.axial_nodes, MIN_AXIAL_NODES)
@@ -359,6 +371,10 @@ class SolverOptions:
             raise InputError("film_start", self.film_start, "", _one_of(FILM_STARTS))
         if self.cavitated_shear not in CAVITATED_SHEARS:
             raise InputError("cavitated_shear", self.cavitated_shear, "", _one_of(CAVITATED_SHEARS))
+        if self.turbulence not in TURBULENCE_MODES:
+            raise InputError("turbulence", self.turbulence, "", _one_of(TURBULENCE_MODES))
+        if self.turbulence_model not in TURBULENCE_MODELS:
+            raise InputError("turbulence_model", self.turbulence_model, "", _one_of(TURBULENCE_MODELS))
         floor = require_finite("min_film_floor", self.min_film_floor)
         if not 0.0 < floor < 0.5:
             raise InputError("min_film_floor", floor, "", "in (0, 0.5) of the clearance")

@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any, Literal, get_args
+from typing import Any, Literal, Protocol, get_args
 
 import numpy as np
 
@@ -35,6 +35,7 @@ __all__ = [
     "GREENWOOD_TRIPP_FACTOR",
     "PRESETS",
     "RA_TO_RQ",
+    "FilmFlow",
     "RoughFilm",
     "SurfacePreset",
     "SurfaceRoughness",
@@ -65,11 +66,17 @@ RA_TO_RQ = 1.25
 #: evaluated on the thick-film nodes).
 THICK_FILM_RATIO = 12.0
 
-# Patir & Cheng (1978), J. Lubr. Technol. 100, 12-17, Table 1, gamma = 1: phi_x = 1 - C exp(-r H).
+# Patir & Cheng (1978), J. Lubr. Technol. 100, 12-17, Table 1, gamma = 1: phi_x = 1 - C exp(-r H)
+# for H > 0.5. The row as published (C 0.90, r 0.56); a public regression of the whole table over
+# gamma (rboman/progs, apps/EHD/EHD/ehd_flow_factors.c: C = 0.89679 - 0.26591 ln(gamma),
+# r = 0.43006 - 0.10828 gamma + 0.23821 gamma^2 for gamma < 1) gives 0.8968 and 0.5600 at
+# gamma -> 1 (tests/film/test_roughness.py holds the two within 0.004 of phi_x).
 _PC_C = 0.90
 _PC_R = 0.56
 # Patir & Cheng (1979), J. Lubr. Technol. 101, 220-229, Table 2, gamma = 1:
-# Phi_s = A1 H^a1 exp(-a2 H + a3 H^2) for H <= 5, A2 exp(-0.25 H) for H > 5.
+# Phi_s = A1 H^a1 exp(-a2 H + a3 H^2) for H <= 5, A2 exp(-0.25 H) for H > 5. A2 = 1.126 makes
+# the two branches meet at H = 5 to 0.03 % (the regression above, A2 = 1.0766 - 0.37758
+# ln(gamma), gives 1.077: 4 % lower, a fit across gamma 1/9 to 6).
 _PS_A1, _PS_ALPHA1, _PS_ALPHA2, _PS_ALPHA3, _PS_A2 = 1.899, 0.98, 0.92, 0.05, 1.126
 _PS_SWITCH = 5.0
 
@@ -149,10 +156,11 @@ class SurfaceRoughness:
         ``"steel_polymer"``: journal sleeve Ra 0.8 um against a polymer-composite liner Ra 1.6 um
         (seed 001, Li et al. 2022, Sect. 5.3), liner E = 2320 MPa, nu = 0.327 (seed 001, Sect. 2)
         on steel 206 GPa, 0.3. ``"turned_steel_white_metal"`` / ``"ground_steel_white_metal"``:
-        journal Ra 0.8 / 0.4 um against a bored white-metal bore Ra 0.8 um, tin babbitt
-        E = 52 GPa, nu = 0.33 (assumed values; see docs/theory.md). All: sigma beta eta = 0.04,
-        sigma / beta = 0.001 (assumed, within Greenwood & Williamson's 1966 range), boundary
-        friction 0.1 (seed 002, Ciulli et al. 2010: 0.08-0.1 typical).
+        journal Ra 0.8 / 0.4 um against a bored white-metal bore Ra 0.8 um (assumed shop
+        finishes), tin babbitt ASTM B23 grade 2 E = 53 GPa, nu = 0.35 (MakeItFrom's data sheet
+        of UNS L13890; see docs/theory.md). All: sigma beta eta = 0.04, sigma / beta = 0.001
+        (assumed: no published measurement found; the values of common mixed-lubrication
+        practice), boundary friction 0.1 (seed 002, Ciulli et al. 2010: 0.08-0.1 typical).
         """
         if name not in PRESETS:
             raise InputError("preset", name, "", "one of " + ", ".join(PRESET_NAMES))
@@ -188,11 +196,16 @@ def contact_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float:
     return 1.0 / ((1.0 - nu1**2) / e1 + (1.0 - nu2**2) / e2)
 
 
+#: Tin-based white metal (babbitt), ASTM B23 grade 2 (UNS L13890): Young's modulus 53 GPa and
+#: Poisson's ratio 0.35 (MakeItFrom.com material data, which cites ASTM B23; grade 3: 56 GPa).
+WHITE_METAL_MODULUS = 53e9
+WHITE_METAL_POISSON = 0.35
+
 #: Presets: journal Ra (m), bore Ra (m), bore Young's modulus (Pa) and Poisson's ratio.
 PRESETS: dict[str, tuple[float, float, float, float]] = {
     "steel_polymer": (0.8e-6, 1.6e-6, 2320e6, 0.327),
-    "turned_steel_white_metal": (0.8e-6, 0.8e-6, 52e9, 0.33),
-    "ground_steel_white_metal": (0.4e-6, 0.8e-6, 52e9, 0.33),
+    "turned_steel_white_metal": (0.8e-6, 0.8e-6, WHITE_METAL_MODULUS, WHITE_METAL_POISSON),
+    "ground_steel_white_metal": (0.4e-6, 0.8e-6, WHITE_METAL_MODULUS, WHITE_METAL_POISSON),
 }
 
 
@@ -347,6 +360,22 @@ def lubrication_regime(lam: float) -> str:
     return "full film"
 
 
+class FilmFlow(Protocol):
+    """What the film equation takes from a non-smooth flow model (:class:`RoughFilm`, or a
+    turbulent film, :class:`shaftline.film.turbulence.TurbulentFilm`): the pressure-flow
+    conductances of theta and z faces, the Couette transport of theta faces and the squeeze
+    factor of nodes, each a function of the local dimensionless film ``H``, with derivatives."""
+
+    def conductance(self, film: np.ndarray) -> np.ndarray: ...
+    def conductance_derivative(self, film: np.ndarray) -> np.ndarray: ...
+    def axial_conductance(self, film: np.ndarray) -> np.ndarray: ...
+    def axial_conductance_derivative(self, film: np.ndarray) -> np.ndarray: ...
+    def transport(self, film: np.ndarray) -> np.ndarray: ...
+    def transport_derivative(self, film: np.ndarray) -> np.ndarray: ...
+    def squeeze_factor(self, film: np.ndarray) -> np.ndarray: ...
+    def squeeze_factor_derivative(self, film: np.ndarray) -> np.ndarray: ...
+
+
 @dataclass(frozen=True)
 class RoughFilm:
     """The roughness as the dimensionless film equation needs it (films over the clearance c).
@@ -370,6 +399,14 @@ class RoughFilm:
         """``d(H^3 phi_x) / dH``."""
         lam = film / self.sigma
         return 3.0 * film**2 * pressure_flow_factor(lam) + film**3 * pressure_flow_factor_derivative(lam) / self.sigma
+
+    def axial_conductance(self, film: np.ndarray) -> np.ndarray:
+        """``H^3 phi_z`` of z-face films: ``phi_z = phi_x`` for isotropic roughness."""
+        return self.conductance(film)
+
+    def axial_conductance_derivative(self, film: np.ndarray) -> np.ndarray:
+        """``d(H^3 phi_z) / dH``."""
+        return self.conductance_derivative(film)
 
     def transport(self, film: np.ndarray) -> np.ndarray:
         """Couette transport of face films ``H`` over that of a smooth film, ``h_T/c + (sigma/c) w Phi_s``."""

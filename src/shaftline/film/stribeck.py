@@ -5,7 +5,10 @@ The speeds of a curve are solved in ascending order in contiguous chunks; within
 equilibrium starts from the previous speed's position and cavitated set (a warm start: the
 position moves smoothly with the speed). The chunks depend on the speeds only, never on the
 number of workers, and are spread over cores with :func:`shaftline.parallel.map` (one
-mechanism with :func:`shaftline.film.sweep`), so the curve is the same on any backend.
+mechanism with :func:`shaftline.film.sweep`), so the curve is the same on any backend. Unless
+the caller names a backend, workers or a scheduler, a curve whose estimated work is small
+(:func:`estimated_seconds` below :data:`POOL_MIN_SECONDS`) runs here, serially: a process pool's
+start-up costs more than it saves on a few dozen speeds.
 """
 
 from __future__ import annotations
@@ -20,12 +23,31 @@ import numpy as np
 from shaftline.errors import InputError
 from shaftline.film.study import BearingCase
 
-__all__ = ["TRANSITION_SHARE", "StribeckCurve", "stribeck_curve", "transition_speed"]
+__all__ = [
+    "POOL_MIN_SECONDS",
+    "TRANSITION_SHARE",
+    "StribeckCurve",
+    "estimated_seconds",
+    "stribeck_curve",
+    "transition_speed",
+]
 
 #: Asperity load share below which the bearing counts as lifted off (issue 15: 1 %).
 TRANSITION_SHARE = 0.01
 #: Speeds solved one after the other, warm-started, by one worker.
 CHUNK_SIZE = 10
+#: Time of one equilibrium per grid node, s, on a rigid bore: 0.05-0.1 s on 41 x 120 and on
+#: 100 x 60 (seed 001's rig and the NTUA bearing, rough, 4-5 Newton iterations warm-started;
+#: 0.25-0.7 s where the film reaches the floor), on the shared 2-core machine of
+#: docs/validation.md. The estimate of :func:`estimated_seconds`.
+EQUILIBRIUM_SECONDS_PER_NODE = 2e-5
+#: An elastic liner's coupled Newton multiplies an equilibrium's time by 3.5-12 (bench_mixed).
+LINER_FACTOR = 5.0
+#: A curve estimated below this many seconds serially runs serially by default: the pool's
+#: start-up (1-3 s: the workers import the solver and build their tables) and the cold start
+#: of every chunk pay off only on long curves. Measured on 30 speeds: pool of 2 workers 8.5 s,
+#: serial 4.3 s (seed 001's rig); 9.2 s against 3.3 s (NTUA, rough), docs/validation.md.
+POOL_MIN_SECONDS = 20.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -46,6 +68,11 @@ class StribeckCurve:
     transition_speed : float or None
         Speed above which the asperities carry less than :data:`TRANSITION_SHARE` of the load,
         rad/s (:func:`transition_speed`); None when no speed of the range crosses it.
+    max_reynolds_number : ndarray (n,) or None
+        Largest local Reynolds number at each speed (with ``options.turbulence`` on or auto;
+        None when off).
+    turbulent : ndarray of bool (n,) or None
+        Whether the turbulence coefficients applied at each speed (None when off).
     """
 
     speed: np.ndarray
@@ -57,6 +84,8 @@ class StribeckCurve:
     converged: np.ndarray
     contact: np.ndarray
     transition_speed: float | None
+    max_reynolds_number: np.ndarray | None = None
+    turbulent: np.ndarray | None = None
 
 
 def transition_speed(speed: np.ndarray, share: np.ndarray, limit: float = TRANSITION_SHARE) -> float | None:
@@ -73,6 +102,14 @@ def transition_speed(speed: np.ndarray, share: np.ndarray, limit: float = TRANSI
     s0, s1 = float(share[k]), float(share[k + 1])
     w = (s0 - limit) / (s0 - s1)
     return float(math.exp((1 - w) * math.log(speed[k]) + w * math.log(speed[k + 1])))
+
+
+def estimated_seconds(case: BearingCase, speeds: int) -> float:
+    """Rough serial time of a curve of ``speeds`` speeds of ``case``, s: the grid's nodes times
+    :data:`EQUILIBRIUM_SECONDS_PER_NODE` per speed (times :data:`LINER_FACTOR` with a liner)."""
+    nodes = case.options.axial_nodes * case.options.circumferential_nodes
+    factor = LINER_FACTOR if case.geometry.liner is not None else 1.0
+    return speeds * nodes * EQUILIBRIUM_SECONDS_PER_NODE * factor
 
 
 def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float, ...]]:
@@ -103,6 +140,8 @@ def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float
                 state.min_film_ratio,
                 float(equilibrium.converged),
                 float(equilibrium.contact),
+                state.max_reynolds_number,
+                float(state.turbulent),
             )
         )
     return out
@@ -121,6 +160,9 @@ def stribeck_curve(
     """Friction coefficient, asperity share and h_min of ``case`` at each of ``speeds`` (rad/s),
     in warm-started chunks of ``chunk_size`` speeds over :func:`shaftline.parallel.map`
     (``backend``, ``workers``, ``scheduler`` as there; ``progress(done, total)`` per chunk).
+    With none of the three given, a curve of :func:`estimated_seconds` below
+    :data:`POOL_MIN_SECONDS` runs serially (the same curve, bit for bit: the chunks do not
+    depend on the backend).
 
     Raises
     ------
@@ -134,6 +176,9 @@ def stribeck_curve(
     if values.size < 2 or not np.all(np.isfinite(values)) or values[0] <= 0.0:
         raise InputError("speeds", list(map(float, values)), "rad/s", "two or more finite speeds > 0")
     chunks = [values[k : k + chunk_size] for k in range(0, values.size, chunk_size)]
+    if backend is None and workers is None and scheduler is None:
+        if estimated_seconds(case, values.size) < POOL_MIN_SECONDS:
+            backend = "serial"
     solved = parallel.map(
         functools.partial(_solve_chunk, case),
         chunks,
@@ -156,4 +201,6 @@ def stribeck_curve(
         converged=rows[:, 4].astype(bool),
         contact=rows[:, 5].astype(bool),
         transition_speed=transition_speed(values, share) if rough else None,
+        max_reynolds_number=rows[:, 6] if case.options.turbulence != "off" else None,
+        turbulent=rows[:, 7].astype(bool) if case.options.turbulence != "off" else None,
     )

@@ -116,6 +116,24 @@ LINER_FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
 ]
 
 
+#: Results of a turbulent-film model (``[solver] turbulence`` on or auto), written only then: a
+#: laminar case's JSON keeps exactly its keys.
+TURBULENCE_FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
+    (
+        "max_reynolds_number",
+        "-",
+        "largest local Reynolds number rho omega R h / mu of the film",
+        lambda s: s.max_reynolds_number,
+    ),
+    (
+        "turbulent",
+        "-",
+        "whether the turbulence coefficients were applied (on, or auto above 41.3 sqrt(R/c))",
+        lambda s: s.turbulent,
+    ),
+]
+
+
 def _clean(value: Any) -> Any:
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
@@ -130,13 +148,16 @@ def state_summary(state: BearingState) -> dict[str, Any]:
     fields = FIELDS + MIXED_FIELDS if state.asperity_pressure is not None else FIELDS
     if state.liner_deformation is not None:
         fields = fields + LINER_FIELDS
+    if state.reynolds_number is not None:
+        fields = fields + TURBULENCE_FIELDS
     return {key: _clean(getter(state)) for key, _, _, getter in fields}
 
 
-def units(mixed: bool = False, liner: bool = False) -> dict[str, str]:
+def units(mixed: bool = False, liner: bool = False, turbulence: bool = False) -> dict[str, str]:
     """Unit of every key of :func:`state_summary` (with ``mixed``, of the rough-surface keys too;
-    with ``liner``, of the elastic liner's)."""
+    with ``liner``, of the elastic liner's; with ``turbulence``, of the turbulent film's)."""
     fields = (FIELDS + MIXED_FIELDS if mixed else FIELDS) + (LINER_FIELDS if liner else [])
+    fields = fields + (TURBULENCE_FIELDS if turbulence else [])
     return {key: unit for key, unit, _, _ in fields}
 
 
@@ -199,6 +220,16 @@ STRIBECK_FIELDS: list[tuple[str, str, str]] = [
     ("stribeck.converged", "-", "equilibrium reached at each speed"),
     ("stribeck.contact", "-", "load not carried within the clearance at each speed"),
     (
+        "stribeck.max_reynolds_number",
+        "-",
+        "largest local Reynolds number at each speed (with [bearing.solver] turbulence on or auto only)",
+    ),
+    (
+        "stribeck.turbulent",
+        "-",
+        "whether the turbulence coefficients applied at each speed (with turbulence on or auto only)",
+    ),
+    (
         "stribeck.transition_speed_rpm",
         "rpm",
         "speed above which the asperities carry less than 1 % of the load (null: not crossed in the range)",
@@ -211,6 +242,18 @@ def field_table() -> str:
     rows = [(key, unit, text) for key, unit, text, _ in FIELDS] + EXTRA_FIELDS
     rows += [(key, unit, f"{text} (with [bearing.surface] only)") for key, unit, text, _ in MIXED_FIELDS]
     rows += [(key, unit, f"{text} (with [bearing.liner] only)") for key, unit, text, _ in LINER_FIELDS]
+    rows += [
+        (key, unit, f"{text} (with [bearing.solver] turbulence on or auto only)")
+        for key, unit, text, _ in TURBULENCE_FIELDS
+    ]
+    rows.append(
+        (
+            "reynolds_number_map",
+            "-",
+            "local Reynolds number over the bore, rows from the aft edge, columns from the grid's first angle "
+            "(with [bearing.solver] turbulence on or auto only)",
+        )
+    )
     rows += [(key, unit, f"{text} (`bearing stribeck` only)") for key, unit, text in STRIBECK_FIELDS]
     return (
         "| key | unit | meaning |\n|---|---|---|\n"

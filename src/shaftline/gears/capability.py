@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
 
+import numpy as np
 import typer
 
 from shaftline.commandline import JsonOption, OutOption, StrictOption
@@ -217,6 +218,9 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
         from shaftline.gears.scuffing import SCUFFING
 
         found = []
+        clipped = _clipped_thermal_correction(result)
+        if clipped is not None:
+            found.append(clipped)
         over = result.sp > SCUFFING
         if over.any():
             k, j = (int(v) for v in next(zip(*over.nonzero(), strict=True)))
@@ -263,6 +267,27 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
             ),
             Figure("gears_sp.png", figures.sp_steps, (result,), caption="SP against torque beside ISO's S_B"),
         ]
+
+
+def _clipped_thermal_correction(result: GearResult) -> Finding | None:
+    """A finding (not acceptable as it stands, exit 3) where seed 002's thermal correction was
+    clipped to 0 outside its fit range (``extrapolate``): friction, frictional power and so SP are
+    0 or understated there, which no warning may leave looking like a safe result (issue 14 (g))."""
+    c = result.state.contact.thermal_correction
+    zero = c <= 0.0
+    if not zero.any():
+        return None
+    steps = np.asarray(zero.any(axis=-1))
+    k, j = (int(v) for v in next(zip(*steps.nonzero(), strict=True)))
+    study = result.study
+    return Finding(
+        f"seed 002's thermal correction (Eq. 6) was clipped to c = 0 beyond its fit range of eta0 p_H u at "
+        f"{int(zero.sum())} of {zero.size} points, first at {study.torques[k]:g} N m and "
+        f"{study.speeds[j] * 30 / math.pi:.0f} rpm (SP = {result.sp[k, j]:.2f}): friction and frictional power are 0 "
+        f"there, so SP is understated at {int(steps.sum())} of {steps.size} torque-speed steps - not a result; "
+        "the correlation does not cover this oil, load and speed.",
+        criterion=False,
+    )
 
 
 CAPABILITY = GearScuffing()

@@ -11,7 +11,7 @@ reference circle, as ISO uses it), ``b_H = sqrt(8 w rho_rel / (pi E_r))`` the He
 for that load, v the flank speeds across the line of action. This is ISO's general form
 (its constant 2.52 in mixed units is K = 0.80); ISO's form for cylindrical gears with the
 thermo-elastic, geometry and angle factors (X_M = 50 for steel, X_G, X_alpha_beta) is the same
-expression with rounded constants (within 1 %, tests/gears/test_flash.py). For helical gears the
+expression with rounded constants (within 1.1 %, tests/gears/test_scuffing.py). For helical gears the
 factor sqrt(cos beta_b) of ISO's angle factor X_alpha_beta is applied.
 
 Mean friction coefficient (ISO's method, constant along the path)::
@@ -45,7 +45,9 @@ import numpy as np
 from shaftline.errors import InputError
 from shaftline.gears.mesh import GearPair
 
-#: Blok's constant for a Hertzian (semi-elliptical) band heat source, as ISO's Eq. (5) has it.
+#: Blok's constant as ISO's Eq. (5) has it. Jaeger's moving band source gives 0.798 for a uniform
+#: flux over the Hertzian width and 0.786 (Blok's 1.11 on sqrt(2 b_H)) for the semi-elliptical one:
+#: ISO's 0.80 is Blok's value rounded up (tests/gears/test_scuffing.py, docs/theory.md 19.3).
 BLOK_CONSTANT = 0.80
 
 #: Thermal contact coefficient of martensitic steel, ISO's 435 N/(mm^0.5 m^0.5 s^0.5 K) in SI

@@ -19,8 +19,10 @@ from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph,
 
 if TYPE_CHECKING:
     from shaftline.monitor.case import MonitorSection
-    from shaftline.monitor.processing import Identified
-    from shaftline.monitor.study import MonitorResult, MonitorStudy, SimulatedPoint
+    from shaftline.monitor.forward import Recording
+    from shaftline.monitor.probes import ProbeLayout
+    from shaftline.monitor.processing import Identified, RejectedWindow
+    from shaftline.monitor.study import MonitorResult, MonitorStudy, WindowResult
     from shaftline.monitor.trends import LambdaAlarm, SectionTrend
 
 RPM = 30 / math.pi
@@ -168,6 +170,12 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
     def findings(self, result: MonitorResult) -> list[Finding]:
         found = []
         if result.identified is not None:
+            # windows that could not be identified make the run's result not acceptable (exit 3)
+            found += [
+                Finding(_rejected_text(item.plan.recording.path.name, item.processed.rejected), criterion=False)
+                for item in result.identified.recordings
+                if item.processed.rejected
+            ]
             found += [
                 Finding(_alarm_text(alarm, result.identified.lambda_threshold), criterion=True)
                 for item in result.identified.recordings
@@ -189,7 +197,11 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
     def summary(self, result: MonitorResult) -> list[Block]:
         blocks: list[Block] = []
         if result.identified is not None:
-            blocks += _masked_warnings(result.identified) + [_identified_table(result.identified)]
+            blocks += [
+                *_masked_warnings(result.identified),
+                _runout_note(result.identified),
+                _identified_table(result.identified),
+            ]
         if result.points:
             blocks.append(self._table(result))
         if not blocks:
@@ -197,15 +209,12 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
         return blocks
 
     def report(self, result: MonitorResult) -> list[Block]:
-        from dataclasses import replace
 
         import numpy as np
 
         from shaftline.monitor import figures
-        from shaftline.monitor.bending import film_map
         from shaftline.monitor.orbits import shaft_centre_line
         from shaftline.monitor.regimes import thresholds
-        from shaftline.monitor.study import FILM_ANGLES
 
         study = result.study
         layout = study.layout
@@ -222,7 +231,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             )
         ]
         if result.identified is not None:
-            blocks += _identified_blocks(result.identified, (low, high))
+            blocks += _identified_blocks(result.identified, (low, high), layout)
         if not result.points:
             return blocks
         rig = study.rig
@@ -247,38 +256,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                 caption="smallest film along the bearing at each speed on the regime bands",
             )
         )
-        theta = FILM_ANGLES
-        stations = window.stations
-        # The map of the time-mean centre line on a 0.5 deg grid (every sample on it would not fit in memory).
-        mean_line = replace(
-            window.line,
-            coefficients_y=window.line.coefficients_y.mean(axis=0, keepdims=True),
-            coefficients_z=window.line.coefficients_z.mean(axis=0, keepdims=True),
-        )
-        fine = np.radians(np.arange(0.0, 360.0, 0.5))
-        blocks.append(
-            Figure(
-                "monitor_film_map.png",
-                figures.film_map,
-                (fine, stations, film_map(mean_line, layout, fine, stations)[0], layout),
-                caption=f"unwrapped full-bearing film of the mean centre line at {_rpm(window.speed)} with the "
-                "regime contours",
-            )
-        )
-        for index, orbit in enumerate(window.orbits):
-            blocks.append(Heading(f"Section {orbit.name} at {_rpm(window.speed)}"))
-            blocks.append(
-                Figure(f"monitor_orbit_{index}.png", figures.orbit, (orbit,), caption="orbit in the clearance circle")
-            )
-            blocks.append(
-                Figure(
-                    f"monitor_film_polar_{index}.png",
-                    figures.film_polar,
-                    (theta, window.films[index], layout),
-                    {"label": orbit.name},
-                    caption="film round the section",
-                )
-            )
+        blocks += _window_blocks(window, layout, "monitor")
         middle = len(window.orbits) // 2
         points = shaft_centre_line(
             np.array([p.window.speed / (2 * math.pi) for p in result.points]),
@@ -298,18 +276,74 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                 blocks.append(
                     DataFile(
                         f"recording_{point.recording.speed * RPM:.0f}rpm.csv",
-                        _recording_writer(point, layout.channels),
+                        _recording_writer(point.recording, layout.channels),
                         f"synthetic recording at {_rpm(point.recording.speed)} (time, probe outputs in V, keyphasor)",
+                    )
+                )
+            if result.slow_roll is not None:
+                # what `monitor identify --slow-roll` measures the runout on
+                blocks.append(
+                    DataFile(
+                        f"slow_roll_{result.slow_roll.speed * RPM:.0f}rpm.csv",
+                        _recording_writer(result.slow_roll, layout.channels),
+                        f"synthetic slow-roll recording at {_rpm(result.slow_roll.speed)} (the runout)",
                     )
                 )
         return blocks
 
 
-def _recording_writer(point: SimulatedPoint, channels: tuple[str, ...]) -> Any:
+def _window_blocks(window: WindowResult, layout: ProbeLayout, prefix: str, label: str = "") -> list[Block]:
+    """The unwrapped film map of a window's mean centre line, and the orbit and the film round
+    each section, as figures named ``prefix``_film_map.png, ``prefix``_orbit_<i>.png and
+    ``prefix``_film_polar_<i>.png."""
+    from dataclasses import replace
+
+    import numpy as np
+
+    from shaftline.monitor import figures
+    from shaftline.monitor.bending import film_map
+    from shaftline.monitor.study import FILM_ANGLES
+
+    blocks: list[Block] = []
+    theta = FILM_ANGLES
+    stations = window.stations
+    where = label or _rpm(window.speed)
+    # The map of the time-mean centre line on a 0.5 deg grid (every sample on it would not fit in memory).
+    mean_line = replace(
+        window.line,
+        coefficients_y=window.line.coefficients_y.mean(axis=0, keepdims=True),
+        coefficients_z=window.line.coefficients_z.mean(axis=0, keepdims=True),
+    )
+    fine = np.radians(np.arange(0.0, 360.0, 0.5))
+    blocks.append(
+        Figure(
+            f"{prefix}_film_map.png",
+            figures.film_map,
+            (fine, stations, film_map(mean_line, layout, fine, stations)[0], layout),
+            caption=f"unwrapped full-bearing film of the mean centre line at {where} with the regime contours",
+        )
+    )
+    for index, orbit in enumerate(window.orbits):
+        blocks.append(Heading(f"Section {orbit.name} at {where}"))
+        blocks.append(
+            Figure(f"{prefix}_orbit_{index}.png", figures.orbit, (orbit,), caption="orbit in the clearance circle")
+        )
+        blocks.append(
+            Figure(
+                f"{prefix}_film_polar_{index}.png",
+                figures.film_polar,
+                (theta, window.films[index], layout),
+                {"label": orbit.name},
+                caption="film round the section",
+            )
+        )
+    return blocks
+
+
+def _recording_writer(recording: Recording, channels: tuple[str, ...]) -> Any:
     def write(path: Path) -> None:
         import numpy as np
 
-        recording = point.recording
         time = np.arange(recording.signals.shape[0]) / recording.sample_rate
         table = np.column_stack([time, recording.signals, recording.keyphasor])
         header = ",".join(["time_s", *channels, "keyphasor"])
@@ -319,7 +353,20 @@ def _recording_writer(point: SimulatedPoint, channels: tuple[str, ...]) -> Any:
 
 
 def _when(moment: Any) -> str:
-    return f"{moment:%Y-%m-%d %H:%M:%S}"
+    import datetime as dt
+
+    # to the nearest second: a time a microsecond short of a whole second is shown as that second
+    return f"{moment + dt.timedelta(microseconds=500_000):%Y-%m-%d %H:%M:%S}"
+
+
+def _rejected_text(name: str, rejected: Sequence[RejectedWindow]) -> str:
+    shown = ", ".join(
+        f"{w.window} ({_when(w.time)}: {w.reason}, {w.invalid_share:.1%} invalid)" for w in rejected[:5]
+    ) + (f" and {len(rejected) - 5} more" if len(rejected) > 5 else "")
+    return (
+        f"{name}: {len(rejected)} window{'s' if len(rejected) > 1 else ''} not identified and flagged as rejected in "
+        f"the database, left out of the trends: {shown}."
+    )
 
 
 def _alarm_text(alarm: LambdaAlarm, threshold: float) -> str:
@@ -363,10 +410,21 @@ def _trend_json(trend: SectionTrend) -> dict[str, Any]:
 
 def identified_json(identified: Identified) -> dict[str, Any]:
     """``monitor.identify`` of results.json: per recording its windows and trends (SI units)."""
+    slow = identified.slow_roll
     return {
         "database": identified.database,
         "lambda_threshold": identified.lambda_threshold,
         "alarm_duration": identified.alarm_duration,
+        "slow_roll": None
+        if slow is None
+        else {
+            "name": slow.name,
+            "content_hash": slow.content_hash,
+            "speed": slow.speed,
+            "revolutions": slow.revolutions,
+            "masked_samples": slow.masked,
+            "runout_peak_to_peak": dict(zip(slow.channels, slow.peak_to_peak.tolist(), strict=True)),
+        },
         "recordings": [
             {
                 "name": item.plan.recording.path.name,
@@ -377,11 +435,38 @@ def identified_json(identified: Identified) -> dict[str, Any]:
                 "windows": item.processed.windows,
                 "written": item.processed.written,
                 "masked_samples": item.processed.masked,
+                "rejected_windows": [
+                    {
+                        "window": w.window,
+                        "time": w.time.isoformat(),
+                        "reason": w.reason,
+                        "invalid_share": w.invalid_share,
+                    }
+                    for w in item.processed.rejected
+                ],
                 "sections": {trend.section: _trend_json(trend) for trend in item.trends},
             }
             for item in identified.recordings
         ],
     }
+
+
+def _runout_note(identified: Identified) -> Paragraph:
+    slow = identified.slow_roll
+    if slow is None:
+        return Paragraph(
+            "No slow-roll recording (--slow-roll or [monitor.identify] slow_roll): the probes' runout is not "
+            "subtracted, so it shows in the orbits, the 1X vectors and each window's lowest film (not in the mean "
+            "film, over whole revolutions)."
+        )
+    import numpy as np
+
+    worst = int(np.argmax(slow.peak_to_peak))
+    return Paragraph(
+        f"Runout subtracted from every window: measured on {slow.name} ({slow.revolutions} revolutions at "
+        f"{_rpm(slow.speed)}), up to {slow.peak_to_peak[worst] * MICRO:.2f} µm peak to peak (probe "
+        f"{slow.channels[worst]})."
+    )
 
 
 def _masked_warnings(identified: Identified) -> list[Block]:
@@ -421,6 +506,7 @@ def _identified_table(identified: Identified) -> Table:
                 _when(done.recording.started_at),
                 f"{done.windows}",
                 f"{done.written}",
+                f"{len(done.rejected)}",
                 f"{np.nanmean(speeds) * RPM:.0f}" if speeds.size else "-",
                 films,
                 lowest,
@@ -436,6 +522,7 @@ def _identified_table(identified: Identified) -> Table:
             "start (UTC)",
             "windows",
             "stored now",
+            "rejected",
             "speed [rpm]",
             f"mean h_min {names} [µm]",
             "min lambda",
@@ -447,10 +534,10 @@ def _identified_table(identified: Identified) -> Table:
     )
 
 
-def _identified_blocks(identified: Identified, levels: tuple[float, float]) -> list[Block]:
+def _identified_blocks(identified: Identified, levels: tuple[float, float], layout: ProbeLayout) -> list[Block]:
     from shaftline.monitor import figures
 
-    blocks: list[Block] = [*_masked_warnings(identified), _identified_table(identified)]
+    blocks: list[Block] = [*_masked_warnings(identified), _runout_note(identified), _identified_table(identified)]
     for index, item in enumerate(identified.recordings):
         if not item.trends:
             continue
@@ -464,6 +551,26 @@ def _identified_blocks(identified: Identified, levels: tuple[float, float]) -> l
                 "thresholds, lambda alarms shaded",
             )
         )
+    # what the trends leave out: the film round and along the bearing, the orbits, of the last
+    # window identified of each recording (the figures `monitor simulate` draws of its recordings)
+    last = [(item, item.processed.last) for item in identified.recordings if item.processed.last is not None]
+    if last:
+        item, window = last[-1]
+        name = item.plan.recording.path.name
+        blocks.append(Heading(f"Last window identified: {name}, window {item.processed.last_window}"))
+        blocks.append(
+            Figure(
+                "monitor_identified_min_film.png",
+                figures.min_film_along,
+                (
+                    window.stations,
+                    {f"{i.plan.recording.path.name} ({_rpm(w.speed)})": w.min_film for i, w in last},
+                    layout,
+                ),  # fmt: skip
+                caption="smallest film along the bearing in the last window of each recording on the regime bands",
+            )
+        )
+        blocks += _window_blocks(window, layout, "monitor_identified", f"{_rpm(window.speed)} ({name})")
     return blocks
 
 
@@ -479,6 +586,14 @@ def identify_command(
             "--db",
             help="Trend database: a SQLAlchemy URL (postgresql+psycopg://user@host/name) or a SQLite file; default: "
             "[monitor.identify] database, monitor.sqlite beside the case file.",
+        ),
+    ] = None,
+    slow_roll: Annotated[
+        Path | None,
+        typer.Option(
+            "--slow-roll",
+            help="Slow-roll recording whose runout of each probe is subtracted from every window; default: "
+            "[monitor.identify] slow_roll, else none.",
         ),
     ] = None,
     json_path: JsonOption = None,
@@ -499,6 +614,8 @@ def identify_command(
         overrides["monitor.identify.recordings"] = [str(path.expanduser().resolve()) for path in recordings]
     if db is not None:
         overrides["monitor.identify.database"] = db if "://" in db else str(Path(db).expanduser().resolve())
+    if slow_roll is not None:
+        overrides["monitor.identify.slow_roll"] = str(slow_roll.expanduser().resolve())
     run_cases(
         Path(case_file),
         json_path,
@@ -576,6 +693,7 @@ def _trends(
 
     from shaftline.errors import InputError
     from shaftline.monitor import figures
+    from shaftline.monitor.processing import rejected_windows
     from shaftline.monitor.trends import TrendStore, _hide_password, centre_lines, section_trends
     from shaftline.units import to_si
 
@@ -605,13 +723,16 @@ def _trends(
     database = db if db is not None else plan.database if plan is not None else "monitor.sqlite"
     url = TrendStore.url_of(database if "://" in database else Path(database).expanduser())
     shown = _hide_password(url)
-    if url.startswith("sqlite:///") and not Path(url.removeprefix("sqlite:///")).is_file():
+    file = TrendStore.file_of(url)
+    if file is not None and not file.is_file():
         raise InputError("--db", shown, "", "an existing trend database (made by monitor identify)")
-    check_outputs(out, json_path, inputs)
+    # the database is read here and written by every identify run: no output may replace it
+    check_outputs(out, json_path, [*inputs, *([file] if file is not None else [])])
     with TrendStore(url) as store:
         trends = section_trends(store, threshold, dt.timedelta(seconds=duration), limit)
         lines = centre_lines(store)
         stored = store.recordings()
+        rejected = {r.id: rejected_windows(store, r) for r in stored}
     if not trends:
         raise InputError("--db", shown, "", "a database with identified windows (run monitor identify first)")
     bearing = next((t for t in trends if t.section == "bearing"), trends[-1])
@@ -640,6 +761,7 @@ def _trends(
             f"UTC. Alarms: film parameter below {threshold:g} for {duration:g} s or more. Trend: least-squares "
             f"straight line of the smallest film against time, projected to the limit {bearing.limit * MICRO:.2f} µm."
         ),
+        *[Paragraph("warning: " + _rejected_text(r.name, rejected[r.id]), "warn") for r in stored if rejected[r.id]],
         *[Paragraph("warning: " + _alarm_text(a, threshold), "warn") for t in trends for a in t.alarms],
         Table(
             [
@@ -681,6 +803,7 @@ def _trends(
                 "content_hash": r.content_hash,
                 "started_at": r.started_at.isoformat(),
                 "complete": r.complete,
+                "rejected_windows": len(rejected[r.id]),
             }
             for r in stored
         ],

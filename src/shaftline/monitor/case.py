@@ -178,7 +178,10 @@ class IdentifySection(Section):
     (``shaftline monitor identify CASE.toml RECORDING...``)."""
 
     keyphasor: str = "keyphasor"
-    """Name of the once-per-revolution channel."""
+    """Name of the once-per-revolution channel; "" for recordings without one (then speed)."""
+    speed: Annotated[PositiveSpeed, SHAFT_SPEED] | None = None
+    """Shaft speed of recordings without a keyphasor: windows are cut into revolutions from the first
+    sample at this speed (1X phases are then against the recording's start; no slow-roll runout)."""
     window: Annotated[
         PositiveTime, Plausible(0.05, 600.0, "windows of a few revolutions: 0.05 s to 10 min (engineering judgement)")
     ] = 2.0
@@ -195,6 +198,10 @@ class IdentifySection(Section):
     recordings: list[str] = []
     """Recording files (CSV, Parquet, HDF5, TDMS), relative to this case; the command's RECORDING
     arguments replace them."""
+    slow_roll: str | None = None
+    """Slow-roll recording (same channels, a speed at which film and unbalance do not move the
+    journal): each probe's runout against the keyphasor's phase is measured on it and subtracted
+    from every window; --slow-roll replaces it. None: no runout compensation."""
     database: str = "monitor.sqlite"
     """Trend database: a SQLAlchemy URL, or a SQLite file relative to this case (made if new);
     --db replaces it."""
@@ -322,12 +329,18 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
 
 def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyPlan:
     from shaftline.monitor.study import IdentifyPlan
+    from shaftline.monitor.trends import TrendStore
 
     database = section.database
     if "://" not in database:
         # a file beside the case: kept across runs, never one of the run's inputs
         database = str(context.base_dir / Path(database).expanduser())
+    file = TrendStore.file_of(database)
+    if file is not None:
+        # written in place by the run: no --json or --out may replace it or hold it
+        context.kept.append(file)
     recordings = tuple(str(context.path(name)) for name in section.recordings)
+    slow_roll = None if section.slow_roll is None else str(context.path(section.slow_roll))
     start = section.start
     if start is not None and start.tzinfo is None:
         start = start.replace(tzinfo=dt.UTC)
@@ -342,6 +355,8 @@ def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyP
         max_invalid_share=section.max_invalid_share,
         lambda_threshold=section.lambda_threshold,
         alarm_duration=section.alarm_duration,
+        slow_roll=slow_roll,
+        speed=section.speed,
     )
 
 

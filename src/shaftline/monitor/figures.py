@@ -59,7 +59,8 @@ def orbit(section: SectionOrbit, *, ax: Any) -> Any:
     zoom.plot(*mean, "C3+")
     zoom.set_aspect("equal", adjustable="datalim")
     zoom.set_xlabel("horizontal [µm]")
-    zoom.set_title(f"orbit, h_min {section.min_film.min() * MICRO:.2f} µm")
+    film = section.min_film
+    zoom.set_title(f"orbit, h_min {film.mean() * MICRO:.2f} µm (mean), {film.min() * MICRO:.2f} µm (lowest)")
     return ax
 
 
@@ -173,6 +174,7 @@ def centre_line_vs_speed(points: CentreLinePoints, clearance: float, rotation: i
     full.set_ylabel("vertical [µm]")
     full.legend(fontsize=8)
     zoom.set_aspect("equal", adjustable="datalim")
+    zoom.xaxis.set_major_locator(_few_ticks())  # an equal-aspect zoom widens the x range: labels overlap
     zoom.set_title("averaged shaft centre line")
     return ax
 
@@ -233,6 +235,13 @@ def trend(
     return ax
 
 
+def _few_ticks() -> Any:
+    """Five major ticks at most (the zoom of a short centre line: its labels overlap otherwise)."""
+    from matplotlib.ticker import MaxNLocator
+
+    return MaxNLocator(5)
+
+
 @figure_function(layout=(1, 2), size=(10, 4.8))
 def centre_line_ratio(lines: Sequence[TrendCentreLine], *, ax: Any) -> Any:
     """Averaged shaft centre line of each section from the stored windows, in eccentricity
@@ -255,5 +264,7 @@ def centre_line_ratio(lines: Sequence[TrendCentreLine], *, ax: Any) -> Any:
     full.legend(fontsize=7)
     zoom.set_aspect("equal", adjustable="datalim")
     zoom.set_xlabel("horizontal e/c (labels: rpm)")
+    # an equal-aspect zoom of a short line widens the x range: fewer ticks, or their labels overlap
+    zoom.xaxis.set_major_locator(_few_ticks())
     zoom.set_title("averaged shaft centre line against speed")
     return ax

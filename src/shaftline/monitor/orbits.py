@@ -174,6 +174,33 @@ def fit_ellipse(ey: np.ndarray, ez: np.ndarray) -> Ellipse:
     )
 
 
+def phase_bin_sums(signal: np.ndarray, phase: np.ndarray, bins: int = 128) -> tuple[np.ndarray, np.ndarray]:
+    """Sums of ``signal`` (N,) or (N, c) in ``bins`` equal steps of shaft phase, (bins, c), and
+    the samples in each, (bins,): what :func:`synchronous_average` divides, kept apart so that a
+    long recording can be averaged block by block."""
+    signal = np.asarray(signal, dtype=float)
+    flat = signal.reshape(signal.shape[0], -1)
+    index = (np.floor((np.asarray(phase) % (2 * math.pi)) / (2 * math.pi) * bins).astype(int)) % bins
+    counts = np.bincount(index, minlength=bins).astype(float)
+    sums = np.stack([np.bincount(index, weights=column, minlength=bins) for column in flat.T], axis=1)
+    return sums, counts
+
+
+def binned_average(sums: np.ndarray, counts: np.ndarray) -> np.ndarray:
+    """Mean in each phase bin from :func:`phase_bin_sums`, (bins, c); empty bins filled by
+    periodic interpolation."""
+    bins = counts.size
+    filled = counts > 0
+    if not filled.any():
+        raise InputError("signal", 0, "samples", "at least one sample")
+    centres = (np.arange(bins) + 0.5) * 2 * math.pi / bins
+    mean = np.empty_like(sums)
+    for column in range(sums.shape[1]):
+        known = sums[filled, column] / counts[filled]
+        mean[:, column] = np.interp(centres, centres[filled], known, period=2 * math.pi)
+    return mean
+
+
 def synchronous_average(signal: np.ndarray, phase: np.ndarray, bins: int = 128) -> np.ndarray:
     """Mean of ``signal`` (N,) or (N, c) in ``bins`` equal steps of shaft phase: one averaged revolution.
 
@@ -182,19 +209,10 @@ def synchronous_average(signal: np.ndarray, phase: np.ndarray, bins: int = 128) 
     periodic interpolation.
     """
     signal = np.asarray(signal, dtype=float)
-    flat = signal.reshape(signal.shape[0], -1)
-    index = (np.floor((np.asarray(phase) % (2 * math.pi)) / (2 * math.pi) * bins).astype(int)) % bins
-    counts = np.bincount(index, minlength=bins).astype(float)
-    sums = np.stack([np.bincount(index, weights=column, minlength=bins) for column in flat.T], axis=1)
-    filled = counts > 0
-    if not filled.any():
+    if signal.shape[0] == 0:
         raise InputError("signal", signal.shape[0], "samples", "at least one sample")
-    centres = (np.arange(bins) + 0.5) * 2 * math.pi / bins
-    mean = np.empty_like(sums)
-    for column in range(sums.shape[1]):
-        known = sums[filled, column] / counts[filled]
-        mean[:, column] = np.interp(centres, centres[filled], known, period=2 * math.pi)
-    return mean.reshape((bins,) + signal.shape[1:])
+    sums, counts = phase_bin_sums(signal, phase, bins)
+    return binned_average(sums, counts).reshape((bins,) + signal.shape[1:])
 
 
 def runout_profile(gaps: np.ndarray, phase: np.ndarray, bins: int = 128) -> np.ndarray:

@@ -14,14 +14,14 @@ from __future__ import annotations
 
 import datetime as dt
 import math
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
 from shaftline.errors import InputError
-from shaftline.monitor.orbits import revolution_marks
+from shaftline.monitor.orbits import binned_average, phase_bin_sums, revolution_marks, shaft_phase, speed_from_marks
 from shaftline.monitor.probes import ProbeLayout, within_range
 from shaftline.monitor.recordings import Recording, open_recording
 from shaftline.monitor.regimes import film_ratio
@@ -38,8 +38,10 @@ __all__ = [
     "RecordingPlan",
     "identify_recordings",
     "mask_invalid",
+    "SlowRoll",
     "plan_recording",
     "process_recording",
+    "slow_roll_runout",
     "window_values",
 ]
 
@@ -83,6 +85,8 @@ def window_values(result: WindowResult, layout: ProbeLayout) -> dict[tuple[str, 
     return values
 
 
+#: Why a window was not identified (the value of ``(BEARING, "rejected")`` in the store).
+REJECTED = {1: "more than max_invalid_share of its probe samples NaN or beyond range", 2: "no whole shaft revolution"}
 #: Largest share of a window's probe samples that may be NaN or beyond the probe's range
 #: (masked and filled); beyond it the window is refused (engineering judgement: 1 % of a
 #: window's samples filled by interpolation moves its mean film by less than the noise).
@@ -107,6 +111,12 @@ class RecordingPlan:
         Windows in the recording.
     started_at : datetime
         Time of its first sample.
+    keyphasor : str
+        Its once-per-revolution channel ("": none; then ``speed``).
+    speed : float or None
+        Shaft speed given for a recording without a keyphasor, rad/s.
+    channels : tuple of str
+        The probes' channels, in the layout's order.
     """
 
     recording: Recording
@@ -114,6 +124,25 @@ class RecordingPlan:
     size: int
     windows: int
     started_at: dt.datetime
+    keyphasor: str = "keyphasor"
+    speed: float | None = None
+    channels: tuple[str, ...] = ()
+
+    def blocks(self, start: int = 0) -> Iterator[tuple[int, np.ndarray]]:
+        """Windows of probe outputs with the keyphasor as the last column, from window ``start``:
+        the recording's channel, or without one, one-sample marks at every revolution of the given
+        speed counted from the first sample (the 1X phases are then against the recording's
+        start, not a mark on the shaft)."""
+        layout_columns = list(self.channels)
+        if self.keyphasor:
+            yield from self.recording.blocks([*layout_columns, self.keyphasor], size=self.size, start=start * self.size)
+            return
+        assert self.speed is not None
+        step = self.speed / (2 * math.pi) / self.sample_rate  # revolutions a sample
+        for first, block in self.recording.blocks(layout_columns, size=self.size, start=start * self.size):
+            turns = (first + np.arange(block.shape[0])) * step
+            marks = np.floor(turns) != np.floor(turns - step)
+            yield first, np.column_stack([block, np.where(marks, 5.0, 0.0)])
 
     @property
     def duration(self) -> float:
@@ -137,6 +166,14 @@ class ProcessedRecording:
         masked and filled by interpolation along time.
     samples : int
         Probe samples of the windows of this run.
+    rejected : tuple of RejectedWindow
+        Windows of the recording in the store (this run's and earlier ones') that were not
+        identified: flagged there with the reason, left out of the trends.
+    last : WindowResult or None
+        The last window this run identified (for the report's figures), None when it
+        identified none.
+    last_window : int
+        Its number (-1 without one).
     """
 
     recording: StoredRecording
@@ -144,6 +181,48 @@ class ProcessedRecording:
     written: int
     masked: int = 0
     samples: int = 0
+    rejected: tuple[RejectedWindow, ...] = ()
+    last: WindowResult | None = field(default=None, repr=False, compare=False)
+    last_window: int = -1
+
+
+@dataclass(frozen=True)
+class RejectedWindow:
+    """A window stored as not acceptable instead of identified.
+
+    Attributes
+    ----------
+    window : int
+        Its number in the recording.
+    time : datetime
+        Time of its first sample.
+    reason : str
+        Why (:data:`REJECTED`).
+    invalid_share : float
+        Share of its probe samples that were NaN or beyond range.
+    """
+
+    window: int
+    time: dt.datetime
+    reason: str
+    invalid_share: float
+
+
+def rejected_windows(store: TrendStore, recording: StoredRecording) -> tuple[RejectedWindow, ...]:
+    """The windows of ``recording`` flagged in ``store`` as not identified, in order."""
+    flags = store.series("rejected", BEARING, recording=recording)
+    shares = store.series("invalid_share", BEARING, recording=recording)
+    share_of = dict(zip(shares["window"], shares["value"], strict=True))
+    return tuple(
+        RejectedWindow(
+            int(row.window),
+            row.time.to_pydatetime(),
+            REJECTED.get(int(row.value), "unknown"),
+            float(share_of.get(row.window, math.nan)),
+        )
+        for row in flags.itertuples()
+        if row.value and math.isfinite(row.value)
+    )
 
 
 def mask_invalid(layout: ProbeLayout, signals: np.ndarray) -> tuple[np.ndarray, int]:
@@ -201,6 +280,128 @@ def _check_units(layout: ProbeLayout, signals: np.ndarray, where: str) -> None:
             )
 
 
+@dataclass(frozen=True, eq=False)
+class SlowRoll:
+    """The runout of every probe measured on a slow-roll recording.
+
+    Attributes
+    ----------
+    name : str
+        The recording's file name.
+    content_hash : str
+        SHA-256 of its bytes.
+    speed : float
+        Mean shaft speed over its whole revolutions, rad/s.
+    revolutions : int
+        Whole revolutions averaged.
+    profile : ndarray (bins, channels)
+        Runout of each probe against the keyphasor's shaft phase, mean removed, m
+        (:func:`~shaftline.monitor.orbits.runout_profile`).
+    masked : int
+        Probe samples that were NaN or beyond range, masked and filled.
+    channels : tuple of str
+        The probes' channels, in the order of the profile's columns.
+    """
+
+    name: str
+    content_hash: str
+    speed: float
+    revolutions: int
+    profile: np.ndarray
+    masked: int = 0
+    channels: tuple[str, ...] = ()
+
+    @property
+    def peak_to_peak(self) -> np.ndarray:
+        """Peak-to-peak runout of each probe, m."""
+        return np.ptp(self.profile, axis=0)
+
+
+#: Samples read at a time from a slow-roll recording (its revolutions are long: 4 s at 15 rpm).
+SLOW_ROLL_BLOCK = 1 << 18
+#: Bins of shaft phase of the runout profile (2.8 deg; the runout is a few harmonics).
+RUNOUT_BINS = 128
+
+
+def slow_roll_runout(
+    layout: ProbeLayout,
+    path: str | Path,
+    keyphasor: str,
+    sample_rate: float | None = None,
+    ignore_channels: tuple[str, ...] | None = None,
+    max_invalid_share: float = MAX_INVALID_SHARE,
+    bins: int = RUNOUT_BINS,
+) -> SlowRoll:
+    """Runout of every probe from a slow-roll recording: the synchronous average of each probe's
+    gap over the recording's whole revolutions, less its mean (Bently Nevada's slow-roll vector,
+    every harmonic kept).
+
+    The recording is read in blocks; the samples after a block's last keyphasor mark are carried
+    into the next, so every whole revolution counts once whatever the block size. Invalid samples
+    are masked as in :func:`mask_invalid`, the share checked per block.
+
+    Raises
+    ------
+    InputError
+        One line naming the file: channels, sample rate, units (the median film inside the
+        clearance), too many invalid samples, or fewer than one whole revolution.
+    """
+    recording = open_recording(path)
+    columns = [*layout.channels, keyphasor]
+    rate = recording.sample_rate(columns, given=sample_rate)
+    name = recording.path.name
+    if ignore_channels is not None:
+        extra = [c for c in recording.channels if c not in columns and c not in ignore_channels]
+        if extra:
+            raise InputError(
+                f"{name} channels",
+                ", ".join(extra),
+                "",
+                "only the probes' and the keyphasor's (name others in ignore_channels)",
+            )
+    sums = np.zeros((bins, len(layout.channels)))
+    counts = np.zeros(bins)
+    carry_gaps = np.empty((0, len(layout.channels)))
+    carry_key = np.empty(0)
+    turns = masked = 0
+    span = 0  # samples from the first mark to the last
+    for first, block in recording.blocks(columns, size=SLOW_ROLL_BLOCK):
+        where = f"{name} samples {first}-{first + block.shape[0] - 1}"
+        if first == 0:
+            _check_units(layout, block[:, :-1], where)
+        signals, bad = mask_invalid(layout, block[:, :-1])
+        _check_share(bad, signals.size, max_invalid_share, where)
+        masked += bad
+        gaps = np.concatenate([carry_gaps, layout.gaps(signals)])
+        key = np.concatenate([carry_key, block[:, -1]])
+        marks = revolution_marks(key) if key.size >= 2 else np.empty(0, dtype=int)
+        if marks.size >= 2:
+            kept = slice(int(marks[0]), int(marks[-1]))
+            phase = shaft_phase(key.size, marks)[kept]
+            block_sums, block_counts = phase_bin_sums(gaps[kept], phase, bins)
+            sums += block_sums
+            counts += block_counts
+            turns += marks.size - 1
+            span += int(marks[-1] - marks[0])
+            # from the sample before the last mark: a mark on a block's first sample is no edge
+            carry_gaps, carry_key = gaps[int(marks[-1]) - 1 :], key[int(marks[-1]) - 1 :]
+        else:
+            carry_gaps, carry_key = gaps, key
+        if carry_key.size > 64 * SLOW_ROLL_BLOCK:
+            break  # no mark for 16 M samples: the keyphasor is not there (reported below)
+    if turns < 1:
+        raise InputError(
+            f"{name} keyphasor {keyphasor}",
+            f"{turns} whole revolutions",
+            "",
+            "a slow-roll recording of one whole revolution or more (two keyphasor marks)",
+        )
+    average = binned_average(sums, counts)
+    profile = average - average.mean(axis=0)
+    speed = 2 * np.pi * turns * rate / span
+    return SlowRoll(name, recording.content_hash(), float(speed), turns, profile, masked, layout.channels)
+
+
 def plan_recording(
     layout: ProbeLayout,
     path: str | Path,
@@ -210,11 +411,13 @@ def plan_recording(
     started_at: dt.datetime | None = None,
     ignore_channels: tuple[str, ...] | None = None,
     max_invalid_share: float = MAX_INVALID_SHARE,
+    speed: float | None = None,
 ) -> RecordingPlan:
     """Open a recording and check it before anything of it is stored: its channels (every
     probe and the keyphasor; with ``ignore_channels`` given, no others but those), one sample
     rate, at least one window, and a first window whose films lie inside the clearance (the
     units) with no more than ``max_invalid_share`` of its probe samples NaN or beyond range.
+    ``keyphasor`` "" reads a recording without one at the given shaft ``speed`` (rad/s).
 
     Raises
     ------
@@ -223,8 +426,12 @@ def plan_recording(
     """
     if not (isinstance(window_seconds, float | int) and math.isfinite(window_seconds) and window_seconds > 0.0):
         raise InputError("window_seconds", window_seconds, "s", "a positive length of a few revolutions")
+    if not keyphasor and not (speed is not None and math.isfinite(speed) and speed > 0.0):
+        raise InputError(
+            "speed", "none" if speed is None else speed, "rad/s", "the shaft speed of recordings without a keyphasor"
+        )
     recording = open_recording(path)
-    columns = [*layout.channels, keyphasor]
+    columns = [*layout.channels, keyphasor] if keyphasor else list(layout.channels)
     rate = recording.sample_rate(columns, given=sample_rate)
     if ignore_channels is not None:
         extra = [c for c in recording.channels if c not in columns and c not in ignore_channels]
@@ -242,7 +449,10 @@ def plan_recording(
         raise InputError(
             "window_seconds", window_seconds, "s", f"at most the recording's {recording.samples / rate:g} s"
         )
-    first = next(recording.blocks(columns, size=size))[1]
+    plan = RecordingPlan(
+        recording, rate, size, windows, dt.datetime.now(dt.UTC), keyphasor, speed, tuple(layout.channels)
+    )
+    first = next(plan.blocks())[1]
     marks = revolution_marks(first[:, -1])
     if marks.size < 2:
         raise InputError(
@@ -250,7 +460,7 @@ def plan_recording(
             window_seconds,
             "s",
             f"a window of one shaft revolution or more (window 0 of {recording.path.name} holds {marks.size} "
-            f"marks of the keyphasor {keyphasor})",
+            f"marks of the keyphasor {keyphasor or 'made from the given speed'})",
         )
     where = f"{recording.path.name} window 0"
     _check_units(layout, first[:, :-1], where)
@@ -258,7 +468,7 @@ def plan_recording(
     _check_share(masked, first[:, :-1].size, max_invalid_share, where)
     if started_at is None:
         started_at = dt.datetime.fromtimestamp(recording.path.stat().st_mtime, tz=dt.UTC)
-    return RecordingPlan(recording, rate, size, windows, started_at)
+    return replace(plan, started_at=started_at)
 
 
 def process_recording(
@@ -272,6 +482,7 @@ def process_recording(
     shape: tuple[np.ndarray, np.ndarray] | None = None,
     progress: Callable[[int, int], None] | None = None,
     max_invalid_share: float = MAX_INVALID_SHARE,
+    runout: np.ndarray | None = None,
 ) -> ProcessedRecording:
     """Identify every window of a recording and store its summary.
 
@@ -298,13 +509,19 @@ def process_recording(
         Called with (windows done, windows in all) after each window.
     max_invalid_share : float
         Largest share of a window's probe samples that may be NaN or beyond range (masked,
-        filled and counted); a window beyond it raises before it is stored.
+        filled and counted). The first window beyond it refuses the recording before anything
+        is stored (:func:`plan_recording`); a later one, or one without a whole shaft
+        revolution, is stored as rejected (``(BEARING, "rejected")`` = the :data:`REJECTED`
+        code, with its ``invalid_share``), not identified, and the run carries on.
+    runout : ndarray (bins, channels), optional
+        Slow-roll runout of each probe (:func:`slow_roll_runout`), subtracted at the keyphasor's
+        shaft phase in every window before anything else.
 
     Raises
     ------
     InputError
-        From the recording (channels, sample rate, units, invalid samples) or
-        ``"window_seconds"``; every window stored before stays (each whole).
+        From the recording's checks (channels, sample rate, units, its first window's invalid
+        samples) or ``"window_seconds"``, before anything is stored.
     """
     plan = (
         path
@@ -314,34 +531,48 @@ def process_recording(
         )
     )
     recording, rate, size, windows = plan.recording, plan.sample_rate, plan.size, plan.windows
-    columns = [*layout.channels, keyphasor]
     stored = store.recording(recording.content_hash(), recording.path.name, recording.samples, rate, plan.started_at)
     done = store.windows_done(stored)
     if stored.complete or len(done) >= windows:
-        return ProcessedRecording(stored, windows, 0)
+        return ProcessedRecording(stored, windows, 0, rejected=rejected_windows(store, stored))
     # The reference point from the first window, whatever windows are left to do.
-    first = next(recording.blocks(columns, size=size))[1]
+    first = next(plan.blocks())[1]
     signals, _ = mask_invalid(layout, first[:, :-1])
-    references = identify_window(layout, signals, first[:, -1], rate, shape=shape).references
+    references = identify_window(layout, signals, first[:, -1], rate, runout=runout, shape=shape).references
     start = min(k for k in range(windows) if k not in done)
     written = masked = samples = 0
-    for first_sample, block in recording.blocks(columns, size=size, start=start * size):
+    last, last_window = None, -1
+    for first_sample, block in plan.blocks(start):
         k = first_sample // size
         if k >= windows:
             break
         if k in done:
             continue
         signals, bad = mask_invalid(layout, block[:, :-1])
-        _check_share(bad, signals.size, max_invalid_share, f"{recording.path.name} window {k}")
-        masked, samples = masked + bad, samples + signals.size
-        result = identify_window(layout, signals, block[:, -1], rate, shape=shape, references=references)
         time = stored.started_at + dt.timedelta(seconds=first_sample / rate)
-        if store.add_window(stored, k, time, window_values(result, layout), speed=result.speed):
-            written += 1
+        share = bad / signals.size
+        marks = revolution_marks(block[:, -1])
+        code = 1 if share > max_invalid_share else 2 if marks.size < 2 else 0
+        if code:
+            # a monitoring run goes on past a bad stretch: the window is flagged, not identified
+            speed = 2 * math.pi * speed_from_marks(marks, rate) if marks.size >= 2 else None
+            flagged = {(BEARING, "rejected"): float(code), (BEARING, "invalid_share"): share}
+            written += store.add_window(stored, k, time, flagged, speed=speed)
+        else:
+            result = identify_window(
+                layout, signals, block[:, -1], rate, runout=runout, shape=shape, references=references
+            )
+            values = window_values(result, layout) | {(BEARING, "invalid_share"): share}
+            last, last_window = result, k
+            # counted in the windows identified only: a rejected window's samples were not filled
+            masked, samples = masked + bad, samples + signals.size
+            written += store.add_window(stored, k, time, values, speed=result.speed)
         if progress is not None:
             progress(k + 1, windows)
     store.mark_complete(stored)
-    return ProcessedRecording(stored, windows, written, masked, samples)
+    return ProcessedRecording(
+        stored, windows, written, masked, samples, rejected_windows(store, stored), last, last_window
+    )
 
 
 @dataclass(frozen=True, eq=False)
@@ -373,12 +604,15 @@ class Identified:
     lambda_threshold : float
     alarm_duration : float
         s.
+    slow_roll : SlowRoll or None
+        The runout subtracted from every window (None: none was given).
     """
 
     database: str
     recordings: tuple[IdentifiedRecording, ...]
     lambda_threshold: float
     alarm_duration: float
+    slow_roll: SlowRoll | None = None
 
 
 def identify_recordings(
@@ -415,6 +649,30 @@ def identify_recordings(
             "one recording file or more (or recordings = [...] in [monitor.identify])",
             in_file=True,
         )
+
+    def named(error: InputError, name: str) -> InputError:
+        # named by the file, not placed under [monitor] (the file is not the case)
+        file = Path(name).name
+        field = error.field if error.field.startswith(file) else f"{file}: {error.field}"
+        return InputError(field, error.value, error.unit, error.allowed, in_file=True)
+
+    slow_roll = None
+    if plan.slow_roll is not None and not plan.keyphasor:
+        raise InputError(
+            "slow_roll", plan.slow_roll, "", "recordings with a keyphasor (the runout is a function of shaft phase)"
+        )
+    if plan.slow_roll is not None:
+        try:
+            slow_roll = slow_roll_runout(
+                layout,
+                plan.slow_roll,
+                plan.keyphasor,
+                plan.sample_rate,
+                plan.ignore_channels,
+                plan.max_invalid_share,
+            )
+        except InputError as error:
+            raise named(error, plan.slow_roll) from None
     plans = []
     start = plan.start
     for name in plan.recordings:
@@ -428,12 +686,10 @@ def identify_recordings(
                 start,
                 plan.ignore_channels,
                 plan.max_invalid_share,
+                plan.speed,
             )
         except InputError as error:
-            # named by the file, not placed under [monitor] (the file is not the case)
-            file = Path(name).name
-            field = error.field if error.field.startswith(file) else f"{file}: {error.field}"
-            raise InputError(field, error.value, error.unit, error.allowed, in_file=True) from None
+            raise named(error, name) from None
         plans.append(checked)
         if start is not None:  # the next file follows this one
             start = start + timedelta(seconds=checked.duration)
@@ -460,6 +716,7 @@ def identify_recordings(
                     shape=shape,
                     progress=told,
                     max_invalid_share=plan.max_invalid_share,
+                    runout=None if slow_roll is None else slow_roll.profile,
                 )
                 trends = section_trends(
                     store,
@@ -472,4 +729,4 @@ def identify_recordings(
             raise Interrupted(
                 f"every window identified so far is kept in {shown}: run the same command again to resume"
             ) from None
-    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration)
+    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration, slow_roll)

@@ -205,6 +205,10 @@ class IdentifyPlan:
         Film parameter of an alarm.
     alarm_duration : float
         Shortest alarm stretch, s.
+    slow_roll : str or None
+        Slow-roll recording whose runout is subtracted from every window (None: none).
+    speed : float or None
+        Shaft speed of recordings without a keyphasor (``keyphasor`` ""), rad/s.
     """
 
     recordings: tuple[str, ...]
@@ -217,6 +221,8 @@ class IdentifyPlan:
     max_invalid_share: float = 0.01
     lambda_threshold: float = 1.0
     alarm_duration: float = 600.0
+    slow_roll: str | None = None
+    speed: float | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -294,12 +300,15 @@ class MonitorResult:
         Runout measured at slow roll, m.
     identified : Identified or None
         Recordings identified into the trend database (``monitor identify``).
+    slow_roll : Recording or None
+        The synthetic slow-roll recording the runout was measured on.
     """
 
     study: MonitorStudy
     points: tuple[SimulatedPoint, ...]
     runout: np.ndarray | None = field(repr=False)
     identified: Identified | None = field(default=None, repr=False)
+    slow_roll: Recording | None = field(default=None, repr=False)
 
 
 def solve_monitor(
@@ -341,4 +350,4 @@ def solve_monitor(
                 float(np.abs(result.min_film - true_min).max()),
             )
         )
-    return MonitorResult(study, tuple(points), runout)
+    return MonitorResult(study, tuple(points), runout, slow_roll=slow)

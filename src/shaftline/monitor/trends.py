@@ -119,10 +119,20 @@ class TrendStore:
 
         text = self.url_of(url)
         self.url = text
+        file = self.file_of(text)
+        if file is not None and not file.parent.is_dir():
+            # SQLite's own message ("unable to open database file") does not say why
+            folder = file.parent
+            raise InputError("db", _hide_password(text), "", f"a database file in an existing folder (no {folder})")
         try:
             self._engine = sa.create_engine(text, future=True)
             self._metadata = _tables()
+            if file is not None:
+                self._refuse_foreign(file)
             self._metadata.create_all(self._engine)
+        except InputError:
+            self._engine.dispose()
+            raise
         except Exception as error:  # the drivers raise their own kinds; the user needs one line
             reason = str(getattr(error, "orig", None) or error).strip().splitlines()[0]
             raise InputError("db", _hide_password(text), "", f"a database that can be reached ({reason})") from None
@@ -130,11 +140,38 @@ class TrendStore:
         self._windows = self._metadata.tables["windows"]
         self._values = self._metadata.tables["window_values"]
 
+    def _refuse_foreign(self, file: Path) -> None:
+        """A SQLite file holding tables but not those of a trend database is another program's:
+        adding ours to it would change a file this program did not make (a server's database
+        may hold other applications' tables beside ours, and is not checked)."""
+        import sqlalchemy as sa
+
+        tables = set(sa.inspect(self._engine).get_table_names())
+        ours = set(self._metadata.tables)
+        if tables and not ours <= tables:
+            raise InputError(
+                "db",
+                str(file),
+                "",
+                f"a trend database made by monitor identify, or a new file (this one holds the tables "
+                f"{', '.join(sorted(tables - ours)[:5])})",
+            )
+
     @staticmethod
     def url_of(url: str | Path) -> str:
         """The SQLAlchemy URL of ``url``: itself, or a SQLite URL for a file path."""
         text = str(url)
         return text if "://" in text else f"sqlite:///{Path(text).resolve()}"
+
+    @staticmethod
+    def file_of(url: str | Path) -> Path | None:
+        """The file of a SQLite database (a path or a ``sqlite:///`` URL), None for a server
+        or an in-memory database: the file no output of a run may replace."""
+        text = TrendStore.url_of(url)
+        if not text.startswith("sqlite") or "://" not in text:
+            return None
+        name = text.split("://", 1)[1].removeprefix("/").split("?", 1)[0]
+        return None if name in ("", ":memory:") else Path(name).resolve()
 
     def close(self) -> None:
         """Release the connection pool."""
