@@ -1354,7 +1354,9 @@ class JournalBearing:
         The tilts are held fixed (misalignment is an input). Each trial starts its
         cavitated set from the one the step predicts; without ``initial``, a grid of
         :data:`CONTINUATION_NODES` or more starts from the equilibrium on the grid halved
-        both ways (docs/theory.md, Sect. 4.1).
+        both ways (docs/theory.md, Sect. 4.1), and a bearing with an elastic liner from the
+        rigid bore's equilibrium (its iterations not counted in ``iterations``), solving its
+        trials' liners only as far as the force residual needs (docs/theory.md Sect. 17).
 
         Parameters
         ----------
