@@ -360,3 +360,10 @@ def test_bad_liner_table_is_one_line_exit_2(tmp_path: Path, old: str, new: str, 
     lines = [line for line in result.stderr.splitlines() if line.strip()]
     assert len(lines) == 1 and lines[0].startswith(f"error: bearing.liner.{field} = "), lines
     assert not (tmp_path / "r.json").exists()
+
+
+def test_the_white_metal_liner_has_the_white_metal_surfaces_elastic_data():
+    """One material, one set of data: the liner preset and the roughness presets both take tin
+    babbitt ASTM B23 grade 2 (E 53 GPa, nu 0.35)."""
+    liner = Liner.preset("white_metal")
+    assert (liner.modulus, liner.poisson) == (53.0e9, 0.35)

@@ -45,12 +45,12 @@ LinerPreset = Literal["polymer_composite", "rubber", "white_metal"]
 #: polymer_composite: seed 001 (Li et al., Sensors 2022, 22, 3670, Sect. 2.1 and Table 1):
 #: E 2320 MPa, nu 0.327, lining 20 mm. rubber: nitrile rubber stave of a water-lubricated stern
 #: tube, E 7 MPa, nu 0.49, 10 mm (Litwin's rubber bearings; typical NBR data, ranges in
-#: docs/theory.md). white_metal: tin-based white metal (ASTM B23 grade 2) E 52 GPa, nu 0.33,
-#: 2 mm lining on a steel shell.
+#: docs/theory.md). white_metal: tin-based white metal (ASTM B23 grade 2, UNS L13890) E 53 GPa,
+#: nu 0.35 (the same data as the white-metal roughness presets), 2 mm lining on a steel shell.
 LINER_PRESETS: dict[str, tuple[float, float, float]] = {
     "polymer_composite": (0.020, 2.32e9, 0.327),
     "rubber": (0.010, 7.0e6, 0.49),
-    "white_metal": (0.002, 52.0e9, 0.33),
+    "white_metal": (0.002, 53.0e9, 0.35),
 }
 
 
