@@ -1,6 +1,7 @@
 """Speed of the film monitor (issue 13): the per-sample part, and a long recording end to end.
 
-Run ``PYTHONPATH=src .venv/bin/python benchmarks/bench_monitor.py [--minutes 60] [--only per-sample|end-to-end]``.
+Run ``PYTHONPATH=src .venv/bin/python benchmarks/bench_monitor.py [--minutes 60] [--only per-sample|end-to-end]
+[--format hdf5|tdms|both] [--via verb|function] [--model-shape]``.
 
 **Per-sample part.** For seed 001's layout (3 sections
 x 3 probes, 9 channels) and a 32-channel one (8 sections x 4 probes, the issue's recording), times
@@ -13,18 +14,22 @@ the ratio. Three rounds.
 
 **End to end** (the issue's 1-hour, 32-channel, 10 kHz recording, 1.15 G samples). A synthetic
 recording of the 32-channel layout (a 1X whirl of 5 um about an offset centre at 120 rpm, 0.05 um
-noise, a keyphasor channel) is written in 10 s chunks to an HDF5 file (float32, chunked datasets,
-sample rate as an attribute; 4.6 GB for an hour) in a temporary folder. A fresh process (so that its
-peak resident memory is that of the processing alone) then runs what ``monitor identify`` runs on
-it, :func:`shaftline.monitor.processing.process_recording`: SHA-256 of the file, the checks of the
-first window, then every 2 s window read, masked, identified (orbits, film, the least-squares
-centre line of eight sections, regimes, descriptors) and stored in a SQLite database, one
-transaction each. It prints the wall time, the ratio of recorded time to wall time (> 1: faster
-than real time) and the peak resident memory (``ru_maxrss``). ``--model-shape`` fits the centre
-line with the shaft model's bending shape (seed 001's rig, differential evolution per window), as
-a case with ``shaft_model`` does. ``--minutes`` shortens the recording;
-the wall time of the hour is then extrapolated linearly (per window and per byte hashed), and both
-are printed.
+noise, a keyphasor channel) is written in 10 s chunks to a temporary folder as HDF5 (float32,
+chunked datasets, sample rate as an attribute; 4.4 GiB for an hour) or, with ``--format tdms``,
+as TDMS (npTDMS, one segment of every channel per chunk, ``wf_increment``; ``--format both`` runs
+one after the other). A fresh process (so that its peak resident memory is that of the processing
+alone) then runs the whole command, ``shaftline monitor identify CASE RECORDING --db ... --json
+...`` (``--via verb``, the default: the case file of the layout, the fingerprints of the inputs,
+SHA-256 of the file, the checks of the first window, then every 2 s window read, masked,
+identified (orbits, film, the least-squares centre line of eight sections, regimes,
+descriptors) and stored in a SQLite database one transaction each, and the JSON), or, with
+``--via function``, :func:`shaftline.monitor.processing.process_recording` alone (the figures
+before issue 13's review). It prints the wall time, the ratio of recorded time to wall time
+(> 1: faster than real time), probe samples per second and the peak resident memory
+(``ru_maxrss``). ``--model-shape`` fits the centre line with the shaft model's bending shape
+(seed 001's rig, differential evolution per window), as a case with ``shaft_model`` does.
+``--minutes`` shortens the recording; the wall time of the hour is then extrapolated linearly
+(per window and per byte hashed), and both are printed.
 """
 
 from __future__ import annotations

@@ -65,7 +65,7 @@ def rows(database: Path) -> int:
     try:
         with engine.connect() as connection:
             if not sa.inspect(connection).has_table("windows"):
-                return 0  # the file is made a moment before its tables (seen on a loaded machine)
+                return 0  # a run that is making the database
             return int(connection.execute(sa.text("select count(*) from windows")).scalar_one())
     finally:
         engine.dispose()

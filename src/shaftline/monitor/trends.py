@@ -127,7 +127,7 @@ class TrendStore:
         try:
             self._engine = sa.create_engine(text, future=True)
             self._metadata = _tables()
-            if file is not None:
+            if file is not None and file.is_file():  # (inspecting a new file would make it empty first)
                 self._refuse_foreign(file)
             self._metadata.create_all(self._engine)
         except InputError:
