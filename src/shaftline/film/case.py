@@ -478,7 +478,7 @@ class LinerSection(Section):
     preset: Literal["polymer_composite", "rubber", "white_metal"] | None = None
     """Named liner (docs/theory.md lists the sources): polymer_composite (seed 001's rig, 20 mm,
     2320 MPa, 0.327), rubber (10 mm nitrile, 7 MPa, 0.49: the column model's lower bound of its
-    deformation), white_metal (2 mm tin-based, 52 GPa, 0.33)."""
+    deformation), white_metal (2 mm tin-based, ASTM B23 grade 2, 53 GPa, 0.35)."""
     thickness: PositiveLength | None = None
     """Liner thickness (at most a quarter of the bore radius)."""
     modulus: Annotated[PositivePressure, Plausible(3e6, 5e11, _MODULUS)] | None = None
