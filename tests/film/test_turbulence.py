@@ -305,3 +305,11 @@ def test_stribeck_curve_reports_the_reynolds_number_per_speed(tmp_path: Path) ->
     clearance_re = 2 * WATER["density"] * speeds * math.pi / 30 * RIG.radius * RIG.radial_clearance / 0.89e-3
     assert curve["turbulent"] == list(clearance_re > onset)
     assert curve["turbulent"][0] is False and curve["turbulent"][-1] is True
+
+    # The terminal table (also the report's) says where the coefficients started and the
+    # largest Re_h of the sweep, from the same curve as the JSON.
+    result = invoke("bearing", "stribeck", str(path), "--workers", "1")
+    assert result.exit_code in (0, 3), result.output
+    first = speeds[np.argmax(curve["turbulent"])]
+    assert f"turbulent film from [rpm] │ {first:.4g}".replace(" ", "") in result.stdout.replace(" ", "")
+    assert "largest local Reynolds number [-]" in result.stdout

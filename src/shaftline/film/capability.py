@@ -439,6 +439,17 @@ def _stribeck_table(result: BearingStudyResult) -> Table:
         ["at [rpm]", fmt(curve.speed[lowest] * 30 / math.pi)],
         ["speeds in contact (load not carried)", str(int(curve.contact.sum()))],
     ]
+    if curve.max_reynolds_number is not None and curve.turbulent is not None:
+        import numpy as np
+
+        # turbulence on or auto: where the coefficients applied, so the curve's change of slope
+        # there is not read as a regime change of the asperity contact.
+        turbulent = np.flatnonzero(curve.turbulent)
+        onset = "-" if turbulent.size == 0 else fmt(curve.speed[turbulent[0]] * 30 / math.pi)
+        rows += [
+            ["largest local Reynolds number [-]", fmt(float(np.nanmax(curve.max_reynolds_number)))],
+            ["turbulent film from [rpm]", onset],
+        ]
     return Table(["Stribeck curve", result.cases[0].case.name], rows, "Stribeck curve of the base case")
 
 
