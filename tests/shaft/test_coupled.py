@@ -551,3 +551,6 @@ def test_a_film_that_cannot_carry_falls_back_to_contact_at_the_bore():
     weight = segment.density * line.gravity * math.pi / 4 * segment.outer_diameter**2 * 14.0
     total = sum(b.reaction_y for b in result.condition.bearings)
     assert abs(total - weight - 202598.2) < 1e-7 * (weight + 202598.2)
+    # The work before the film grounded is counted: at least the first film evaluation and the
+    # Newton iteration whose step found no better film (the count read 0 and 0 before).
+    assert result.iterations >= 1 and result.film_solutions >= 1

@@ -533,6 +533,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         name = coupled.condition.name
         state = (
             f"converged in {coupled.iterations} iterations ({coupled.film_solutions} film solutions)"
+            + (f"; {coupled.message}" if coupled.message else "")
             if coupled.converged
             else f"NOT CONVERGED: {coupled.message}"
         )

@@ -645,7 +645,8 @@ class CoupledAlignment:
             if accepted is None:
                 grounded = self._grounded(current.s, condition)
                 if grounded:
-                    return self._fall_back(grounded, current, points, condition, progress)
+                    spent = (iterations, solutions * len(self._films))
+                    return self._fall_back(grounded, current, points, condition, progress, spent)
                 message = f"the coupled iteration stalled at a film mismatch of {current.norm:.3g} of the clearance"
                 break
             current = accepted
@@ -680,9 +681,13 @@ class CoupledAlignment:
         points: ConditionResult,
         condition: Condition,
         progress: Callable[[int, float], None] | None,
+        spent: tuple[int, int] = (0, 0),
     ) -> CoupledResult:
         """Solve again with the grounded films as contact at their bore: a multi-point support
-        along the bore bottom with the top of the bore as a second contact (edge loading)."""
+        along the bore bottom with the top of the bore as a second contact (edge loading).
+
+        ``spent``: the Newton iterations and film solutions before the films grounded, counted
+        in the result's with those of the solution after it."""
         line = self.line
         bearings = list(line.bearings)
         for k in grounded:
@@ -712,6 +717,7 @@ class CoupledAlignment:
             result_condition = AlignmentModel(contact_line).solve_condition(condition)
             films = []
             converged, iterations, solutions, history, force_residual = True, 0, 0, [], 0.0
+        iterations, solutions = iterations + spent[0], solutions + spent[1]
         own = self._result(last, points, False, 0, 0, [], math.inf, "", condition)
         for k in grounded:
             films.append(replace(own.films[k], contact=True))
