@@ -98,3 +98,24 @@ def test_seed001_rig_alignment_example(tmp_path: Path) -> None:
     assert support["iterations"] >= 1 and support["film_solutions"] >= 1
     text = " ".join(result.stdout.split())
     assert "(0 film solutions)" not in text and "film solutions); film at its floor in stern" in text
+
+
+def test_turbulence_in_the_alignment_film_is_reported(tmp_path: Path) -> None:
+    # `turbulence` in [alignment.bearings.film.solver] changes the film, so its largest local
+    # Reynolds number and flag are written as in `bearing solve` (the JSON had neither). Oil at
+    # 90 rpm with turbulence on: Re_h = rho omega R h / mu with h between 0 and 2c, so the largest
+    # is within (Re_c, 2 Re_c], Re_c = 890 * 9.42 * 0.26 * 0.45e-3 / 0.07 = 14.0 (the film's
+    # h_max is c (1 + e) at e > 0). A laminar film keeps its keys.
+    code, laminar, _ = solve(tmp_path, "", "laminar")
+    assert code == 0 and "max_reynolds_number" not in laminar["films"][0]
+    turbulent = OWN_FILM.replace("circumferential_nodes = 36 }", 'circumferential_nodes = 36, turbulence = "on" }')
+    path = tmp_path / "turbulent.toml"
+    path.write_text(LINE.replace("FILM", turbulent).replace("MOMENT", "-409948 N*m"))
+    out = tmp_path / "turbulent.json"
+    result = invoke("align", str(path), "--json", str(out))
+    assert result.exit_code == 0, result.stderr
+    (film,) = json.loads(out.read_text())["alignment"]["film_supports"][0]["films"]
+    clearance_re = 890 * 90 * 2 * 3.141592653589793 / 60 * 0.26 * 0.45e-3 / 0.07
+    assert film["turbulent"] is True and clearance_re < film["max_reynolds_number"] <= 2 * clearance_re
+    text = " ".join(result.stdout.split())
+    assert f"largest local Reynolds number {film['max_reynolds_number']:.4g}, turbulent" in text

@@ -84,7 +84,18 @@ FILM_UNITS = {
     "asperity_load_share": "share of the film force carried by asperity contact (rough surfaces; 0 smooth)",
     "min_film_ratio": "h_min over the composite roughness (rough surfaces; null smooth)",
     "max_liner_deformation": "m (elastic liner; 0 without)",
+    "max_reynolds_number": "largest local Reynolds number rho omega R h / mu (only with turbulence on or auto)",
+    "turbulent": "whether the turbulence coefficients were applied (only with turbulence on or auto)",
 }
+
+
+def _turbulence_json(state: Any) -> dict[str, Any]:
+    """The film's largest local Reynolds number and turbulence flag, with turbulence on or auto
+    (the film solution has its Reynolds-number map then); nothing for a laminar film, whose
+    JSON keeps its keys."""
+    if state.reynolds_number is None:
+        return {}
+    return {"max_reynolds_number": float(state.max_reynolds_number), "turbulent": bool(state.turbulent)}
 
 
 def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
@@ -119,6 +130,7 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                 "asperity_load_share": f.state.asperity_load_share,
                 "min_film_ratio": f.state.min_film_ratio if math.isfinite(f.state.min_film_ratio) else None,
                 "max_liner_deformation": f.state.max_liner_deformation,
+                **_turbulence_json(f.state),
                 "centre_line": {
                     "z": f.z.tolist(),
                     "centre_y": f.centre_y.tolist(),
@@ -180,6 +192,31 @@ FILM_HEADERS = [
     "power [kW]",
     "state",
 ]
+
+
+def _film_notes(coupled: CoupledResult) -> Paragraph | None:
+    """The film results the table has no columns for, where a film has them: rough surfaces
+    (film ratio, asperity share), an elastic liner (its largest deformation), turbulence on or
+    auto (largest local Reynolds number and whether the coefficients applied)."""
+    parts = []
+    for f in coupled.films:
+        state = f.state
+        notes = []
+        if math.isfinite(state.min_film_ratio):
+            notes.append(
+                f"λ = h_min/σ {state.min_film_ratio:.3g}, asperities carry {state.asperity_load_share * 100:.3g} % "
+                f"of the load ({state.lubrication_regime} lubrication)"
+            )
+        if state.max_liner_deformation > 0:
+            notes.append(f"liner deformed by up to {state.max_liner_deformation * 1e6:.3g} µm")
+        if state.reynolds_number is not None:
+            kind = "turbulent (coefficients applied)" if state.turbulent else "laminar"
+            notes.append(f"largest local Reynolds number {state.max_reynolds_number:.4g}, {kind}")
+        if notes:
+            parts.append(f"{f.name}: " + "; ".join(notes))
+    if not parts:
+        return None
+    return Paragraph(f"Film bearings, {coupled.condition.name}: " + ". ".join(parts) + ".")
 
 
 def _finite(value: float) -> float | None:
@@ -540,6 +577,11 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         blocks: list[Block] = [
             Paragraph(f"Film supports, {name}: {state}.", "text" if coupled.converged else "warn"),
             _narrowed(FILM_HEADERS, _film_rows(coupled), f"Film bearings: {name}", NARROW_FILM if narrow else None),
+        ]
+        notes = _film_notes(coupled)
+        if notes is not None:
+            blocks.append(notes)
+        blocks += [
             _narrowed(
                 COMPARISON_HEADERS,
                 _comparison_rows(coupled),
