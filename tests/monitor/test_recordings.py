@@ -142,3 +142,31 @@ def test_csv_sample_rate_from_times_printed_with_nine_digits(tmp_path):
                comments="", fmt="%.9g")  # fmt: skip
     rate = open_recording(path).sample_rate(["p315"])
     assert rate == pytest.approx(2048.0, rel=3e-7)
+
+
+def test_empty_csv_and_text_cells(tmp_path):
+    """The faults of a logger's CSV: an empty file and a text time are one-line errors (they were
+    pandas tracebacks, exit 1); a text cell in a probe column is an invalid sample (NaN), which
+    the window's max_invalid_share check counts like a dropout."""
+    empty = tmp_path / "empty.csv"
+    empty.write_text("")
+    with pytest.raises(InputError, match="empty file"):
+        open_recording(empty)
+    data = _data()
+    path = tmp_path / "r.csv"
+    _write(path, data)
+    lines = path.read_text().splitlines()
+    cells = lines[11].split(",")
+    cells[1] = "ERR"  # p315 of sample 10 (column 0 is the time)
+    lines[11] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+    recording = open_recording(path)
+    (block,) = [b for _, b in recording.blocks(list(NAMES), size=SAMPLES)]
+    assert np.isnan(block[10, 0]) and np.isnan(block).sum() == 1
+    np.testing.assert_array_equal(np.delete(block, 10, axis=0), np.delete(data, 10, axis=0))
+    cells = lines[21].split(",")
+    cells[0] = "t?"
+    lines[21] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(InputError, match=r"r\.csv: line 22, time = 't\?'"):
+        open_recording(path).sample_rate(list(NAMES))

@@ -477,8 +477,8 @@ def _masked_warnings(identified: Identified) -> list[Block]:
             blocks.append(
                 Paragraph(
                     f"warning: {item.plan.recording.path.name}: {done.masked} probe samples of {done.samples} "
-                    f"({done.masked / done.samples:.3%}) were NaN or beyond their probe's range, masked and filled "
-                    "along time",
+                    f"({done.masked / done.samples:.3%}) were NaN, text or beyond their probe's range, masked and "
+                    "filled along time",
                     "warn",
                 )
             )

@@ -92,7 +92,12 @@ class _Csv:
         import pandas as pd
 
         self._path = path
-        self._header = tuple(str(c) for c in pd.read_csv(path, nrows=0).columns)
+        try:
+            self._header = tuple(str(c) for c in pd.read_csv(path, nrows=0).columns)
+        except pd.errors.EmptyDataError:
+            raise InputError(
+                "recording", "an empty file", "", "a CSV with a header row of channel names and one row per sample"
+            ) from None
         self._length: int | None = None
 
     def channels(self) -> tuple[str, ...]:
@@ -104,7 +109,11 @@ class _Csv:
         time = next((c for c in TIME_COLUMNS if c in self._header), None)
         if time is None:
             return None
-        head = pd.read_csv(self._path, usecols=[time], nrows=1000)[time].to_numpy(float)
+        column = pd.read_csv(self._path, usecols=[time], nrows=1000)[time]
+        head = pd.to_numeric(column, errors="coerce").to_numpy(float)
+        if np.isnan(head).any():
+            row = int(np.flatnonzero(np.isnan(head))[0]) + 2  # the file's line: header, then 1-based
+            raise InputError(f"{self._path.name}: line {row}, {time}", str(column.iloc[row - 2]), "s", "a number")
         return _rate_from_times(head, self._path.name)
 
     def length(self) -> int:
@@ -123,7 +132,12 @@ class _Csv:
         skip = range(1, start + 1) if start else None
         with pd.read_csv(self._path, usecols=list(columns), chunksize=size, skiprows=skip) as reader:
             for frame in reader:
-                yield frame[list(columns)].to_numpy(dtype=float)
+                chosen = frame[list(columns)]
+                if not all(kind.kind in "fiu" for kind in chosen.dtypes):
+                    # a cell that is not a number (a logger's error text, a cut line) is an
+                    # invalid sample like NaN, masked and counted against max_invalid_share
+                    chosen = chosen.apply(pd.to_numeric, errors="coerce")
+                yield chosen.to_numpy(dtype=float)
 
 
 class _Parquet:
