@@ -210,7 +210,9 @@ class IdentifySection(Section):
     extra channel is an error: a probe named wrong)."""
     max_invalid_share: Annotated[float, Quantity("dimensionless", gt=0, le=0.5)] = 0.01
     """Largest share of a window's probe samples that may be NaN or beyond the probe's range: they are
-    masked, filled along time and counted; a window with more is an error."""
+    masked, filled along time and counted. A recording whose first window has more is an input error
+    (wiring, ranges, units); a later window with more is stored as rejected, left out of the trends,
+    and makes the run not acceptable (exit 3)."""
     lambda_threshold: Annotated[float, Quantity("dimensionless", gt=0, le=10)] = 1.0
     """Film parameter below which a stretch of windows is an alarm (seed 001: boundary below 1)."""
     alarm_duration: Annotated[
