@@ -173,3 +173,17 @@ def test_monitor_identify_with_a_slow_roll(runout_rig, tmp_path):
         # a vector's amplitude moves by at most the residual's (the noise averages out over 9 turns)
         assert errors["compensated 1x"] <= residual, (section.name, errors)
         assert errors["raw 1x"] > 5 * residual, (section.name, errors)
+
+
+def test_a_slow_roll_at_running_speed_is_warned(runout_rig, tmp_path):
+    """A "slow roll" as fast as the recordings (here the running recording itself, 120 rpm) measures
+    the film's and the unbalance's motion as runout: the terminal and report say so (it was taken
+    silently); the seed's 15 rpm slow roll, 0.125 of 120 rpm, is not warned (the test above)."""
+    case, _, run_file, slow_file = runout_rig
+    for file, warned in ((run_file, True), (slow_file, False)):
+        database = tmp_path / f"{file.stem}.sqlite"
+        result = invoke("monitor", "identify", str(case_file(tmp_path)), str(run_file), "--slow-roll", str(file),
+                        "--db", str(database))  # fmt: skip
+        assert result.exit_code == 0, result.stderr
+        text = " ".join(result.stdout.split())
+        assert ("but the slow roll ran at 120 rpm, more than 50% of the lowest speed identified" in text) == warned

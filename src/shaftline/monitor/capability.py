@@ -451,6 +451,11 @@ def identified_json(identified: Identified) -> dict[str, Any]:
     }
 
 
+#: A slow-roll recording faster than this share of the lowest identified speed is warned about
+#: (engineering judgement: seed 001's rig rolls slowly at 15 rpm against 135-215 rpm, 0.11).
+SLOW_ROLL_SHARE = 0.5
+
+
 def _runout_note(identified: Identified) -> Paragraph:
     slow = identified.slow_roll
     if slow is None:
@@ -462,11 +467,23 @@ def _runout_note(identified: Identified) -> Paragraph:
     import numpy as np
 
     worst = int(np.argmax(slow.peak_to_peak))
-    return Paragraph(
+    text = (
         f"Runout subtracted from every window: measured on {slow.name} ({slow.revolutions} revolutions at "
         f"{_rpm(slow.speed)}), up to {slow.peak_to_peak[worst] * MICRO:.2f} µm peak to peak (probe "
         f"{slow.channels[worst]})."
     )
+    speeds = [t.speed for item in identified.recordings for t in item.trends if np.isfinite(t.speed).any()]
+    lowest = min((float(np.nanmin(v)) for v in speeds), default=math.inf)
+    if slow.speed > SLOW_ROLL_SHARE * lowest:
+        # A slow roll is taken where film and unbalance do not move the journal; one near the
+        # running speed measures that motion as "runout" and subtracts it from every window.
+        return Paragraph(
+            f"warning: {text[0].lower()}{text[1:-1]}; but the slow roll ran at {_rpm(slow.speed)}, more than "
+            f"{SLOW_ROLL_SHARE:.0%} of the lowest speed identified ({_rpm(lowest)}): its runout holds the film's "
+            "and the unbalance's motion at that speed. Record the slow roll at turning-gear speed.",
+            "warn",
+        )
+    return Paragraph(text)
 
 
 def _masked_warnings(identified: Identified) -> list[Block]:
