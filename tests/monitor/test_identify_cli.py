@@ -521,5 +521,6 @@ def test_a_recording_without_a_keyphasor_at_a_given_speed(truth, tmp_path):
     assert none.exit_code == 2 and none.stderr.startswith("error: r.csv: speed = 'none'"), none.stderr
     slow = invoke("monitor", "identify", str(tmp_path / "rig.toml"), str(path), "--slow-roll", str(path),
                   "--db", str(tmp_path / "s.sqlite"))  # fmt: skip
-    assert slow.exit_code == 2 and "allowed recordings with a keyphasor" in slow.stderr, slow.stderr
+    assert slow.exit_code == 2 and slow.stderr.startswith("error: monitor.identify.slow_roll = "), slow.stderr
+    assert "allowed recordings with a keyphasor" in slow.stderr, slow.stderr
     assert not (tmp_path / "n.sqlite").exists() and not (tmp_path / "s.sqlite").exists()

@@ -659,7 +659,10 @@ def identify_recordings(
     slow_roll = None
     if plan.slow_roll is not None and not plan.keyphasor:
         raise InputError(
-            "slow_roll", plan.slow_roll, "", "recordings with a keyphasor (the runout is a function of shaft phase)"
+            "identify.slow_roll",
+            plan.slow_roll,
+            "",
+            "recordings with a keyphasor (the runout is a function of shaft phase)",
         )
     if plan.slow_roll is not None:
         try:
