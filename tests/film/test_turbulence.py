@@ -313,3 +313,19 @@ def test_stribeck_curve_reports_the_reynolds_number_per_speed(tmp_path: Path) ->
     first = speeds[np.argmax(curve["turbulent"])]
     assert f"turbulent film from [rpm] │ {first:.4g}".replace(" ", "") in result.stdout.replace(" ", "")
     assert "largest local Reynolds number [-]" in result.stdout
+
+
+def test_a_turbulence_model_with_turbulence_off_is_noted(tmp_path: Path) -> None:
+    """`turbulence_model` named while `turbulence` stays at its default (off) changes nothing: the
+    case's warnings say so (it was silently laminar); the default model unnamed is no note."""
+    path = tmp_path / "rig.toml"
+    water = 'preset = "water"\ntemperature = "25 degC"'
+    path.write_text(RIG_CASE.format(lubricant=water, mode="off") + 'turbulence_model = "constantinescu"\n')
+    result = invoke("bearing", "solve", str(path), "--json", "-", "--workers", "1")
+    assert result.exit_code == 0, result.output
+    document = json.loads(result.stdout)
+    assert any("turbulence_model = constantinescu has no effect" in text for text in document["warnings"])
+    assert "max_reynolds_number" not in document["bearing"]["cases"][0]
+    path.write_text(RIG_CASE.format(lubricant=water, mode="off"))
+    result = invoke("bearing", "solve", str(path), "--json", "-", "--workers", "1")
+    assert result.exit_code == 0 and "warnings" not in json.loads(result.stdout)
