@@ -3,6 +3,8 @@ writing a report leaves the session's matplotlib state alone."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import matplotlib
 import pytest
 from matplotlib.figure import Figure
@@ -69,6 +71,12 @@ def test_figure_functions_draw_into_the_given_axes(solved):
     pair = Figure().subplots(1, 2)
     figures.film_and_pressure_maps(state, ax=pair)
     assert all(axes.collections for axes in pair)
+    # h_min in the map's title to 3 significant digits: a film at its floor (0.03 um in the
+    # lined rig's alignment) read "h_min = 0.0 um" with one decimal
+    floor = replace(state, min_film_thickness=2.768e-8)
+    pair = Figure().subplots(1, 2)
+    figures.film_and_pressure_maps(floor, ax=pair)
+    assert pair[0].get_title() == "h_min = 0.0277 µm"
 
 
 def test_figure_function_without_axes_makes_its_own(solved):

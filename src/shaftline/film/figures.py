@@ -51,7 +51,7 @@ def film_and_pressure_maps(state: BearingState, title: str = "", *, ax: Any) -> 
         _unwrapped_axes(axes)
     ax[0].plot(np.degrees(state.min_film_theta), state.min_film_z, "wx", ms=9, mew=2)
     head = f"{plain(title)}: " if title else ""
-    ax[0].set_title(f"{head}h_min = {state.min_film_thickness * 1e6:.1f} µm")
+    ax[0].set_title(f"{head}h_min = {state.min_film_thickness * 1e6:.3g} µm")
     ax[1].plot(np.degrees(state.max_pressure_theta), state.max_pressure_z, "c+", ms=11, mew=2)
     ax[1].set_title(f"p_max = {state.max_pressure / 1e6:.2f} MPa")
     return ax
