@@ -37,7 +37,10 @@ WorkersOption = Annotated[
     int | None,
     typer.Option(
         "--workers",
-        help="Worker processes for the analyses that spread their cases (default: one per core; 1: none).",
+        help=(
+            "Worker processes for the analyses that spread their cases (default: one per core, or none "
+            "where a command finds its work too small for a pool; 1: none)."
+        ),
     ),
 ]
 SchedulerOption = Annotated[

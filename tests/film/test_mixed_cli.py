@@ -65,6 +65,22 @@ def test_solve_reports_the_mixed_lubrication_results(rig: Path) -> None:
     assert "stribeck" not in bearing
 
 
+@pytest.mark.parametrize(("speed", "verdict"), [("35 rpm", "wear is expected"), ("100 rpm", "wear is possible")])
+def test_the_mixed_finding_expects_wear_only_above_the_transition_share(
+    tmp_path: Path, speed: str, verdict: str
+) -> None:
+    """At 35 rpm the asperities carry a few per cent of the load: wear is expected; at 100 rpm,
+    still in mixed lubrication by lambda, under 1 % (the share that defines the transition
+    speed): light contact, wear possible."""
+    path = tmp_path / "rig.toml"
+    path.write_text(RIG.replace('speed = "35 rpm"', f'speed = "{speed}"'))
+    result = invoke("bearing", "solve", str(path), "--json", "-", "--workers", "1")
+    assert result.exit_code == 0, result.output
+    base = json.loads(result.stdout)["bearing"]["cases"][0]
+    assert (base["asperity_load_share"] >= 0.01) == (verdict == "wear is expected")
+    assert verdict in " ".join((result.stdout + " " + result.stderr).split())  # terminal lines wrap
+
+
 def test_smooth_case_json_has_no_mixed_keys(tmp_path: Path) -> None:
     path = tmp_path / "smooth.toml"
     text = RIG.split("[bearing.surface]")[0] + "[bearing.solver]" + RIG.split("[bearing.solver]")[1]

@@ -297,6 +297,25 @@ def test_trends_alarms_and_projected_crossing(tmp_path):
         np.testing.assert_allclose(lines[0].attitude_angle, 0.3)
 
 
+def test_no_trend_is_projected_over_less_than_a_day(tmp_path):
+    """Windows a minute apart with the film falling fast (an operating-point change, not wear):
+    no straight line and no crossing date; the verb says why in its summary."""
+    database = tmp_path / "m.sqlite"
+    with TrendStore(database) as store:
+        recording = store.recording("e" * 64, "log.csv", 100, 10.0, START)
+        for k in range(5):
+            values = {("bearing", "min_film_thickness"): 8e-6 - 1e-6 * k, ("bearing", "film_parameter"): 4.0 - 0.5 * k}
+            store.add_window(recording, k, START + dt.timedelta(minutes=k), values, speed=100 * RPM)
+    with TrendStore(database) as store:
+        (trend,) = section_trends(store, threshold=1.0, min_duration=dt.timedelta(days=1), limit=2e-6)
+        assert trend.crossing is None
+    result = invoke("monitor", "trend", "--db", str(database), "--out", str(tmp_path / "out"))
+    assert result.exit_code == 0, result.stderr
+    text = (tmp_path / "out" / "report.html").read_text()
+    assert "1 recording in" in text and "5 windows from" in text
+    assert "not fitted: the windows span 240 s, and a trend needs 1 day or more" in text
+
+
 def test_trend_verb_options_and_figures(tmp_path):
     database, out = tmp_path / "m.sqlite", tmp_path / "out"
     _store_falling(database)

@@ -191,8 +191,13 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                             f"the asperities carry {100 * state.asperity_load_share:.3g} % of the load (peak "
                             f"{state.max_asperity_pressure / 1e6:.3g} MPa) and give "
                             f"{100 * state.boundary_friction_force / max(state.friction_force, 1e-300):.3g} % of the "
-                            "friction (Greenwood-Tripp contact with Patir-Cheng flow factors): wear is expected "
-                            "(seed 001, Sect. 5.3).",
+                            "friction (Greenwood-Tripp contact with Patir-Cheng flow factors): "
+                            + (
+                                "wear is expected (seed 001, Sect. 5.3)."
+                                if state.asperity_load_share >= 0.01
+                                else "light asperity contact, below the 1 % of the load that defines the "
+                                "transition speed: wear is possible."
+                            ),
                             criterion=True,
                         )
                     )

@@ -352,6 +352,11 @@ def _recording_writer(recording: Recording, channels: tuple[str, ...]) -> Any:
     return write
 
 
+def _count(number: int, noun: str) -> str:
+    """``"1 window"``, ``"3 windows"``."""
+    return f"{number} {noun}" + ("" if number == 1 else "s")
+
+
 def _when(moment: Any) -> str:
     import datetime as dt
 
@@ -711,7 +716,7 @@ def _trends(
     from shaftline.errors import InputError
     from shaftline.monitor import figures
     from shaftline.monitor.processing import rejected_windows
-    from shaftline.monitor.trends import TrendStore, _hide_password, centre_lines, section_trends
+    from shaftline.monitor.trends import MIN_TREND_SPAN, TrendStore, _hide_password, centre_lines, section_trends
     from shaftline.units import to_si
 
     plan, inputs, levels = None, [], None
@@ -774,9 +779,17 @@ def _trends(
     first, last = bearing.times[0], bearing.times[-1]
     blocks: list[Block] = [
         Paragraph(
-            f"{len(stored)} recordings in {shown}, {len(bearing.times)} windows from {_when(first)} to {_when(last)} "
-            f"UTC. Alarms: film parameter below {threshold:g} for {duration:g} s or more. Trend: least-squares "
-            f"straight line of the smallest film against time, projected to the limit {bearing.limit * MICRO:.2f} µm."
+            f"{_count(len(stored), 'recording')} in {shown}, {_count(len(bearing.times), 'window')} from "
+            f"{_when(first)} to {_when(last)} UTC. Alarms: film parameter below {threshold:g} for {duration:g} s or "
+            "more. Trend: least-squares straight line of the smallest film against time, projected to the limit "
+            f"{bearing.limit * MICRO:.2f} µm"
+            + (
+                "."
+                if last - first >= MIN_TREND_SPAN
+                else f"; not fitted: the windows span {(last - first).total_seconds():.3g} s, and a trend needs "
+                f"{MIN_TREND_SPAN.days} day or more (over a shorter time the film follows the operating point, "
+                "not wear)."
+            )
         ),
         *[Paragraph("warning: " + _rejected_text(r.name, rejected[r.id]), "warn") for r in stored if rejected[r.id]],
         *[Paragraph("warning: " + _alarm_text(a, threshold), "warn") for t in trends for a in t.alarms],

@@ -36,6 +36,7 @@ import numpy as np
 from shaftline.errors import InputError
 
 __all__ = [
+    "MIN_TREND_SPAN",
     "DEFAULT_DATABASE",
     "CentreLine",
     "LambdaAlarm",
@@ -47,6 +48,11 @@ __all__ = [
     "section_trends",
     "trend_crossing",
 ]
+
+#: Shortest span of windows over which a film trend is fitted and projected: over seconds or
+#: hours a straight line through the smallest film follows the operating point (speed, load,
+#: temperature), not wear, and its projected date means nothing.
+MIN_TREND_SPAN = dt.timedelta(days=1)
 
 #: The database a run uses without ``--db``: a SQLite file in the output folder.
 DEFAULT_DATABASE = "monitor.sqlite"
@@ -446,7 +452,8 @@ class SectionTrend:
     limit : float
         Film the trend is projected to, m.
     crossing : TrendCrossing or None
-        Fitted straight line and the date it reaches ``limit`` (None: fewer than two times).
+        Fitted straight line and the date it reaches ``limit`` (None: fewer than two finite
+        samples, or windows spanning less than :data:`MIN_TREND_SPAN`).
     """
 
     section: str
@@ -501,7 +508,8 @@ def section_trends(
         parameter = rows["value_lambda"].to_numpy(float)
         alarms = lambda_alarms(times, parameter, threshold, min_duration, section)
         crossing = None
-        if math.isfinite(limit) and np.isfinite(film).sum() >= 2 and len(set(times)) >= 2:
+        long_enough = bool(times) and max(times) - min(times) >= MIN_TREND_SPAN
+        if math.isfinite(limit) and np.isfinite(film).sum() >= 2 and long_enough:
             crossing = trend_crossing(times, film, limit)
         trends.append(
             SectionTrend(section, times, film, parameter, rows["speed"].to_numpy(float), tuple(alarms), limit, crossing)
