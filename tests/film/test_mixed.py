@@ -145,6 +145,7 @@ def test_mass_conserving_model_with_roughness_is_refused() -> None:
     with pytest.raises(InputError) as info:
         JournalBearing(RIG, operating, SolverOptions(cavitation="jfo"))
     assert info.value.field == "options.cavitation"
+    assert "[bearing.surface] in a case" in str(info.value)  # names what the user wrote
 
 
 def test_rough_pressure_does_not_depend_on_the_path() -> None:

@@ -211,6 +211,10 @@ def test_an_unreachable_database_and_no_recording_are_one_line(truth, tmp_path):
     trend = invoke("monitor", "trend", "--db", str(tmp_path / "none.sqlite"))
     assert trend.exit_code == 2 and "an existing trend database" in trend.stderr
     assert not (tmp_path / "none.sqlite").exists()
+    # a database kind this installation has no driver for: the line says which it has
+    other = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", "mysql://u:secret@host/db")
+    assert other.exit_code == 2 and other.stderr.count("\n") == 1 and "secret" not in other.stderr
+    assert "a SQLite file or sqlite:/// URL, or a postgresql+psycopg:// URL" in other.stderr
 
 
 def test_the_default_database_is_beside_the_case(truth, tmp_path):
@@ -537,7 +541,8 @@ def test_a_recording_without_a_keyphasor_at_a_given_speed(truth, tmp_path):
         np.testing.assert_allclose(trend["speed"], 120 * RPM, rtol=1e-3)  # whole revolutions of 1024 samples
     (tmp_path / "nospeed.toml").write_text(rig.replace('speed = "120 rpm"\n', ""))
     none = invoke("monitor", "identify", str(tmp_path / "nospeed.toml"), str(path), "--db", str(tmp_path / "n.sqlite"))
-    assert none.exit_code == 2 and none.stderr.startswith("error: r.csv: speed = 'none'"), none.stderr
+    assert none.exit_code == 2 and none.stderr.startswith("error: monitor.identify.speed = 'none'"), none.stderr
+    assert not (tmp_path / "n.sqlite").exists()  # refused before any database or file is touched
     slow = invoke("monitor", "identify", str(tmp_path / "rig.toml"), str(path), "--slow-roll", str(path),
                   "--db", str(tmp_path / "s.sqlite"))  # fmt: skip
     assert slow.exit_code == 2 and slow.stderr.startswith("error: monitor.identify.slow_roll = "), slow.stderr

@@ -465,8 +465,8 @@ class BearingProblem:
                 "options.cavitation",
                 self.options.cavitation,
                 "",
-                "reynolds or half_sommerfeld with rough surfaces (geometry.surface): the mass-conserving "
-                "model has no flow factors yet",
+                "reynolds or half_sommerfeld with rough surfaces ([bearing.surface] in a case, "
+                "BearingGeometry.surface in Python): the mass-conserving model has no flow factors yet",
             )
         if self.geometry.liner is not None and self.options.cavitation != "reynolds":
             # The film-liner Newton matrix is built on the Reynolds condition's frozen set

@@ -656,6 +656,15 @@ def identify_recordings(
         field = error.field if error.field.startswith(file) else f"{file}: {error.field}"
         return InputError(field, error.value, error.unit, error.allowed, in_file=True)
 
+    speed = plan.speed
+    if not plan.keyphasor and not (speed is not None and math.isfinite(speed) and speed > 0.0):
+        # checked here, before any file is read, and named as the case names it
+        raise InputError(
+            "identify.speed",
+            "none" if speed is None else speed,
+            "rad/s",
+            'the shaft speed of recordings without a keyphasor (keyphasor = "")',
+        )
     slow_roll = None
     if plan.slow_roll is not None and not plan.keyphasor:
         raise InputError(

@@ -139,6 +139,15 @@ class TrendStore:
         except InputError:
             self._engine.dispose()
             raise
+        except (ModuleNotFoundError, sa.exc.NoSuchModuleError, sa.exc.ArgumentError) as error:
+            # a dialect or driver this installation does not have (e.g. mysql://): say which it has
+            reason = str(error).strip().splitlines()[0]
+            raise InputError(
+                "db",
+                _hide_password(text),
+                "",
+                f"a SQLite file or sqlite:/// URL, or a postgresql+psycopg:// URL ({reason})",
+            ) from None
         except Exception as error:  # the drivers raise their own kinds; the user needs one line
             reason = str(getattr(error, "orig", None) or error).strip().splitlines()[0]
             raise InputError("db", _hide_password(text), "", f"a database that can be reached ({reason})") from None
