@@ -275,6 +275,10 @@ def test_case_reports_the_reynolds_number_and_notes_an_oil_far_below_transition(
     assert reynolds.shape == (21, 60) and reynolds.max() == pytest.approx(case["max_reynolds_number"], rel=1e-6)
     assert "warnings" not in document
     assert (out / "figures" / "bearing_0_reynolds.png").exists()
+    # the terminal table gives the flag with the Taylor onset auto used: 41.3 sqrt(R/c) = 708
+    terminal = invoke("bearing", "solve", str(path), "--workers", "1")
+    assert terminal.exit_code == 0, terminal.output
+    assert "turbulentfilm(TayloronsetRe_h)│yes(708)" in terminal.stdout.replace(" ", "")
 
     path.write_text(RIG_CASE.format(lubricant='preset = "ISO VG 100"\ntemperature = "40 degC"', mode="on"))
     result = invoke("bearing", "solve", str(path), "--json", "-", "--workers", "1")

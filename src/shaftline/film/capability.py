@@ -228,6 +228,8 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
         return out
 
     def _table(self, result: BearingStudyResult) -> Table:
+        from shaftline.film.turbulence import transition_reynolds
+
         summaries = self.to_json(result)["cases"]
         rows = [[label] + [fmt(s[key], scale, digits) for s in summaries] for label, key, scale, digits in TABLE_ROWS]
         if any("min_film_ratio" in s for s in summaries):
@@ -261,9 +263,19 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 ["max local Reynolds number [-]"]
                 + [fmt(s["max_reynolds_number"], 1.0, 4) if "max_reynolds_number" in s else "-" for s in summaries]
             )
+            # The Taylor-vortex onset beside the flag: `auto` turns on there, below the Re_h of
+            # 1000-2000 often quoted for turbulence in journal bearings (theory 17).
             rows.append(
-                ["turbulent film"]
-                + [("yes" if s["turbulent"] else "no") if "turbulent" in s else "-" for s in summaries]
+                ["turbulent film (Taylor onset Re_h)"]
+                + [
+                    (
+                        ("yes" if s["turbulent"] else "no")
+                        + f" ({transition_reynolds(run.case.geometry.radius, run.case.geometry.radial_clearance):.0f})"
+                    )
+                    if "turbulent" in s
+                    else "-"
+                    for run, s in zip(result.cases, summaries, strict=True)
+                ]
             )
         if any("max_liner_deformation" in s for s in summaries):
             rows.append(
