@@ -112,7 +112,6 @@ class _Pattern:
     slot_kind: np.ndarray
     slot_row: np.ndarray
     slot_col: np.ndarray
-    slot_link: np.ndarray  # index into the flattened link arrays
     # Index of each slot's value in concat(diag(A), -c_theta, -c_z), all flattened.
     slot_source: np.ndarray
 
@@ -139,7 +138,6 @@ def _pattern(nz: int, nt: int) -> _Pattern:
         slot_kind=kind[order],
         slot_row=rows[order],
         slot_col=cols[order],
-        slot_link=link[order],
         slot_source=(np.where(kind == 1, n, 0) + np.where(kind == 2, 2 * n, 0) + link)[order],
     )
 
@@ -344,8 +342,7 @@ class ReynoldsSolver:
         #: symbolic analysis for every set) instead of the free sub-matrix: set on the small
         #: coarse grids that only predict the cavitated set.
         self.masked = False
-        self._masked_factor: qdldl.Solver | None = None
-        self._masked_matrix: sp.csc_matrix | None = None
+        self._masked_factor: _NodeSetFactor | None = None
         self._slot_cache: tuple[Stencil, np.ndarray] | None = None
         self._coarse_grid: CoarseGrid | None = None
         self._relaxation: Relaxation | None = None
@@ -434,27 +431,18 @@ class ReynoldsSolver:
         assert factor is not None
         return factor.solve(np.where(free, rhs.ravel(), 0.0))
 
-    def _masked_factorisation(self, stencil: Stencil, held: np.ndarray) -> Any:
+    def _masked_factorisation(self, stencil: Stencil, held: np.ndarray) -> _NodeSetFactor:
         """Factor of the full pattern with the held rows and columns zeroed, their diagonals
-        kept (so ``x = 0`` there for a zero right-hand side); the symbolic analysis is reused.
-
-        The slot values come from :meth:`_slot_values` (one gather per film) and the matrix
-        object is kept, its data refilled: on the small coarse grids this solver serves, the
-        per-call array work is a large share of the numeric factorisation itself."""
-        pattern = self.pattern
+        kept (so ``x = 0`` there for a zero right-hand side): a :class:`_NodeSetFactor` whose
+        node set is every node, so its one symbolic analysis serves every set."""
         free = ~held.ravel()
-        values = self._slot_values(stencil).copy()
-        # Held rows keep their own diagonal so the matrix stays well scaled.
-        values[(pattern.slot_kind != 0) & ~(free[pattern.slot_row] & free[pattern.slot_col])] = 0.0
-        matrix = self._masked_matrix
-        if self._masked_factor is None or matrix is None:
-            matrix = self._masked_matrix = pattern.upper.copy()
-            matrix.data = values
-            self._masked_factor = qdldl.Solver(matrix, upper=True)
-        else:
-            matrix.data[:] = values
-            self._masked_factor.update(matrix, upper=True)
-        return self._masked_factor
+        factor = self._masked_factor
+        if factor is None:
+            everything = np.ones(free.size, dtype=bool)
+            factor = self._masked_factor = _NodeSetFactor.around(self.pattern, everything, self.shape, 0)
+        if not factor.is_for(stencil, free):
+            factor.factorise(self._slot_values(stencil), stencil, free)
+        return factor
 
     def _is_factored(self, stencil: Stencil, held: np.ndarray) -> bool:
         """Whether the kept factor is that of ``stencil`` and ``held`` (or no node is free)."""
