@@ -397,3 +397,53 @@ def test_pool_workers_run_blas_single_threaded():
 
 def _thread_settings(_: int) -> dict[str, str | None]:
     return {name: os.environ.get(name) for name in parallel.SINGLE_THREADED}
+
+
+def test_work_here_shares_the_jobs_and_keeps_their_order():
+    """``work_here``: this process solves jobs from the end of the list while the workers start
+    (the last job always, so its pid is among them), the workers the rest; the results are the
+    serial ones in input order."""
+    items = list(range(40))
+    serial = parallel.map(slow_square, items, backend="serial")
+    shared = parallel.map(slow_square, items, workers=2, work_here=True)
+    assert [r for r, _ in shared] == [r for r, _ in serial]
+    pids = [pid for _, pid in shared]
+    assert pids[-1] == os.getpid()  # the last job is this process's
+    assert any(pid != os.getpid() for pid in pids)  # and the workers took the first ones
+
+
+def test_work_here_only_while_the_pool_starts():
+    """A kept pool's later calls find their workers running: the jobs all go to them."""
+    with parallel.Pool(workers=2) as pool:
+        first = pool.map(_pid, range(6), work_here=True)
+        second = pool.map(_pid, range(6), work_here=True)
+    assert os.getpid() in first
+    assert os.getpid() not in second
+
+
+def test_an_error_in_a_job_solved_here_reaches_the_caller_with_its_type():
+    with pytest.raises(InputError, match=r"^load_y = 3"):
+        parallel.map(refuse, [0, 1, 2, 3], workers=2, work_here=True)  # 3, the last, is solved here
+
+
+def test_ctrl_c_while_this_process_works_leaves_no_process():
+    """SIGINT while this process solves its own job (work_here): it stops handing out jobs,
+    ends the workers it started and exits 130, no process left."""
+    script = textwrap.dedent(
+        """
+        import time
+        from shaftline import parallel
+
+        if __name__ == "__main__":
+            try:
+                parallel.map(time.sleep, [60.0] * 4, workers=2, work_here=True)
+            except KeyboardInterrupt:
+                print("interrupted")
+                raise SystemExit(130)
+        """
+    )
+    start = time.monotonic()
+    result, before = _interrupt([sys.executable, "-c", script], workers=2)
+    assert time.monotonic() - start < 30.0
+    assert result.returncode == 130 and result.stdout.strip() == "interrupted", result.stderr
+    _assert_all_gone(before)

@@ -13,7 +13,9 @@ named in :data:`BACKENDS` (the style of SciPy's ``method=`` choices):
     core unless ``workers`` says. Workers start with ``forkserver`` where the platform has
     it (Linux), else ``spawn``, never ``fork``: numba's and OpenMP's thread pools do not
     survive a fork of a process that has started them, and a forked child would inherit
-    whatever solver state the parent holds.
+    whatever solver state the parent holds. With ``work_here`` the caller solves jobs too
+    while its workers start (their fork server imports the solver first: about half a
+    second that would leave a core idle).
 ``"dask"``
     A ``dask.distributed`` cluster: the scheduler at ``scheduler`` (``"tcp://host:8786"``), the
     caller's own ``dask.distributed.Client`` given as ``scheduler``,
@@ -144,12 +146,63 @@ def _gather_process(
     function: Callable[[Any], Any],
     batches: list[list[Any]],
     on_batch: Callable[[int], None],
+    work_here: bool = False,
 ) -> list[list[Any]]:
-    """Run the batches on a pool and collect them in order (the pool is the caller's to stop)."""
-    futures: dict[Future[list[Any]], int] = {
-        executor.submit(_run_batch, function, batch): index for index, batch in enumerate(batches)
-    }
+    """Run the batches on a pool and collect them in order (the pool is the caller's to stop).
+
+    With ``work_here`` the caller solves batches too, from the end of the list, until the first
+    worker delivers: a pool's workers start from the fork server, which the first pool of a
+    process must start and fill with the solver's imports first (about half a second), and
+    this process would otherwise wait through it with a core idle. The batches are handed out
+    from a thread meanwhile, because handing the first ones out waits for the fork server.
+    """
     results: list[list[Any]] = [[] for _ in batches]
+    futures: dict[Future[list[Any]], int] = {}
+    kept = len(batches) - 1 if work_here and len(batches) > 1 else len(batches)
+    failure: list[BaseException] = []
+
+    import threading
+
+    stop = threading.Event()
+
+    def submit() -> None:
+        try:
+            for index in range(kept):
+                if stop.is_set():
+                    return
+                futures[executor.submit(_run_batch, function, batches[index])] = index
+        except BaseException as error:  # told to the caller's thread below
+            failure.append(error)
+
+    if kept < len(batches):
+        handing_out = threading.Thread(target=submit, name="shaftline-pool-submit", daemon=True)
+        handing_out.start()
+        try:
+            results[kept] = _run_batch(function, batches[kept])
+        except BaseException:
+            # Ctrl-C or the function's error: no more workers started, and every one started is
+            # in the pool's table when the caller ends them.
+            stop.set()
+            handing_out.join()
+            raise
+        on_batch(kept)
+        handing_out.join()
+        if failure:
+            raise failure[0]
+        # More from the end while no worker has delivered and some batch is still queued here.
+        order = sorted(futures, key=futures.__getitem__, reverse=True)
+        while not any(future.done() for future in order):
+            taken = next((future for future in order if future.cancel()), None)
+            if taken is None:
+                break
+            order.remove(taken)
+            index = futures.pop(taken)
+            results[index] = _run_batch(function, batches[index])
+            on_batch(index)
+    else:
+        submit()
+        if failure:
+            raise failure[0]
     pending = set(futures)
     while pending:
         finished, pending = wait(pending, return_when=FIRST_EXCEPTION)
@@ -496,6 +549,7 @@ class Pool:
         *,
         chunksize: int = 1,
         progress: ProgressCallback | None = None,
+        work_here: bool = False,
     ) -> list[R]:
         """``[function(item) for item in items]`` on the pool's workers, in order (as :func:`map`).
 
@@ -506,10 +560,11 @@ class Pool:
         if self.backend == "serial":
             results = _serial(function, batches, on_batch)
         elif self.backend == "process":
+            starting = self._executor is None
             if self._executor is None:
                 self._executor = _new_executor(function, self.size)
             try:
-                results = _gather_process(self._executor, function, batches, on_batch)
+                results = _gather_process(self._executor, function, batches, on_batch, work_here=work_here and starting)
             except BaseException:
                 _stop(self._executor)
                 self._executor = None
@@ -544,6 +599,7 @@ def map(
     scheduler: str | Client | None = None,
     chunksize: int = 1,
     progress: ProgressCallback | None = None,
+    work_here: bool = False,
 ) -> list[R]:
     """``[function(item) for item in items]``, spread over cores or a cluster.
 
@@ -571,6 +627,12 @@ def map(
     progress : callable, optional
         ``progress(done, total)`` in this process as items finish (per job of
         ``chunksize`` items).
+    work_here : bool
+        ``"process"`` only: this process solves jobs too, from the end of the list, while
+        the pool's workers start and until the first of them delivers (their start waits
+        for the fork server, about half a second for the first pool of a process). For
+        jobs that give the same result wherever they run; those solved here see this
+        process's BLAS threads and state.
 
     Returns
     -------
@@ -594,4 +656,4 @@ def map(
     # a pool for one call: no more workers than jobs (a LocalCluster or process each costs a start)
     pool.size = max(1, min(pool.size, jobs))
     with pool:
-        return pool.map(function, items, chunksize=chunksize, progress=progress)
+        return pool.map(function, items, chunksize=chunksize, progress=progress, work_here=work_here)

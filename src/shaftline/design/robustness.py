@@ -252,6 +252,7 @@ def robustness(
         scheduler=scheduler,
         chunksize=max(1, math.ceil(len(pairs) / (4 * parallel.available_workers()))),
         progress=progress,
+        work_here=True,
     )
     per_design = [results[k * len(variants) : (k + 1) * len(variants)] for k in range(designs.shape[0])]
     return RobustnessResult(

@@ -186,6 +186,7 @@ def stribeck_curve(
         workers=workers,
         scheduler=scheduler,
         progress=progress,
+        work_here=True,
     )
     rows = np.array([row for chunk in solved for row in chunk])
     share = rows[:, 1]

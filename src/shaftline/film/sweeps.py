@@ -18,7 +18,8 @@ and differ in load and tilt. :func:`sweep` solves them as follows:
    iterations where a cold start takes four to six. A warm start that ends in contact or
    without convergence is solved again from the cold start, so a difficult case gets the
    answer it gets alone.
-4. **Spread** the chunks over workers with :func:`shaftline.parallel.map`.
+4. **Spread** the chunks over workers with :func:`shaftline.parallel.map`; this process
+   solves chunks from the end of the list while the workers start (``work_here``).
 
 The equilibrium of each case is the same problem whatever its start (Newton to
 ``SolverOptions.tolerance`` on the force), so a sweep agrees with the cases solved one by
@@ -276,6 +277,7 @@ def sweep(
         workers=workers,
         scheduler=scheduler,
         progress=None if local else told,
+        work_here=True,  # a chunk's answer is the same wherever it is solved
     )
     results: list[BearingResult | None] = [None] * len(cases)
     for (part, _), chunk_results in zip(chunks, solved, strict=True):
