@@ -424,3 +424,38 @@ def test_fzg_rating_does_not_depend_on_the_wheel_shift_given():
                               eta, share, rho)  # fmt: skip
         ratings.append(rating.safety)
     np.testing.assert_allclose(ratings[0], ratings[1], rtol=1e-12)
+
+
+def test_fzg_type_a_against_a_second_public_source():
+    # Issue 14 closing work (gap 4): a public gear code of the FEUP gear group, which runs FZG tests
+    # (github.com/cfernandesFEUP/Gear-Calculation, GearC/gears.py, 'TPA'), gives type A as z 16/24,
+    # m 4.5 mm, 20 deg, x 0.8532/-0.5 (and b 10 mm: the half-width A10 variant, or a slip - the
+    # example keeps 20 mm). Its x1 differs from the example's 0.8635 in the second decimal. Checks:
+    # (1) its shift sum is type C's 0.3532 (same teeth, same rig) and gives the rig's 91.500 mm without
+    # backlash (1e-3 mm), where 0.8635 gives 91.54; (2) with the tips and the rig's centre distance
+    # given, the pinion's shift does not enter the rating (1e-12); (3) the tips are what matter: the
+    # pinion tip by the addendum rule on 0.8532 would be 88.68 mm, not 88.77, and S_B at stage 6
+    # 0.6 % higher (measured; > 0.3 %, so the tip's source matters more than the shift's).
+    eta = float(contact_lubricant("FVA 3").dynamic_viscosity(90.0))
+
+    def pair(shift_1, tip_1):
+        return GearPair(
+            16, 24, 4.5e-3, 20 * DEG, 20e-3, shift_1=shift_1, shift_2=-0.5, centre_distance=91.5e-3,
+            tip_radius_1=tip_1 / 2, tip_radius_2=112.5e-3 / 2, allow_undercut=True,
+        )  # fmt: skip
+
+    def stage_6(gears):
+        rho = np.linspace(gears.start_of_contact, gears.end_of_contact, 200)
+        rating = iso_scuffing(gears, IsoScuffingData(6, roughness_ra=0.3e-6), FZG_TORQUE[:, None], FZG_SPEED, 90.0,
+                              eta, iso_load_sharing(gears, rho), rho)  # fmt: skip
+        return rating.safety
+
+    feup, example = pair(0.8532, 88.77e-3), fzg_a()
+    assert 0.8532 - 0.5 == pytest.approx(0.1817 + 0.1715, abs=1e-12)
+    assert feup._shifted_centre_distance() == pytest.approx(91.5e-3, abs=1e-6)
+    assert example._shifted_centre_distance() == pytest.approx(91.54e-3, abs=5e-6)
+    np.testing.assert_allclose(stage_6(feup), stage_6(example), rtol=1e-12)
+    tip_rule = feup.pitch_radius(1) * 2 + 2 * 4.5e-3 * (1 + 0.8532)
+    assert tip_rule == pytest.approx(88.679e-3, abs=1e-6)
+    ratio = stage_6(pair(0.8532, tip_rule))[5] / stage_6(example)[5]
+    assert 1.003 < ratio < 1.01
