@@ -14,13 +14,14 @@ from __future__ import annotations
 
 import math
 import warnings
+from dataclasses import replace
 
 import numpy as np
 from timing import median_time
 
 from shaftline.contact.lubricated import ContactModel, Surfaces
 from shaftline.contact.rheology import contact_lubricant
-from shaftline.gears.flash import IsoScuffingData, iso_scuffing
+from shaftline.gears.flash import FLASH_METHODS, IsoScuffingData, iso_scuffing
 from shaftline.gears.integral import integral_temperature
 from shaftline.gears.mesh import GearPair
 from shaftline.gears.scuffing import GearMesh, evaluate_mesh, scuffing_parameter
@@ -63,6 +64,20 @@ def main() -> None:
             f"ISO flash (TS 6336-20) and integral (-21) temperature, {n} points: {iso_seconds:.3f} s median; "
             f"S_B {safety.min():.2f}-{safety.max():.2f}; "
             f"both: {seconds + iso_seconds:.3f} s (ratio {(seconds + iso_seconds) / TARGET:.3f})"
+        )
+        # the flash-temperature forms of gears.flash.FLASH_METHODS, pair by pair in this process
+        rho = mesh.positions()
+        share = mesh.load_sharing(rho)
+        times = {}
+        for method in FLASH_METHODS:
+            form = replace(data, flash_method=method)
+            times[method], _ = median_time(
+                lambda form=form: iso_scuffing(pair, form, torque, speed, 90.0, eta, share, rho)
+            )
+        first = next(iter(times))
+        print(
+            "ISO flash temperature alone, by form: "
+            + ", ".join(f"{m} {t:.3f} s (ratio {t / times[first]:.2f})" for m, t in times.items())
         )
 
 

@@ -87,3 +87,48 @@ def test_mineral_alpha_from_the_published_oil_of_the_same_viscosity(name, tolera
     for temperature, viscosity, alpha in ((30.0, 0.153, 2.37e-8), (60.0, 0.034, 2.05e-8), (100.0, 0.0091, 1.58e-8)):
         assert float(lubricant.dynamic_viscosity(temperature)) == pytest.approx(viscosity, rel=tolerance)
         assert float(lubricant.alpha(temperature)) == pytest.approx(alpha, rel=1e-12)
+
+
+#: The correlation alpha = s nu^t (nu in mm^2/s, alpha in 1/GPa) that the FEUP gear group's papers
+#: attribute to Gold, Schmidt, Dicke, Loos & Assmann (2001, J. Synth. Lubr. 18: the attribution is
+#: recalled, the paper was not seen here), as two public gear codes of that group transcribe it
+#: (github.com/cfernandesFEUP/GEARpie, CLASSES/LUBRICANT_LIBRARY.py; .../Gear-Calculation,
+#: GearC/oils.py): both put the digits of s and t in other places (0.1390/0.9904, 1.390/0.9904) and
+#: pair the ester and PAO constants the other way round, so both ester pairings are tried; the
+#: mineral pair is the one both agree on once the digits are read as (9.904, 0.1390).
+_GOLD = {"mineral": ((9.904, 0.1390),), "ester": ((6.605, 0.1360), (7.382, 0.1335))}
+
+
+@pytest.mark.parametrize(
+    ("name", "base"), [("MIL-PRF-23699", "ester"), ("FVA 3", "mineral"), ("ISO VG 100", "mineral")]
+)
+def test_alpha_tables_against_golds_correlation(name, base):
+    # A second, independent source for the tabulated alpha (issue 14, closing work, gap 3): the
+    # tables (Jones et al. 1975 via Hamrock for the ester, Stachowiak & Batchelor Table 2.3 for the
+    # mineral oils) sit 9-27 % above Gold's correlation at 30-100 degC (measured), the same sign for
+    # all three oils - the definitions of alpha behind a table and a correlation differ (initial slope,
+    # secant over a pressure range). The band 1.0-1.4 catches a unit or digit slip (a factor 10) and a
+    # wrong base oil (the mineral table's alpha on the ester would be 1.7-2.2 times the correlation);
+    # it is not a check to a few per cent, and it does not source the ester's table itself.
+    lubricant = rheology.contact_lubricant(name)
+    for temperature in (30.0, 40.0, 60.0, 90.0, 100.0):
+        nu = float(lubricant.viscosity.kinematic_viscosity(temperature)) * 1e6
+        alpha = float(lubricant.alpha(temperature)) * 1e9
+        for s, t in _GOLD[base]:
+            assert 1.0 < alpha / (s * nu**t) < 1.4, (temperature, s)
+
+
+def test_fva_3_viscosity_against_a_second_public_source():
+    # FVA 3's viscosity (95 and 10.7 mm^2/s at 40/100 degC, 885 kg/m^3, "as commonly quoted", no data
+    # sheet found) against the ASTM D341 constants of 'FVA3' in a public gear code of the FEUP gear
+    # group (github.com/cfernandesFEUP/Gear-Calculation, GearC/oils.py: log log(nu + 0.7) = 9.2384 -
+    # 3.5810 log T, 900 kg/m^3 at 15 degC): 99.4 / 10.99 mm^2/s. Two quotes of one reference oil, 2.6-4.4 %
+    # apart from 40 to 100 degC (measured; 2.8 % at the FZG test's 90 degC), so 5 %: a different oil (the
+    # neighbouring ISO grades are 1.5 times apart) or a unit slip would fail. The data stay as they were
+    # (docs/theory.md 15.3): neither source is the FVA data sheet.
+    fva = rheology.contact_lubricant("FVA 3")
+    for temperature in (40.0, 60.0, 90.0, 100.0):
+        feup = -0.7 + 10 ** (10 ** (9.2384 - 3.5810 * np.log10(temperature + 273.15)))
+        ours = float(fva.viscosity.kinematic_viscosity(temperature)) * 1e6
+        assert ours == pytest.approx(feup, rel=0.05), temperature
+    assert float(fva.viscosity.density(15.0)) == pytest.approx(900.0, rel=0.02)

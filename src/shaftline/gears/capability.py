@@ -39,6 +39,11 @@ def _numbers(values: Any) -> Any:
     return [_numbers(v) for v in array]
 
 
+def _flash_form(result: GearResult) -> str:
+    method = result.study.iso.flash_method if result.study.iso is not None else "iso_cylindrical"
+    return {"iso_cylindrical": "its form for cylindrical gears, Eq. A.5", "iso_general": "its general Eq. 5"}[method]
+
+
 def _verdict(sp: float) -> str:
     from shaftline.gears.scuffing import NO_SCUFFING, SCUFFING
 
@@ -149,6 +154,7 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
         if iso is not None:
             out["iso"] = {
                 "fzg_load_stage": study.iso.fzg_load_stage if study.iso is not None else None,
+                "flash_method": study.iso.flash_method if study.iso is not None else None,
                 "mean_friction": _numbers(iso.friction),
                 "flash_max": _numbers(iso.flash_max),
                 "bulk_temperature": _numbers(iso.bulk),
@@ -254,7 +260,8 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
             self._table(result),
             Paragraph(f"Lubricant data: {result.study.mesh.model.lubricant.source}", "note"),
             Paragraph(
-                "SP: seed 002 Eq. 7 as read in docs/theory.md 19.2; ISO: flash-temperature (S_B, TS 6336-20) and "
+                "SP: seed 002 Eq. 7 as read in docs/theory.md 19.2; ISO: flash-temperature (S_B, TS 6336-20, "
+                f"{_flash_form(result)}) and "
                 "integral-temperature (S_intS, TS 6336-21; a ratio of absolute temperatures, < 1 high risk, 1-2 "
                 "critical) methods with coefficients as transcribed (theory 19.3, 19.5).",
                 "note",

@@ -10,6 +10,7 @@ Layout::
     [gears.test]        torque steps and pinion speeds (or FZG load stages)
     [gears.load_sharing] a load distribution along the path (optional; ISO's by default)
     [gears.iso]         the oil's FZG failure stage and ISO's factors (optional)
+    [gears.flash]       the form of ISO's flash temperature (optional, with [gears.iso])
 """
 
 from __future__ import annotations
@@ -176,6 +177,15 @@ class IsoSection(Section):
     """ISO 1328 flank tolerance grade (load sharing at A and E)."""
 
 
+class FlashSection(Section):
+    """Which form of ISO's flash temperature (docs/theory.md 19.3); needs [gears.iso]."""
+
+    method: Literal["iso_cylindrical", "iso_general"] = "iso_cylindrical"
+    """iso_cylindrical: ISO's form for cylindrical gears (Eq. A.5, Blok on the normal load; default);
+    iso_general: ISO's general Eq. (5) as transcribed (Blok, K = 0.80 on the transverse load, 2.9 % lower
+    flash temperature on 20 deg spur gears), for comparison with tools that use it."""
+
+
 class GearsSection(Section):
     """A lubricated gear pair rated for scuffing: seed 002's SP and ISO's flash temperature."""
 
@@ -214,9 +224,13 @@ class GearsSection(Section):
     """A load distribution along the path (default: ISO's load sharing without tip relief)."""
     iso: IsoSection | None = None
     """ISO/TS 6336-20 and -21 (flash and integral temperature) beside SP (optional)."""
+    flash: FlashSection | None = None
+    """The form of ISO's flash temperature (optional; with ``[gears.iso]``)."""
 
     @model_validator(mode="after")
     def _coefficient(self) -> GearsSection:
+        if self.flash is not None and self.iso is None:
+            raise field_error("flash.method", self.flash.method, "only with [gears.iso] (ISO's rating)", "")
         if self.thermal_coefficient is None and self.calibration is None:
             raise field_error("thermal_coefficient", "missing", "C in W/(m K), or a calibration test record")
         if self.critical_temperature <= self.oil_temperature:
@@ -308,6 +322,7 @@ def build_study(section: GearsSection, context: BuildContext) -> GearStudy:
             structural_factor=section.iso.structural_factor,
             lubrication=section.iso.lubrication,
             reduced_modulus=surfaces.modulus,
+            flash_method=section.flash.method if section.flash is not None else "iso_cylindrical",
         )
     record = None
     if section.calibration is not None:

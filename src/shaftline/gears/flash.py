@@ -1,19 +1,27 @@
 """Flash-temperature method of ISO/TS 6336-20 (formerly ISO/TR 13989-1, after DIN 3990-4) for an
 external spur or helical pair, vectorised along the path of contact (docs/theory.md Sect. 19.3).
 
-Blok's flash temperature of a Hertzian band heat source, both bodies of the same thermal contact
-coefficient ``B_M = sqrt(lambda rho c)``::
+Two forms of the flash temperature, chosen by name from :data:`FLASH_METHODS` (SciPy ``METHODS``
+style; docs/theory.md Sect. 19.3 for the evidence behind the default):
 
-    theta_fl = K mu_m X_J w |sqrt(v_1) - sqrt(v_2)| / (B_M sqrt(b_H)),   K = 0.80
+* ``"iso_cylindrical"`` (default) - ISO's form for cylindrical gears (ISO/TR 13989-1 Eq. A.5-A.8,
+  the form both public transcriptions rate with)::
 
-with ``w = X_Gamma w_Bt`` the shared transverse unit load (``w_Bt = F_t / b``, F_t at the
-reference circle, as ISO uses it), ``b_H = sqrt(8 w rho_rel / (pi E_r))`` the Hertz half-width
-for that load, v the flank speeds across the line of action. This is ISO's general form
-(its constant 2.52 in mixed units is K = 0.80, to 0.4 %). ISO's form for cylindrical gears with the
-thermo-elastic, geometry and angle factors (X_M = 50 for steel, X_G, X_alpha_beta in its full form)
-is Blok on the normal load w_Bt / cos(alpha_t) with K = 0.786, 2.6 % above this on 20 deg gears: which
-of the two ISO means is an open point (docs/theory.md Sect. 19.3, tests/gears/test_scuffing.py). For
-helical gears the factor sqrt(cos beta_b) of ISO's angle factor X_alpha_beta is applied.
+      theta_fl = mu_m X_M X_J X_G (X_Gamma w_Bt)^0.75 v_t^0.5 / a^0.25     (N/mm, m/s, mm)
+      X_G = 0.51 X_alpha_beta (u + 1)^0.5 |(1 + Gamma)^0.5 - (1 - Gamma/u)^0.5| / ((1 + Gamma)(u - Gamma))^0.25
+
+  with X_M = E_r^0.25 / B_M (50 for steel) and the angle factor X_alpha_beta in its full form (ISO's
+  Table A.1). On spur gears this is Blok's formula on the *normal* load w_Bt / cos(alpha_t) with
+  Blok's Hertzian constant 0.51 x 1.22 x (8/pi)^0.25 = 0.786 (= 1.11/sqrt(2)).
+* ``"iso_general"`` - ISO's general Eq. (5) as transcribed (constant 2.52 in mixed units), Blok's
+  formula on the *transverse* unit load at the reference circle::
+
+      theta_fl = K mu_m X_J w |sqrt(v_1) - sqrt(v_2)| / (B_M sqrt(b_H)),   K = 0.80
+
+  with ``w = X_Gamma w_Bt``, ``w_Bt = F_t / b``, ``b_H = sqrt(8 w rho_rel / (pi E_r))`` and the
+  factor sqrt(cos beta_b) of the 6336-20 transcription's angle factor for helical gears. On 20 deg
+  spur gears it is cos(alpha_t)^0.75 x 0.80/0.786 = 0.971 of the cylindrical form (S_B up to 2.9 % higher);
+  it was the only form before issue 14's closing work and is kept for comparison.
 
 Mean friction coefficient (ISO's method, constant along the path)::
 
@@ -93,6 +101,9 @@ class IsoScuffingData:
         C_a2, m (0: unmodified).
     reduced_modulus : float
         E_r = 2 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2), Pa.
+    flash_method : str
+        A key of :data:`FLASH_METHODS`: ``"iso_cylindrical"`` (ISO's form for cylindrical gears,
+        Eq. A.5, default) or ``"iso_general"`` (ISO's general Eq. 5 on the transverse load).
     """
 
     fzg_load_stage: float
@@ -104,8 +115,11 @@ class IsoScuffingData:
     mesh_stiffness: float = 20e9
     tip_relief_wheel: float = 0.0
     reduced_modulus: float = 206e9 / (1 - 0.3**2)
+    flash_method: str = "iso_cylindrical"
 
     def __post_init__(self) -> None:
+        if self.flash_method not in FLASH_METHODS:
+            raise InputError("flash_method", self.flash_method, "", "one of " + ", ".join(FLASH_METHODS))
         if not 1.0 <= self.fzg_load_stage <= 14.0:
             raise InputError("fzg_load_stage", self.fzg_load_stage, "", "an FZG A/8.3/90 load stage 1-14")
         if self.base_oil not in LUBRICANT_COEFFICIENTS:
@@ -172,6 +186,91 @@ def approach_factor(
     return np.maximum(x_j, 1.0)
 
 
+def angle_factor(
+    working_pressure_angle: float, normal_pressure_angle: float, helix_angle: float, transverse_pressure_angle: float
+) -> float:
+    """ISO's angle factor X_alphabeta (ISO/TR 13989-1 Eq. A.8, ISO/TR 13989-2), angles in rad::
+
+        X_alphabeta = 1.22 (sin a_wt cos a_n cos beta)^0.25 / (cos a_wt cos a_t)^0.5
+
+    The cos a_n, cos a_t terms carry the normal load F_t/cos a_t of Blok's formula; with them the
+    factor reproduces ISO's Table A.1 (0.978 at a_wt = 20 deg, 1.007 at 22 deg for a_n = 20 deg),
+    without them it is 1.6 % low (docs/theory.md Sect. 19.3, tests/gears/test_scuffing.py).
+
+    Examples
+    --------
+    >>> round(angle_factor(math.radians(20), math.radians(20), 0.0, math.radians(20)), 3)
+    0.978
+    """
+    return (
+        1.22
+        * (math.sin(working_pressure_angle) * math.cos(normal_pressure_angle) * math.cos(helix_angle)) ** 0.25
+        / math.sqrt(math.cos(working_pressure_angle) * math.cos(transverse_pressure_angle))
+    )
+
+
+def thermoelastic_factor(data: IsoScuffingData) -> float:
+    """X_M = E_r^0.25 / B_M in ISO's mixed units (N/mm^2, N/(mm^0.5 m^0.5 s^0.5 K)): 50 for steel."""
+    return 1000.0 * (data.reduced_modulus * 1e-6) ** 0.25 / (data.thermal_contact_coefficient / math.sqrt(1000.0))
+
+
+def _general_form(
+    pair: GearPair,
+    data: IsoScuffingData,
+    friction: np.ndarray,
+    load: np.ndarray,
+    pinion_speed: np.ndarray,
+    position: np.ndarray,
+) -> np.ndarray:
+    # Blok with K = 0.80 on the transverse unit load (ISO's general Eq. 5 as transcribed), SI
+    rho_1, rho_2 = _transverse_radii(pair, position)
+    v_1 = pinion_speed * rho_1
+    v_2 = pinion_speed * pair.teeth_1 / pair.teeth_2 * rho_2
+    rho_rel = rho_1 * rho_2 / (rho_1 + rho_2)
+    half_width = np.sqrt(8.0 * load * rho_rel / (math.pi * data.reduced_modulus))
+    theta = (
+        BLOK_CONSTANT
+        * friction
+        * load
+        * np.abs(np.sqrt(v_1) - np.sqrt(v_2))
+        / (data.thermal_contact_coefficient * np.sqrt(half_width))
+    )
+    return theta * math.sqrt(math.cos(pair.base_helix_angle))
+
+
+def _cylindrical_form(
+    pair: GearPair,
+    data: IsoScuffingData,
+    friction: np.ndarray,
+    load: np.ndarray,
+    pinion_speed: np.ndarray,
+    position: np.ndarray,
+) -> np.ndarray:
+    # ISO/TR 13989-1 Eq. (A.5)-(A.8) in its mixed units (N/mm, m/s, mm), as the standard writes it
+    u = pair.teeth_2 / pair.teeth_1
+    gamma = np.asarray(position, dtype=float) / pair.pitch_point - 1.0
+    x_ab = angle_factor(
+        pair.working_pressure_angle, pair.pressure_angle, pair.helix_angle, pair.transverse_pressure_angle
+    )
+    # |sqrt(1 + Gamma) - sqrt(1 - Gamma/u)| is |sqrt(rho_1) - sqrt(rho_2/u)| / sqrt(rho_1C)
+    x_g = (
+        0.51
+        * x_ab
+        * math.sqrt(u + 1.0)
+        * np.abs(np.sqrt(1.0 + gamma) - np.sqrt(1.0 - gamma / u))
+        / ((1.0 + gamma) * (u - gamma)) ** 0.25
+    )
+    v_t = pinion_speed * pair.pitch_radius(1)
+    a = pair.working_centre_distance * 1e3
+    return friction * thermoelastic_factor(data) * x_g * (load * 1e-3) ** 0.75 * np.sqrt(v_t) / a**0.25
+
+
+#: Forms of the flash temperature (SciPy ``METHODS`` style): ``form(pair, data, mu_m, X_Gamma w_Bt,
+#: omega_1, rho_1)`` -> theta_fl / X_J, K. The default is the standard's form for cylindrical gears
+#: (docs/theory.md Sect. 19.3 gives the evidence).
+FLASH_METHODS = {"iso_cylindrical": _cylindrical_form, "iso_general": _general_form}
+
+
 def flash_temperature(
     pair: GearPair,
     data: IsoScuffingData,
@@ -181,24 +280,13 @@ def flash_temperature(
     share: np.ndarray,
     position: np.ndarray,
 ) -> np.ndarray:
-    """Blok's flash temperature along the path (K above the bulk), broadcast like the inputs."""
-    rho_1, rho_2 = _transverse_radii(pair, position)
-    omega_1 = np.asarray(pinion_speed, dtype=float)
-    v_1 = omega_1 * rho_1
-    v_2 = omega_1 * pair.teeth_1 / pair.teeth_2 * rho_2
+    """Flash temperature along the path (K above the bulk) by ``data.flash_method``, broadcast like
+    the inputs: friction mu_m, pinion torque (N m), speed (rad/s), shares X_Gamma at positions rho_1 (m)."""
     load = np.asarray(share) * unit_load(pair, pinion_torque)
-    rho_rel = rho_1 * rho_2 / (rho_1 + rho_2)
-    half_width = np.sqrt(8.0 * load * rho_rel / (math.pi * data.reduced_modulus))
     x_j = approach_factor(pair, data, pinion_torque, position)
-    theta = (
-        BLOK_CONSTANT
-        * np.asarray(friction)
-        * x_j
-        * load
-        * np.abs(np.sqrt(v_1) - np.sqrt(v_2))
-        / (data.thermal_contact_coefficient * np.sqrt(half_width))
-    )
-    return theta * math.sqrt(math.cos(pair.base_helix_angle))
+    form = FLASH_METHODS[data.flash_method]
+    speed = np.asarray(pinion_speed, dtype=float)
+    return x_j * form(pair, data, np.asarray(friction, dtype=float), load, speed, np.asarray(position, dtype=float))
 
 
 @dataclass(frozen=True, eq=False)

@@ -30,7 +30,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from shaftline.gears.flash import LUBRICANT_COEFFICIENTS, LUBRICATION_METHODS, IsoScuffingData, unit_load
+from shaftline.gears.flash import (
+    LUBRICANT_COEFFICIENTS,
+    LUBRICATION_METHODS,
+    IsoScuffingData,
+    angle_factor,
+    thermoelastic_factor,
+    unit_load,
+)
 from shaftline.gears.mesh import GearPair
 
 
@@ -49,29 +56,6 @@ def contact_ratio_factor(eps_1: float, eps_2: float) -> float:
     if eps_1 >= eps_2:
         return k * (0.44 * eps_1**2 + 0.59 * eps_2**2 + 0.30 * eps_1 - 0.30 * eps_2 - 0.15 * eps_1 * eps_2)
     return k * (0.59 * eps_1**2 + 0.44 * eps_2**2 - 0.30 * eps_1 + 0.30 * eps_2 - 0.15 * eps_1 * eps_2)
-
-
-def angle_factor(
-    working_pressure_angle: float, normal_pressure_angle: float, helix_angle: float, transverse_pressure_angle: float
-) -> float:
-    """ISO's angle factor X_alphabeta (ISO/TR 13989-1 Eq. A.8, ISO/TR 13989-2), angles in rad::
-
-        X_alphabeta = 1.22 (sin a_wt cos a_n cos beta)^0.25 / (cos a_wt cos a_t)^0.5
-
-    The cos a_n, cos a_t terms carry the normal load F_t/cos a_t of Blok's formula; with them the
-    factor reproduces ISO's Table A.1 (0.978 at a_wt = 20 deg, 1.007 at 22 deg for a_n = 20 deg),
-    without them it is 1.6 % low (docs/theory.md Sect. 19.3, tests/gears/test_scuffing.py).
-
-    Examples
-    --------
-    >>> round(angle_factor(math.radians(20), math.radians(20), 0.0, math.radians(20)), 3)
-    0.978
-    """
-    return (
-        1.22
-        * (math.sin(working_pressure_angle) * math.cos(normal_pressure_angle) * math.cos(helix_angle)) ** 0.25
-        / math.sqrt(math.cos(working_pressure_angle) * math.cos(transverse_pressure_angle))
-    )
 
 
 def helical_load_factor(total_contact_ratio: float) -> float:
@@ -133,7 +117,7 @@ def integral_temperature(
     x_l = LUBRICANT_COEFFICIENTS[data.base_oil]
     mu = 0.045 * (np.maximum(w, 150.0) * k_bg / (v_sum * rho_red)) ** 0.2 * (viscosity * 1e3) ** -0.05 * roughness * x_l
     # thermo-elastic factor X_M (50 for steel) from the data's E_r and B_M, ISO's mixed units
-    x_m = 1000.0 * (data.reduced_modulus * 1e-6) ** 0.25 / (data.thermal_contact_coefficient / math.sqrt(1000.0))
+    x_m = thermoelastic_factor(data)
     x_ab = angle_factor(alpha_wt, pair.pressure_angle, pair.helix_angle, alpha_t)
     rho_e1 = pair.end_of_contact * 1e3
     rho_e2 = pair.line_of_action * 1e3 - rho_e1
