@@ -133,8 +133,11 @@ class TrendStore:
         try:
             self._engine = sa.create_engine(text, future=True)
             self._metadata = _tables()
-            if file is not None and file.is_file():  # (inspecting a new file would make it empty first)
-                self._refuse_foreign(file)
+            if file is None or file.is_file():  # (inspecting a new file would make it empty first)
+                # before create_all: a foreign table of one of our names is refused with nothing written
+                tables = self._refuse_other_columns(_hide_password(text))
+                if file is not None:
+                    self._refuse_foreign(file, tables)
             self._metadata.create_all(self._engine)
         except InputError:
             self._engine.dispose()
@@ -155,21 +158,43 @@ class TrendStore:
         self._windows = self._metadata.tables["windows"]
         self._values = self._metadata.tables["window_values"]
 
-    def _refuse_foreign(self, file: Path) -> None:
+    def _refuse_other_columns(self, shown: str) -> set[str]:
+        """The database's tables; an InputError when one of them has the name of one of ours but
+        other columns (another application's ``recordings`` on a shared server, say): inserting
+        into it would fail half-way with the driver's error, or write into that application's
+        table. Checked before anything is created, so nothing is written."""
+        import sqlalchemy as sa
+
+        inspector = sa.inspect(self._engine)
+        tables = set(inspector.get_table_names())
+        for table in self._metadata.sorted_tables:
+            if table.name not in tables:
+                continue
+            have = [column["name"] for column in inspector.get_columns(table.name)]
+            need = [column.name for column in table.columns]
+            if set(have) != set(need):
+                raise InputError(
+                    "db",
+                    shown,
+                    "",
+                    f"a database whose table {table.name} is the trend store's, with the columns {', '.join(need)} "
+                    f"(this one's has {', '.join(have) or 'none'}: another application's table; use another database)",
+                )
+        return tables
+
+    def _refuse_foreign(self, file: Path, tables: set[str]) -> None:
         """A SQLite file holding tables but not those of a trend database is another program's:
         adding ours to it would change a file this program did not make (a server's database
         may hold other applications' tables beside ours, and is not checked)."""
-        import sqlalchemy as sa
-
-        tables = set(sa.inspect(self._engine).get_table_names())
         ours = set(self._metadata.tables)
         if tables and not ours <= tables:
+            others = sorted(tables - ours) or sorted(tables)
             raise InputError(
                 "db",
                 str(file),
                 "",
                 f"a trend database made by monitor identify, or a new file (this one holds the tables "
-                f"{', '.join(sorted(tables - ours)[:5])})",
+                f"{', '.join(others[:5])})",
             )
 
     @staticmethod
