@@ -528,6 +528,9 @@ def section_trends(
     ratios = store.series("film_parameter", recording=recording)
     if films.empty:
         return ()
+    # windows stored as rejected (processing.REJECTED): no film, and each ends a lambda stretch
+    flags = store.series("rejected", "bearing", recording=recording)
+    gaps = [t.to_pydatetime() for t, v in zip(flags["time"], flags["value"], strict=True) if v and math.isfinite(v)]
     key = ["time", "window", "recording", "section"]
     joined = films.merge(ratios[[*key, "value"]], on=key, how="left", suffixes=("", "_lambda"))
     if limit is None:
@@ -540,7 +543,11 @@ def section_trends(
         times = [t.to_pydatetime() for t in rows["time"]]
         film = rows["value"].to_numpy(float)
         parameter = rows["value_lambda"].to_numpy(float)
-        alarms = lambda_alarms(times, parameter, threshold, min_duration, section)
+        # a rejected window ends a stretch: lambda is not known to stay below the threshold over it,
+        # so the alarm's duration is not carried across it
+        order = sorted(range(len(times) + len(gaps)), key=lambda k: (times + gaps)[k])
+        values = np.concatenate([parameter, np.full(len(gaps), math.nan)])[order]
+        alarms = lambda_alarms([(times + gaps)[k] for k in order], values, threshold, min_duration, section)
         crossing = None
         long_enough = bool(times) and max(times) - min(times) >= MIN_TREND_SPAN
         if math.isfinite(limit) and np.isfinite(film).sum() >= 2 and long_enough:
