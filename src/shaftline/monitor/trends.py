@@ -13,6 +13,10 @@ a fleet, by changing the URL only:
     One row per processed window: recording, window number, time of its first sample, speed.
 ``window_values``
     One row per (window, section, quantity): the value in SI units.
+``recording_settings``
+    One row per recording: the processing settings its windows were identified with (layout,
+    window, runout source...), as JSON, and their SHA-256; a recording is skipped as stored only
+    when they are the same (added to a database made before it).
 
 Each window is written in its own transaction, with all its values, so a run stopped at any
 point leaves whole windows only; a new run on the same recording skips the windows already
@@ -91,7 +95,19 @@ def _tables() -> Any:
         sa.Column("quantity", sa.String(128), primary_key=True),
         sa.Column("value", sa.Float, nullable=True),
     )
+    sa.Table(
+        "recording_settings",
+        metadata,
+        sa.Column("recording_id", sa.Integer, sa.ForeignKey("recordings.id", ondelete="CASCADE"), primary_key=True),
+        sa.Column("fingerprint", sa.String(64), nullable=False),
+        sa.Column("settings", sa.Text, nullable=False),
+    )
     return metadata
+
+
+#: The tables a trend database holds from its first version on (``recording_settings`` came later
+#: and is added to a database without it).
+CORE_TABLES = frozenset({"recordings", "windows", "window_values"})
 
 
 @dataclass(frozen=True)
@@ -187,7 +203,7 @@ class TrendStore:
         adding ours to it would change a file this program did not make (a server's database
         may hold other applications' tables beside ours, and is not checked)."""
         ours = set(self._metadata.tables)
-        if tables and not ours <= tables:
+        if tables and not CORE_TABLES <= tables:
             others = sorted(tables - ours) or sorted(tables)
             raise InputError(
                 "db",
@@ -251,6 +267,53 @@ class TrendStore:
                 ).first()
         assert row is not None
         return StoredRecording(row.id, row.content_hash, row.name, _aware(row.started_at), bool(row.complete))
+
+    def find(self, content_hash: str) -> StoredRecording | None:
+        """The row of the recording of these bytes, None when it is not stored."""
+        import sqlalchemy as sa
+
+        with self._engine.connect() as connection:
+            row = connection.execute(
+                sa.select(self._recordings).where(self._recordings.c.content_hash == content_hash)
+            ).first()
+        if row is None:
+            return None
+        return StoredRecording(row.id, row.content_hash, row.name, _aware(row.started_at), bool(row.complete))
+
+    def settings(self, recording: StoredRecording) -> dict[str, Any] | None:
+        """The processing settings ``recording``'s windows were stored with (None: none recorded,
+        a recording stored before settings were kept, or one with no window yet)."""
+        import json
+
+        import sqlalchemy as sa
+
+        table = self._metadata.tables["recording_settings"]
+        with self._engine.connect() as connection:
+            row = connection.execute(sa.select(table.c.settings).where(table.c.recording_id == recording.id)).first()
+        return None if row is None else dict(json.loads(row.settings))
+
+    def keep_settings(self, recording: StoredRecording, settings: Mapping[str, Any], replace: bool = False) -> None:
+        """Record the processing settings of ``recording``'s windows; with ``replace``, first delete
+        its windows and their values (its row stays; no other recording is touched), in the same
+        transaction, so that it is identified again with these settings."""
+        import hashlib
+        import json
+
+        import sqlalchemy as sa
+
+        table = self._metadata.tables["recording_settings"]
+        text = json.dumps(dict(settings), sort_keys=True)
+        fingerprint = hashlib.sha256(text.encode()).hexdigest()
+        with self._engine.begin() as connection:
+            if replace:
+                ids = sa.select(self._windows.c.id).where(self._windows.c.recording_id == recording.id)
+                connection.execute(self._values.delete().where(self._values.c.window_id.in_(ids)))
+                connection.execute(self._windows.delete().where(self._windows.c.recording_id == recording.id))
+                connection.execute(
+                    self._recordings.update().where(self._recordings.c.id == recording.id).values(complete=False)
+                )
+            connection.execute(table.delete().where(table.c.recording_id == recording.id))
+            connection.execute(table.insert().values(recording_id=recording.id, fingerprint=fingerprint, settings=text))
 
     def windows_done(self, recording: StoredRecording) -> set[int]:
         """Numbers of the windows of ``recording`` already stored."""
