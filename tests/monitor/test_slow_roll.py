@@ -251,8 +251,12 @@ def _identify(tmp_path: Path, name: str, path: Path, extra: str, window: str = "
     (tmp_path / f"{name}.toml").write_text(rig)
     database = tmp_path / f"{name}.sqlite"
     result = invoke("monitor", "identify", str(tmp_path / f"{name}.toml"), str(path), "--db", str(database),
-                    "--json", "-", *more)  # fmt: skip
+                    "--json", str(tmp_path / f"{name}.json"), *more)  # fmt: skip
     return result, database
+
+
+def _document(tmp_path: Path, name: str) -> dict:
+    return json.loads((tmp_path / f"{name}.json").read_text())["monitor"]["identify"]
 
 
 def _fast_errors(case: RigCase, fast, database: Path, first: int, size: int, windows: int) -> dict:
@@ -288,10 +292,13 @@ def test_monitor_identify_with_a_slow_roll_speed(run_up, tmp_path):
     case, fast, path = run_up
     compensated, database = _identify(tmp_path, "speed", path, 'slow_roll_speed = "30 rpm"\n', "8 s")
     assert compensated.exit_code == 0, compensated.stderr
-    document = json.loads(compensated.stdout)["monitor"]["identify"]
+    document = _document(tmp_path, "speed")
     runout = document["recordings"][0]["runout"]
     assert (runout["source"], runout["windows"], runout["revolutions"]) == ("slow windows", 4, SLOW_TURNS)
     assert document["slow_roll"] is None and document["slow_roll_speed"] == pytest.approx(30 * RPM)
+    text = " ".join(compensated.stdout.split())
+    assert "run_up.csv: runout from its 4 windows below 30 rpm (4 revolutions at 15 rpm)" in text, text
+    assert "warning" not in text, text
     raw, raw_database = _identify(tmp_path, "raw", path, "", "8 s")
     assert raw.exit_code == 0, raw.stderr
     errors = _fast_errors(case, fast, database, 4, 16384, 2)
@@ -322,7 +329,7 @@ def test_monitor_identify_with_a_runout_table(runout_rig, tmp_path):
     case, recording, run_file, _ = runout_rig
     result, database = _identify(tmp_path, "table", run_file, _table(case))
     assert result.exit_code == 0, result.stderr
-    document = json.loads(result.stdout)["monitor"]["identify"]
+    document = _document(tmp_path, "table")
     assert document["slow_roll"]["source"] == "table" and document["recordings"][0]["runout"]["source"] == "table"
     interpolation = math.radians(5.0) ** 2 / 8 * (RUNOUT[0] + 4 * RUNOUT[1]) + 0.0003e-6
     residual = SLOPE * SPEED / 2048.0 + interpolation
@@ -430,3 +437,15 @@ def test_a_stored_recording_with_other_settings_is_refused_or_replaced(runout_ri
     back, _ = identify(str(run_file))
     assert back.exit_code == 2, back.stderr
     assert "were identified with (runout slow-roll recording sha256" in " ".join(back.stderr.split())
+
+
+def test_a_slow_roll_speed_above_the_running_speed_is_warned(runout_rig, tmp_path):
+    """`slow_roll_speed` above the recording's 120 rpm: every window is a "slow" one, so its runout is the
+    recording's whole synchronous motion (film, whirl); said in the terminal, as for a slow-roll file run
+    at speed (the run-up above, 15 rpm slow windows against 120 rpm, is not warned)."""
+    _, _, run_file, _ = runout_rig
+    result, _ = _identify(tmp_path, "high", run_file, 'slow_roll_speed = "150 rpm"\n')
+    assert result.exit_code == 0, result.stderr
+    text = " ".join(result.stdout.split())
+    assert "warning: run.csv: runout from its 2 windows below 150 rpm" in text, text
+    assert "but every window is below slow_roll_speed" in text, text

@@ -491,13 +491,34 @@ def _slow_windows_notes(identified: Identified) -> list[Block]:
             )
             continue
         worst = int(np.argmax(runout.peak_to_peak))
-        blocks.append(
-            Paragraph(
-                f"{name}: runout from its {_count(runout.windows, 'window')} below {_rpm(below)} ({runout.revolutions} "
-                f"revolutions at {_rpm(runout.speed)}) subtracted from all its windows, up to "
-                f"{runout.peak_to_peak[worst] * MICRO:.2f} µm peak to peak (probe {runout.channels[worst]})."
-            )
+        text = (
+            f"{name}: runout from its {_count(runout.windows, 'window')} below {_rpm(below)} ({runout.revolutions} "
+            f"revolutions at {_rpm(runout.speed)}) subtracted from all its windows, up to "
+            f"{runout.peak_to_peak[worst] * MICRO:.2f} µm peak to peak (probe {runout.channels[worst]})"
         )
+        speeds = np.concatenate([t.speed for t in item.trends if t.section == "bearing"] or [np.empty(0)])
+        faster = speeds[np.isfinite(speeds) & (speeds >= below)]
+        # as for a slow-roll file: a "slow roll" near the running speed holds the film's and the
+        # unbalance's motion, which would then be subtracted from every window
+        if faster.size == 0:
+            blocks.append(
+                Paragraph(
+                    f"warning: {text}; but every window is below slow_roll_speed: the runout is the whole synchronous "
+                    "motion of the recording. Set slow_roll_speed below its running speed.",
+                    "warn",
+                )
+            )
+        elif runout.speed > SLOW_ROLL_SHARE * float(faster.min()):
+            blocks.append(
+                Paragraph(
+                    f"warning: {text}; but its slow windows ran at {_rpm(runout.speed)}, more than "
+                    f"{SLOW_ROLL_SHARE:.0%} of its lowest speed above the threshold ({_rpm(float(faster.min()))}): "
+                    "their runout holds the film's and the unbalance's motion. Set slow_roll_speed near turning gear.",
+                    "warn",
+                )
+            )
+        else:
+            blocks.append(Paragraph(text + "."))
     return blocks
 
 
