@@ -285,6 +285,7 @@ def _fast_errors(case: RigCase, fast, database: Path, first: int, size: int, win
     return worst
 
 
+@pytest.mark.slow  # two runs of the verb over 48 s of recording (about 10 s on the shared machine)
 def test_monitor_identify_with_a_slow_roll_speed(run_up, tmp_path):
     """`slow_roll_speed = "30 rpm"`: the runout from the recording's own slow windows is subtracted, and the
     fast windows' lowest film and 1X amplitudes are the forward model's within the bound (as with a slow-roll
