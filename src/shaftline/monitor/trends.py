@@ -112,13 +112,21 @@ CORE_TABLES = frozenset({"recordings", "windows", "window_values"})
 
 @dataclass(frozen=True)
 class StoredRecording:
-    """A recording's row: its id and whether every window of it is stored."""
+    """A recording's row: its id, whether every window of it is stored, and its length (s)."""
 
     id: int
     content_hash: str
     name: str
     started_at: dt.datetime
     complete: bool
+    duration: float = math.nan
+
+
+def _stored(row: Any) -> StoredRecording:
+    duration = row.samples / row.sample_rate if row.sample_rate else math.nan
+    return StoredRecording(
+        row.id, row.content_hash, row.name, _aware(row.started_at), bool(row.complete), float(duration)
+    )
 
 
 class TrendStore:
@@ -266,7 +274,7 @@ class TrendStore:
                     sa.select(self._recordings).where(self._recordings.c.content_hash == content_hash)
                 ).first()
         assert row is not None
-        return StoredRecording(row.id, row.content_hash, row.name, _aware(row.started_at), bool(row.complete))
+        return _stored(row)
 
     def find(self, content_hash: str) -> StoredRecording | None:
         """The row of the recording of these bytes, None when it is not stored."""
@@ -278,7 +286,7 @@ class TrendStore:
             ).first()
         if row is None:
             return None
-        return StoredRecording(row.id, row.content_hash, row.name, _aware(row.started_at), bool(row.complete))
+        return _stored(row)
 
     def settings(self, recording: StoredRecording) -> dict[str, Any] | None:
         """The processing settings ``recording``'s windows were stored with (None: none recorded,
@@ -377,7 +385,7 @@ class TrendStore:
 
         with self._engine.connect() as connection:
             rows = connection.execute(sa.select(self._recordings).order_by(self._recordings.c.started_at))
-            return [StoredRecording(r.id, r.content_hash, r.name, _aware(r.started_at), bool(r.complete)) for r in rows]
+            return [_stored(r) for r in rows]
 
     # -- series ------------------------------------------------------------------------
     def series(self, quantity: str, section: str | None = None, recording: StoredRecording | None = None) -> Any:
@@ -587,13 +595,19 @@ def section_trends(
     recording : StoredRecording, optional
         One recording only (default: all, oldest first).
     """
+    import pandas as pd
+
     films = store.series("min_film_thickness", recording=recording)
     ratios = store.series("film_parameter", recording=recording)
     if films.empty:
         return ()
     # windows stored as rejected (processing.REJECTED): no film, and each ends a lambda stretch
     flags = store.series("rejected", "bearing", recording=recording)
-    gaps = [t.to_pydatetime() for t, v in zip(flags["time"], flags["value"], strict=True) if v and math.isfinite(v)]
+    flags = flags[flags["value"].fillna(0.0) != 0.0]
+    gaps = [t.to_pydatetime() for t in flags["time"]]
+    gap_names = list(flags["recording"])
+    windows = pd.concat([films, flags]) if not flags.empty else films
+    lengths = _window_lengths(windows, {r.name: r.duration for r in store.recordings()})
     key = ["time", "window", "recording", "section"]
     joined = films.merge(ratios[[*key, "value"]], on=key, how="left", suffixes=("", "_lambda"))
     if limit is None:
@@ -606,11 +620,15 @@ def section_trends(
         times = [t.to_pydatetime() for t in rows["time"]]
         film = rows["value"].to_numpy(float)
         parameter = rows["value_lambda"].to_numpy(float)
-        # a rejected window ends a stretch: lambda is not known to stay below the threshold over it,
-        # so the alarm's duration is not carried across it
-        order = sorted(range(len(times) + len(gaps)), key=lambda k: (times + gaps)[k])
-        values = np.concatenate([parameter, np.full(len(gaps), math.nan)])[order]
-        alarms = lambda_alarms([(times + gaps)[k] for k in order], values, threshold, min_duration, section)
+        # a rejected window, or time not recorded, ends a stretch: lambda is not known to stay below
+        # the threshold over it, so the alarm's duration is not carried across it
+        stamps, values = _with_breaks(
+            times + gaps,
+            np.concatenate([parameter, np.full(len(gaps), math.nan)]),
+            list(rows["recording"]) + gap_names,
+            lengths,
+        )
+        alarms = lambda_alarms(stamps, values, threshold, min_duration, section)
         crossing = None
         long_enough = bool(times) and max(times) - min(times) >= MIN_TREND_SPAN
         if math.isfinite(limit) and np.isfinite(film).sum() >= 2 and long_enough:
@@ -619,6 +637,51 @@ def section_trends(
             SectionTrend(section, times, film, parameter, rows["speed"].to_numpy(float), tuple(alarms), limit, crossing)
         )
     return tuple(trends)
+
+
+def _window_lengths(frame: Any, durations: Mapping[str, float]) -> dict[str, float]:
+    """Length of a window of each recording, s: the time from one window to the next of the
+    stored ones (a recording's windows are back to back), or the recording's length when it has
+    one window only."""
+    import pandas as pd
+
+    lengths: dict[str, float] = {}
+    for name, rows in frame.drop_duplicates(["recording", "window"]).groupby("recording"):
+        number = rows["window"].to_numpy(float)
+        stamps = pd.to_datetime(rows["time"], utc=True)
+        seconds = (stamps - stamps.min()).dt.total_seconds().to_numpy(float)
+        order = np.argsort(number)
+        steps, spans = np.diff(number[order]), np.diff(seconds[order])
+        each = spans[steps > 0] / steps[steps > 0]
+        lengths[str(name)] = float(np.median(each)) if each.size else float(durations.get(str(name), math.nan))
+    return lengths
+
+
+#: Unrecorded time between two windows, in windows, beyond which a lambda stretch ends (back-to-back
+#: files lose less than half a window at each file's end: the windows cut from them).
+MAX_GAP_WINDOWS = 0.5
+
+
+def _with_breaks(
+    times: list[dt.datetime], values: np.ndarray, recordings: list[str], lengths: Mapping[str, float]
+) -> tuple[list[dt.datetime], np.ndarray]:
+    """The series in time order with a missing value (NaN, which ends a lambda stretch) wherever
+    the next window starts more than :data:`MAX_GAP_WINDOWS` of a window after the end of the
+    one before: time between two recordings, or windows of one not stored."""
+    order = sorted(range(len(times)), key=lambda k: times[k])
+    stamps: list[dt.datetime] = []
+    out: list[float] = []
+    for position, k in enumerate(order):
+        if position:
+            before = order[position - 1]
+            window = lengths.get(recordings[before], math.nan)
+            unrecorded = (times[k] - times[before]).total_seconds() - window
+            if math.isfinite(window) and unrecorded > MAX_GAP_WINDOWS * window:
+                stamps.append(times[before])
+                out.append(math.nan)
+        stamps.append(times[k])
+        out.append(float(values[k]))
+    return stamps, np.asarray(out)
 
 
 @dataclass(frozen=True)
