@@ -862,7 +862,7 @@ def identify_recordings(
                     f"{file}: settings",
                     "; ".join(f"{k} {wanted[k]}" for k in differ),
                     "",
-                    f"those its windows in {shown} were identified with ("
+                    f"the settings its windows in {shown} were identified with ("
                     + "; ".join(f"{k} {(before or {}).get(k, 'not recorded')}" for k in differ)
                     + "); --replace identifies it again in place of its stored windows (other recordings are kept), "
                     "or use another database",
