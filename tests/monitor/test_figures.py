@@ -80,3 +80,30 @@ def test_the_centre_line_zoom_keeps_its_tick_labels_apart():
     low, high = axes[1].get_xlim()
     shown = [t for t in axes[1].get_xticks() if low <= t <= high]
     assert 2 <= len(shown) <= 5
+
+
+@pytest.mark.parametrize(
+    ("step", "pattern", "offset"),
+    [
+        (2.0, r"06:00:\d\d", "2026-11-02"),  # the windows of one recording: clock times, not bare seconds
+        (0.05, r"0[56]:\d\d:\d\d\.\d+", "2026-11-02"),  # windows of 0.05 s (the case's shortest)
+        (20 * 60.0, r"\d\d:\d\d", "2026-11-02"),  # a stretch of minutes: hours and minutes, as before
+    ],
+)
+def test_trend_time_axis_reads_as_clock_times(step, pattern, offset):
+    """The trend over seconds labelled its ticks 06:00, 01, 02, ... (bare seconds): every label is
+    now a clock time to the tick's resolution, the date the offset at the axis' end."""
+    import datetime as dt
+    import re
+
+    from shaftline.monitor.trends import SectionTrend
+
+    start = dt.datetime(2026, 11, 2, 6, 0, tzinfo=dt.UTC)
+    times = [start + dt.timedelta(seconds=step * k) for k in range(4)]
+    trend = SectionTrend("bearing", times, np.full(4, 2e-6), np.full(4, 0.9), np.ones(4), (), 2.2e-6, None)
+    ax = Figure().subplots()
+    figures.trend([trend], ax=ax)
+    ax.figure.canvas.draw()
+    labels = [label.get_text() for label in ax.get_xticklabels() if label.get_text()]
+    assert len(labels) >= 3 and all(re.fullmatch(pattern, label) for label in labels), labels
+    assert ax.xaxis.get_major_formatter().get_offset() == offset

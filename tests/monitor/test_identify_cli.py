@@ -548,3 +548,69 @@ def test_a_recording_without_a_keyphasor_at_a_given_speed(truth, tmp_path):
     assert slow.exit_code == 2 and slow.stderr.startswith("error: monitor.identify.slow_roll = "), slow.stderr
     assert "allowed recordings with a keyphasor" in slow.stderr, slow.stderr
     assert not (tmp_path / "n.sqlite").exists() and not (tmp_path / "s.sqlite").exists()
+
+
+#: The columns of the trend store's table `recordings`, as the refusal names them.
+RECORDINGS_COLUMNS = "id, content_hash, name, samples, sample_rate, started_at, complete"
+
+
+def _foreign_recordings(url: str) -> None:
+    """Another application's table named `recordings`, with a row, in the database at ``url``."""
+    engine = sa.create_engine(url)
+    try:
+        with engine.begin() as connection:
+            connection.execute(sa.text("create table recordings (id integer primary key, title text, artist text)"))
+            connection.execute(sa.text("insert into recordings values (1, 'Kind of Blue', 'Miles Davis')"))
+    finally:
+        engine.dispose()
+
+
+def _tables_and_rows(url: str) -> tuple[list[str], list[tuple]]:
+    engine = sa.create_engine(url)
+    try:
+        with engine.connect() as connection:
+            tables = sorted(sa.inspect(connection).get_table_names())
+            rows = [tuple(r) for r in connection.execute(sa.text("select * from recordings"))]
+        return tables, rows
+    finally:
+        engine.dispose()
+
+
+def _refused_foreign_recordings(truth, tmp_path, url: str) -> None:
+    path = write_csv(tmp_path / "r.csv", truth)
+    result = invoke("monitor", "identify", str(case_file(tmp_path)), str(path), "--db", url)
+    assert result.exit_code == 2, result.stdout
+    assert result.stderr.count("\n") == 1, result.stderr
+    text = result.stderr
+    assert text.startswith(f"error: database = '{url.split('?')[0]}"), text
+    assert f"table recordings is the trend store's, with the columns {RECORDINGS_COLUMNS}" in text, text
+    assert "this one's has id, title, artist" in text, text
+    # nothing written: no table of ours made beside it, its row as it was
+    assert _tables_and_rows(url) == (["recordings"], [(1, "Kind of Blue", "Miles Davis")])
+
+
+def test_a_foreign_recordings_table_in_sqlite_is_one_line(truth, tmp_path):
+    """Another program's SQLite file with a table named `recordings` of other columns: one line
+    naming the table, the columns the trend store needs and the ones it has; the file unchanged."""
+    database = tmp_path / "music.sqlite"
+    _foreign_recordings(f"sqlite:///{database}")
+    before = database.read_bytes()
+    _refused_foreign_recordings(truth, tmp_path, f"sqlite:///{database}")
+    assert database.read_bytes() == before
+
+
+def test_a_foreign_recordings_table_on_postgresql_is_one_line(truth, tmp_path, postgres_url):
+    """The same on the real PostgreSQL server (a database of its own on it, so that the other tests'
+    tables are not touched): the driver's error on the first insert was what the user saw, after our
+    other two tables had been created beside the foreign one."""
+    engine = sa.create_engine(postgres_url, isolation_level="AUTOCOMMIT")
+    try:
+        with engine.connect() as connection:
+            connection.execute(sa.text("create database music"))
+        url = postgres_url.replace("@/postgres?", "@/music?")
+        _foreign_recordings(url)
+        _refused_foreign_recordings(truth, tmp_path, url)
+    finally:
+        with engine.connect() as connection:
+            connection.execute(sa.text("drop database if exists music"))
+        engine.dispose()

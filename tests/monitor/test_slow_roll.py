@@ -187,3 +187,266 @@ def test_a_slow_roll_at_running_speed_is_warned(runout_rig, tmp_path):
         assert result.exit_code == 0, result.stderr
         text = " ".join(result.stdout.split())
         assert ("but the slow roll ran at 120 rpm, more than 50% of the lowest speed identified" in text) == warned
+
+
+# --- Runout from the slow windows of the recording itself, and from a table in the case ---------------
+#
+# A run-up as a monitoring system records it: 32 s at the 15 rpm slow roll, then 16 s at 120 rpm, in one
+# file (the forward model's two recordings back to back; 8 s windows, so the change of speed falls on a
+# window boundary and each window's keyphasor marks come from one of them). Each 8 s slow window holds
+# two keyphasor marks (the model's first mark is 0.92 of a turn in), one whole revolution: the profile
+# averages 4 revolutions, 256 samples a bin. Its bound is the one above with that count.
+SLOW_TURNS = 4
+SLOW_PROFILE_ERROR = (
+    5 * math.sqrt(NOISE**2 + STEP**2 / 12) / math.sqrt(SLOW_TURNS * 8192 / 128) + QUANTISER_BIAS + 0.0003e-6
+)
+SLOW_WINDOWS_RESIDUAL = SLOPE * (SPEED + SLOW) / 2048.0 + SLOW_PROFILE_ERROR
+
+
+def _true_profile(case: RigCase, bins: int = 128) -> np.ndarray:
+    """The forward model's runout of every probe at the keyphasor's shaft phase (bin centres), mean removed."""
+    phases = np.random.default_rng([case.seed, 0]).uniform(0, 2 * math.pi, (len(case.layout.channels), 2))
+    centres = (np.arange(bins) + 0.5) * 2 * math.pi / bins
+    true = RUNOUT[0] * np.cos(centres[:, None] - phases[None, :, 0]) + RUNOUT[1] * np.cos(
+        2 * centres[:, None] - phases[None, :, 1]
+    )
+    return true - true.mean(axis=0)
+
+
+@pytest.fixture(scope="module")
+def run_up(tmp_path_factory):
+    from dataclasses import replace
+
+    folder = tmp_path_factory.mktemp("run_up")
+    case = RigCase(runout=RUNOUT, revolutions=8.0, axial_nodes=31, circumferential_nodes=72)
+    slow = simulate(case, SLOW)
+    fast = simulate(replace(case, revolutions=32.0), SPEED)
+    assert slow.signals.shape[0] == 4 * 16384 and fast.signals.shape[0] == 2 * 16384
+    both = replace(
+        fast,
+        signals=np.concatenate([slow.signals, fast.signals]),
+        keyphasor=np.concatenate([slow.keyphasor, fast.keyphasor]),
+    )
+    return case, fast, _csv(folder / "run_up.csv", case, both)
+
+
+def test_the_slow_windows_of_a_recording_give_the_runout(run_up):
+    """The windows below slow_roll_speed (30 rpm): the four at 15 rpm, four whole revolutions; their profile
+    is the forward model's runout within the bound (the slow roll's one-sample mark error and the profile's
+    noise over 4 turns). Below 10 rpm no window is slow enough: None."""
+    from shaftline.monitor.processing import plan_recording, slow_windows_runout
+
+    case, _, path = run_up
+    plan = plan_recording(case.layout, path, "keyphasor", window_seconds=8.0)
+    found = slow_windows_runout(case.layout, plan, 30 * RPM)
+    assert found is not None and (found.windows, found.revolutions, found.source) == (4, SLOW_TURNS, "slow windows")
+    assert found.speed == pytest.approx(SLOW, rel=1e-3)
+    bound = SLOPE * SLOW / 2048.0 + SLOW_PROFILE_ERROR
+    np.testing.assert_allclose(found.profile, _true_profile(case), atol=bound)
+    assert slow_windows_runout(case.layout, plan, 10 * RPM) is None
+
+
+def _identify(tmp_path: Path, name: str, path: Path, extra: str, window: str = "2 s", *more: str):
+    rig = case_file(tmp_path).read_text().replace('window = "2 s"', f'window = "{window}"') + extra
+    (tmp_path / f"{name}.toml").write_text(rig)
+    database = tmp_path / f"{name}.sqlite"
+    result = invoke("monitor", "identify", str(tmp_path / f"{name}.toml"), str(path), "--db", str(database),
+                    "--json", str(tmp_path / f"{name}.json"), *more)  # fmt: skip
+    return result, database
+
+
+def _document(tmp_path: Path, name: str) -> dict:
+    return json.loads((tmp_path / f"{name}.json").read_text())["monitor"]["identify"]
+
+
+def _fast_errors(case: RigCase, fast, database: Path, first: int, size: int, windows: int) -> dict:
+    """Largest error of each section's stored lowest film and 1X amplitudes over the fast windows against the
+    forward model's, in units of the bound (5 sigma of the film noise + the residual runout)."""
+    whirl = case.whirl * (SPEED / case.whirl_speed) ** 2
+    worst = {"low": 0.0, "1x": 0.0}
+    for section in case.layout.sections:
+        ey, ez = fast.centres(np.array([section.position]))
+        true_min = fast.clearance - np.hypot(ey[:, 0], ez[:, 0])
+        true_low = []
+        for k in range(windows):
+            block = slice(k * size, (k + 1) * size)
+            marks = revolution_marks(fast.keyphasor[block])
+            true_low.append(true_min[block][marks[0] : marks[-1]].min())
+        sigma = film_noise_std(section, FILM_ANGLES, case.layout.rotation, _gap_std(case, section)).max()
+        gain = film_noise_std(section, FILM_ANGLES, case.layout.rotation, np.ones(len(section.probes))).max()
+        residual = math.sqrt(len(section.probes)) * gain * SLOW_WINDOWS_RESIDUAL
+        with TrendStore(database) as store:
+            low = store.series("min_film_thickness_low", section.name)["value"].to_numpy()[first:]
+            one_x = np.concatenate(
+                [store.series(q, section.name)["value"].to_numpy()[first:] for q in ("vertical_1x", "horizontal_1x")]
+            )
+        worst["low"] = max(worst["low"], np.abs(low - true_low).max() / (5 * sigma + residual))
+        worst["1x"] = max(worst["1x"], np.abs(one_x - whirl).max() / residual)
+    return worst
+
+
+@pytest.mark.slow  # two runs of the verb over 48 s of recording (about 10 s on the shared machine)
+def test_monitor_identify_with_a_slow_roll_speed(run_up, tmp_path):
+    """`slow_roll_speed = "30 rpm"`: the runout from the recording's own slow windows is subtracted, and the
+    fast windows' lowest film and 1X amplitudes are the forward model's within the bound (as with a slow-roll
+    file, the residual for 4 turns); without it they are far off. The JSON names the source per recording."""
+    case, fast, path = run_up
+    compensated, database = _identify(tmp_path, "speed", path, 'slow_roll_speed = "30 rpm"\n', "8 s")
+    assert compensated.exit_code == 0, compensated.stderr
+    document = _document(tmp_path, "speed")
+    runout = document["recordings"][0]["runout"]
+    assert (runout["source"], runout["windows"], runout["revolutions"]) == ("slow windows", 4, SLOW_TURNS)
+    assert document["slow_roll"] is None and document["slow_roll_speed"] == pytest.approx(30 * RPM)
+    text = " ".join(compensated.stdout.split())
+    assert "run_up.csv: runout from its 4 windows below 30 rpm (4 revolutions at 15 rpm)" in text, text
+    assert "warning" not in text, text
+    raw, raw_database = _identify(tmp_path, "raw", path, "", "8 s")
+    assert raw.exit_code == 0, raw.stderr
+    errors = _fast_errors(case, fast, database, 4, 16384, 2)
+    assert errors["low"] <= 1.0 and errors["1x"] <= 1.0, errors
+    raw_errors = _fast_errors(case, fast, raw_database, 4, 16384, 2)
+    assert raw_errors["low"] > 1.0 and raw_errors["1x"] > 5.0, raw_errors
+
+
+def _table(case: RigCase, step_deg: float = 5.0) -> str:
+    """The forward model's runout of every probe as [[monitor.identify.runout]] rows, um, every step_deg."""
+    phases = np.random.default_rng([case.seed, 0]).uniform(0, 2 * math.pi, (len(case.layout.channels), 2))
+    angles = np.radians(np.arange(0.0, 360.0, step_deg))
+    rows = []
+    for channel, (first, second) in zip(case.layout.channels, phases, strict=True):
+        values = RUNOUT[0] * np.cos(angles - first) + RUNOUT[1] * np.cos(2 * angles - second)
+        shaft_angle = ", ".join(f'"{a:g} deg"' for a in np.degrees(angles))
+        value = ", ".join(f'"{v * 1e6:.6f} um"' for v in values)
+        rows.append(f'\n[[monitor.identify.runout]]\nprobe = "{channel}"\n')
+        rows.append(f"shaft_angle = [{shaft_angle}]\nvalue = [{value}]\n")
+    return "".join(rows)
+
+
+def test_monitor_identify_with_a_runout_table(runout_rig, tmp_path):
+    """A runout table in the case (the forward model's runout every 5 deg, as a commissioning measurement
+    would give it, to 1e-6 um): the lowest film and 1X amplitudes of the 120 rpm recording within the bound
+    of the slow-roll file's test, whose profile error is replaced by the table's interpolation error (chord
+    of a curve of largest curvature A1 + 4 A2 over 5 deg: (5 deg)^2 / 8 x 6 um = 0.0057 um) and the 128 bins'."""
+    case, recording, run_file, _ = runout_rig
+    result, database = _identify(tmp_path, "table", run_file, _table(case))
+    assert result.exit_code == 0, result.stderr
+    document = _document(tmp_path, "table")
+    assert document["slow_roll"]["source"] == "table" and document["recordings"][0]["runout"]["source"] == "table"
+    interpolation = math.radians(5.0) ** 2 / 8 * (RUNOUT[0] + 4 * RUNOUT[1]) + 0.0003e-6
+    residual = SLOPE * SPEED / 2048.0 + interpolation
+    size = 4096
+    whirl = case.whirl * (SPEED / case.whirl_speed) ** 2
+    for section in case.layout.sections:
+        ey, ez = recording.centres(np.array([section.position]))
+        true_min = recording.clearance - np.hypot(ey[:, 0], ez[:, 0])
+        true_low = []
+        for k in range(2):
+            block = slice(k * size, (k + 1) * size)
+            marks = revolution_marks(recording.keyphasor[block])
+            true_low.append(true_min[block][marks[0] : marks[-1]].min())
+        sigma = film_noise_std(section, FILM_ANGLES, case.layout.rotation, _gap_std(case, section)).max()
+        gain = film_noise_std(section, FILM_ANGLES, case.layout.rotation, np.ones(len(section.probes))).max()
+        bound = math.sqrt(len(section.probes)) * gain * residual
+        with TrendStore(database) as store:
+            low = store.series("min_film_thickness_low", section.name)["value"].to_numpy()
+            one_x = np.concatenate(
+                [store.series(q, section.name)["value"].to_numpy() for q in ("vertical_1x", "horizontal_1x")]
+            )
+        assert np.abs(low - true_low).max() <= 5 * sigma + bound, section.name
+        assert np.abs(one_x - whirl).max() <= bound, section.name
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        ('slow_roll_speed = "30 rpm"\nslow_roll = "slow.csv"\n',
+         "monitor.identify.slow_roll_speed = 3.14159265359 rad/s: allowed one source of runout only"),
+        ('slow_roll_speed = "-3 rpm"\n', "monitor.identify.slow_roll_speed = "),
+        ('slow_roll_speed = "3000 rpm"\n', "monitor.identify.slow_roll_speed = "),
+        ('\n[[monitor.identify.runout]]\nprobe = "D1_1"\nshaft_angle = ["0 deg", "90 deg", "45 deg"]\n'
+         'value = ["1 um", "0 um", "-1 um"]\n',
+         "monitor.identify.runout[0].shaft_angle[2] = 0.785398163397 rad: allowed > shaft_angle[1]"),
+        ('\n[[monitor.identify.runout]]\nprobe = "D1_1"\nshaft_angle = ["0 deg", "90 deg", "180 deg", "270 deg"]\n'
+         'value = ["1 um", "0 um", "-1 um"]\n',
+         "monitor.identify.runout[0].value = 3: allowed one value per shaft angle (4)"),
+        ('\n[[monitor.identify.runout]]\nprobe = "D1_1"\nshaft_angle = ["10 deg", "90 deg", "370 deg"]\n'
+         'value = ["1 um", "0 um", "-1 um"]\n', "monitor.identify.runout[0].shaft_angle[2] = "),
+        ('\n[[monitor.identify.runout]]\nprobe = "D1_1"\nshaft_angle = ["0 deg", "90 deg", "180 deg"]\n'
+         'value = ["1 mm", "0 um", "-1 um"]\n', "monitor.identify.runout[0].value[0] = 0.001 m"),
+        ('\n[[monitor.identify.runout]]\nprobe = "D9_1"\nshaft_angle = ["0 deg", "90 deg", "180 deg"]\n'
+         'value = ["1 um", "0 um", "-1 um"]\n', "monitor.identify.runout[0].probe = 'D9_1': allowed one of the probes"),
+        ('\n[[monitor.identify.runout]]\nprobe = "D1_1"\nshaft_angle = ["0 deg", "90 deg", "180 deg"]\n'
+         'value = ["1 um", "0 um", "-1 um"]\n', "monitor.identify.runout = '1 of 9 probes': allowed a runout table for "
+         "every probe (missing: D1_2, D1_3"),
+    ],
+)  # fmt: skip
+def test_bad_runout_settings_are_one_line(runout_rig, tmp_path, extra, message):
+    """Each wrong runout setting: one line naming the field, the value with its unit and what is allowed;
+    nothing stored."""
+    _, _, run_file, _ = runout_rig
+    (tmp_path / "slow.csv").write_text("not used")
+    result, database = _identify(tmp_path, "bad", run_file, extra)
+    assert result.exit_code == 2, result.stdout
+    assert result.stderr.count("\n") == 1 and message in result.stderr, result.stderr
+    assert not database.exists()
+
+
+def test_a_stored_recording_with_other_settings_is_refused_or_replaced(runout_rig, tmp_path):
+    """A recording stored without runout compensation and run again with a slow roll was skipped as stored
+    (its content hash): now it is refused in one line naming the setting that differs, the database
+    untouched; --replace identifies it again, its windows then the same as in a new database with the slow
+    roll, another recording's windows kept; the same command again stores nothing, and the first
+    (without the slow roll) is now the one refused."""
+    case, _, run_file, slow_file = runout_rig
+    other = tmp_path / "other.csv"
+    text = run_file.read_text()
+    other.write_text(text + text.rstrip("\n").rsplit("\n", 1)[1] + "\n")  # other bytes: one sample more
+    database = tmp_path / "m.sqlite"
+    rig = str(case_file(tmp_path))
+
+    def identify(*arguments: str, db: Path = database):
+        result = invoke("monitor", "identify", rig, *arguments, "--db", str(db), "--json", "-")
+        return result, json.loads(result.stdout)["monitor"]["identify"] if result.exit_code == 0 else None
+
+    first, _ = identify(str(run_file), str(other))
+    assert first.exit_code == 0, first.stderr
+    with TrendStore(database) as store:
+        kept = store.series("min_film_thickness_low")
+        kept = kept[kept["recording"] == "other.csv"].reset_index(drop=True)
+    before = database.read_bytes()
+    refused, _ = identify(str(run_file), "--slow-roll", str(slow_file))
+    assert refused.exit_code == 2 and refused.stderr.count("\n") == 1, refused.stderr
+    message = " ".join(refused.stderr.split())
+    assert message.startswith("error: run.csv: settings = 'runout slow-roll recording sha256 "), message
+    assert "were identified with (runout none); --replace identifies it again" in message, message
+    assert database.read_bytes() == before
+    replaced, document = identify(str(run_file), "--slow-roll", str(slow_file), "--replace")
+    assert replaced.exit_code == 0, replaced.stderr
+    assert [(r["windows"], r["written"], r["replaced"]) for r in document["recordings"]] == [(2, 2, True)]
+    fresh, _ = identify(str(run_file), "--slow-roll", str(slow_file), db=tmp_path / "fresh.sqlite")
+    assert fresh.exit_code == 0, fresh.stderr
+    with TrendStore(database) as store, TrendStore(tmp_path / "fresh.sqlite") as new:
+        now = store.series("min_film_thickness_low")
+        np.testing.assert_array_equal(
+            now[now["recording"] == "run.csv"]["value"].to_numpy(), new.series("min_film_thickness_low")["value"]
+        )
+        after = now[now["recording"] == "other.csv"].reset_index(drop=True)
+        assert len(store.recordings()) == 2
+    assert after.equals(kept)
+    again, document = identify(str(run_file), "--slow-roll", str(slow_file))
+    assert again.exit_code == 0 and document["recordings"][0]["written"] == 0, again.stderr
+    back, _ = identify(str(run_file))
+    assert back.exit_code == 2, back.stderr
+    assert "were identified with (runout slow-roll recording sha256" in " ".join(back.stderr.split())
+
+
+def test_a_slow_roll_speed_above_the_running_speed_is_warned(runout_rig, tmp_path):
+    """`slow_roll_speed` above the recording's 120 rpm: every window is a "slow" one, so its runout is the
+    recording's whole synchronous motion (film, whirl); said in the terminal, as for a slow-roll file run
+    at speed (the run-up above, 15 rpm slow windows against 120 rpm, is not warned)."""
+    _, _, run_file, _ = runout_rig
+    result, _ = _identify(tmp_path, "high", run_file, 'slow_roll_speed = "150 rpm"\n')
+    assert result.exit_code == 0, result.stderr
+    text = " ".join(result.stdout.split())
+    assert "warning: run.csv: runout from its 2 windows below 150 rpm" in text, text
+    assert "but every window is below slow_roll_speed" in text, text

@@ -97,3 +97,44 @@ def test_postgresql_round_trip(postgres_url):
         _round_trip(store)
     with TrendStore(postgres_url) as store:  # a second connection sees the committed rows
         assert len(store.series("lambda")) == 6
+
+
+def test_a_rejected_window_ends_a_lambda_stretch(tmp_path):
+    """Six windows 5 min apart, lambda 0.8 in every identified one, window 3 stored as rejected (no
+    film, as processing stores a window with too many invalid samples): the stretch 0-2 lasts 10 min,
+    an alarm; 4-5 lasts 5 min, none. Carried across the rejected window it was one alarm of 25 min,
+    a duration no data supports. The trend itself holds the five identified windows."""
+    from shaftline.monitor.trends import section_trends
+
+    with TrendStore(tmp_path / "m.sqlite") as store:
+        recording = store.recording("b" * 64, "run.csv", 1000, 2048.0, START)
+        for k in range(6):
+            time = START + dt.timedelta(minutes=5 * k)
+            if k == 3:
+                values = {("bearing", "rejected"): 1.0, ("bearing", "invalid_share"): 0.2}
+            else:
+                values = {(s, q): v for s in ("D1", "bearing") for q, v in
+                          (("min_film_thickness", 1.6e-6), ("film_parameter", 0.8))}  # fmt: skip
+            store.add_window(recording, k, time, values, speed=12.0)
+        trends = section_trends(store, 1.0, dt.timedelta(minutes=10))
+    for trend in trends:
+        assert len(trend.times) == 5
+        assert [(a.start, a.end) for a in trend.alarms] == [(START, START + dt.timedelta(minutes=10))], trend.section
+
+
+@pytest.mark.parametrize(("gap", "spans"), [(dt.timedelta(days=1), [10, 10]), (dt.timedelta(0), [25])])
+def test_time_not_recorded_ends_a_lambda_stretch(tmp_path, gap, spans):
+    """Two recordings of three 5-min windows each, lambda 0.8 throughout. A day apart: two alarms of
+    10 min (the stretch ran on over the day between them, an alarm of a day and 10 min that no data
+    supports). Back to back (the second starts where the first ends): one alarm of 25 min."""
+    from shaftline.monitor.trends import section_trends
+
+    with TrendStore(tmp_path / "m.sqlite") as store:
+        for n, name in enumerate(("a.csv", "b.csv")):
+            begin = START + n * (dt.timedelta(minutes=15) + gap)
+            recording = store.recording(name[0] * 64, name, 15 * 60 * 100, 100.0, begin)  # 15 min at 100 Hz
+            for k in range(3):
+                values = {("bearing", "min_film_thickness"): 1.6e-6, ("bearing", "film_parameter"): 0.8}
+                store.add_window(recording, k, begin + dt.timedelta(minutes=5 * k), values, speed=12.0)
+        (trend,) = section_trends(store, 1.0, dt.timedelta(minutes=10))
+    assert [a.duration / dt.timedelta(minutes=1) for a in trend.alarms] == spans

@@ -21,7 +21,7 @@ if TYPE_CHECKING:
     from shaftline.monitor.case import MonitorSection
     from shaftline.monitor.forward import Recording
     from shaftline.monitor.probes import ProbeLayout
-    from shaftline.monitor.processing import Identified, RejectedWindow
+    from shaftline.monitor.processing import Identified, RejectedWindow, SlowRoll
     from shaftline.monitor.study import MonitorResult, MonitorStudy, WindowResult
     from shaftline.monitor.trends import LambdaAlarm, SectionTrend
 
@@ -69,7 +69,8 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
 
             if plan is None:
                 raise InputError("RECORDING", "none", "", "one recording file or more")
-            identified = identify_recordings(study.layout, plan, study.bending_shape(), progress)
+            again = bool(options.get("replace", False))
+            identified = identify_recordings(study.layout, plan, study.bending_shape(), progress, again)
             result = replace(result, identified=identified)
         return result
 
@@ -199,7 +200,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
         if result.identified is not None:
             blocks += [
                 *_masked_warnings(result.identified),
-                _runout_note(result.identified),
+                *_runout_blocks(result.identified),
                 _identified_table(result.identified),
             ]
         if result.points:
@@ -413,23 +414,29 @@ def _trend_json(trend: SectionTrend) -> dict[str, Any]:
     }
 
 
+def _runout_json(slow: SlowRoll | None) -> dict[str, Any] | None:
+    if slow is None:
+        return None
+    return {
+        "source": slow.source,
+        "name": slow.name,
+        "content_hash": slow.content_hash,
+        "speed": slow.speed if math.isfinite(slow.speed) else None,
+        "revolutions": slow.revolutions,
+        "windows": slow.windows,
+        "masked_samples": slow.masked,
+        "runout_peak_to_peak": dict(zip(slow.channels, slow.peak_to_peak.tolist(), strict=True)),
+    }
+
+
 def identified_json(identified: Identified) -> dict[str, Any]:
     """``monitor.identify`` of results.json: per recording its windows and trends (SI units)."""
-    slow = identified.slow_roll
     return {
         "database": identified.database,
         "lambda_threshold": identified.lambda_threshold,
         "alarm_duration": identified.alarm_duration,
-        "slow_roll": None
-        if slow is None
-        else {
-            "name": slow.name,
-            "content_hash": slow.content_hash,
-            "speed": slow.speed,
-            "revolutions": slow.revolutions,
-            "masked_samples": slow.masked,
-            "runout_peak_to_peak": dict(zip(slow.channels, slow.peak_to_peak.tolist(), strict=True)),
-        },
+        "slow_roll": _runout_json(identified.slow_roll),
+        "slow_roll_speed": identified.slow_roll_speed,
         "recordings": [
             {
                 "name": item.plan.recording.path.name,
@@ -440,6 +447,8 @@ def identified_json(identified: Identified) -> dict[str, Any]:
                 "windows": item.processed.windows,
                 "written": item.processed.written,
                 "masked_samples": item.processed.masked,
+                "runout": _runout_json(item.runout),
+                "replaced": item.replaced,
                 "rejected_windows": [
                     {
                         "window": w.window,
@@ -461,8 +470,82 @@ def identified_json(identified: Identified) -> dict[str, Any]:
 SLOW_ROLL_SHARE = 0.5
 
 
+def _slow_windows_notes(identified: Identified) -> list[Block]:
+    """What ``slow_roll_speed`` found in each recording identified by this run."""
+    import numpy as np
+
+    below = identified.slow_roll_speed
+    assert below is not None
+    blocks: list[Block] = []
+    for item in identified.recordings:
+        name, runout = item.plan.recording.path.name, item.runout
+        if runout is None and item.processed.written == 0:
+            continue  # stored before with these settings: nothing identified now
+        if runout is None:
+            blocks.append(
+                Paragraph(
+                    f"warning: {name}: no window below slow_roll_speed {_rpm(below)}: the probes' runout is not "
+                    "subtracted from its windows.",
+                    "warn",
+                )
+            )
+            continue
+        worst = int(np.argmax(runout.peak_to_peak))
+        text = (
+            f"{name}: runout from its {_count(runout.windows, 'window')} below {_rpm(below)} ({runout.revolutions} "
+            f"revolutions at {_rpm(runout.speed)}) subtracted from all its windows, up to "
+            f"{runout.peak_to_peak[worst] * MICRO:.2f} µm peak to peak (probe {runout.channels[worst]})"
+        )
+        speeds = np.concatenate([t.speed for t in item.trends if t.section == "bearing"] or [np.empty(0)])
+        faster = speeds[np.isfinite(speeds) & (speeds >= below)]
+        # as for a slow-roll file: a "slow roll" near the running speed holds the film's and the
+        # unbalance's motion, which would then be subtracted from every window
+        if faster.size == 0:
+            blocks.append(
+                Paragraph(
+                    f"warning: {text}; but every window is below slow_roll_speed: the runout is the whole synchronous "
+                    "motion of the recording. Set slow_roll_speed below its running speed.",
+                    "warn",
+                )
+            )
+        elif runout.speed > SLOW_ROLL_SHARE * float(faster.min()):
+            blocks.append(
+                Paragraph(
+                    f"warning: {text}; but its slow windows ran at {_rpm(runout.speed)}, more than "
+                    f"{SLOW_ROLL_SHARE:.0%} of its lowest speed above the threshold ({_rpm(float(faster.min()))}): "
+                    "their runout holds the film's and the unbalance's motion. Set slow_roll_speed near turning gear.",
+                    "warn",
+                )
+            )
+        else:
+            blocks.append(Paragraph(text + "."))
+    return blocks
+
+
+def _runout_blocks(identified: Identified) -> list[Block]:
+    """The runout subtracted (or not) and the recordings whose windows were replaced."""
+    runout = _slow_windows_notes(identified) if identified.slow_roll_speed is not None else [_runout_note(identified)]
+    replaced: list[Block] = [
+        Paragraph(
+            f"{item.plan.recording.path.name}: stored before with other processing settings; its windows were "
+            "replaced (--replace)."
+        )
+        for item in identified.recordings
+        if item.replaced
+    ]
+    return [*runout, *replaced]
+
+
 def _runout_note(identified: Identified) -> Paragraph:
     slow = identified.slow_roll
+    if slow is not None and slow.source == "table":
+        import numpy as np
+
+        worst = int(np.argmax(slow.peak_to_peak))
+        return Paragraph(
+            f"Runout subtracted from every window: the case's runout table ([[monitor.identify.runout]]), up to "
+            f"{slow.peak_to_peak[worst] * MICRO:.2f} µm peak to peak (probe {slow.channels[worst]})."
+        )
     if slow is None:
         return Paragraph(
             "No slow-roll recording (--slow-roll or [monitor.identify] slow_roll): the probes' runout is not "
@@ -559,7 +642,7 @@ def _identified_table(identified: Identified) -> Table:
 def _identified_blocks(identified: Identified, levels: tuple[float, float], layout: ProbeLayout) -> list[Block]:
     from shaftline.monitor import figures
 
-    blocks: list[Block] = [*_masked_warnings(identified), _runout_note(identified), _identified_table(identified)]
+    blocks: list[Block] = [*_masked_warnings(identified), *_runout_blocks(identified), _identified_table(identified)]
     for index, item in enumerate(identified.recordings):
         if not item.trends:
             continue
@@ -618,6 +701,14 @@ def identify_command(
             "[monitor.identify] slow_roll, else none.",
         ),
     ] = None,
+    replace: Annotated[
+        bool,
+        typer.Option(
+            "--replace",
+            help="Identify again a recording stored with other settings (slow roll, runout, window, layout...): its "
+            "stored windows are replaced, other recordings kept; without it such a recording is refused.",
+        ),
+    ] = False,
     json_path: JsonOption = None,
     out: OutOption = None,
     strict: StrictOption = False,
@@ -643,7 +734,7 @@ def identify_command(
         json_path,
         out,
         only=["monitor"],
-        options={"monitor": {"task": "identify"}},
+        options={"monitor": {"task": "identify", "replace": replace}},
         overrides=overrides,
         strict=strict,
     )

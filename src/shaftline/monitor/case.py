@@ -16,11 +16,12 @@ import datetime as dt
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Literal
 
-from pydantic import BeforeValidator, Field, StrictBool
+from pydantic import BeforeValidator, Field, StrictBool, model_validator
 
 from shaftline.cases.types import (
     SHAFT_SPEED,
     Angle,
+    Length,
     NonNegativeLength,
     Plausible,
     PositiveForce,
@@ -32,6 +33,7 @@ from shaftline.cases.types import (
     Quantity,
     Section,
     Temperature,
+    field_error,
 )
 from shaftline.errors import located
 from shaftline.registry import BuildContext
@@ -39,7 +41,8 @@ from shaftline.registry import BuildContext
 if TYPE_CHECKING:
     import numpy as np
 
-    from shaftline.monitor.study import IdentifyPlan, MonitorStudy
+    from shaftline.monitor.probes import ProbeLayout
+    from shaftline.monitor.study import IdentifyPlan, MonitorStudy, RunoutTable
 
 _SEED = "seed 001"
 BEARING_LENGTH = Plausible(
@@ -66,6 +69,12 @@ MOTION = Plausible(
     1e-4,
     "orbit, runout and noise amplitudes of hundredths of a um to some tens of um (engineering judgement); um written "
     "as mm is above",
+)
+RUNOUT = Plausible(
+    -1e-4,
+    1e-4,
+    "runouts of hundredths of a um to some tens of um either way (engineering judgement; Bently Nevada practice "
+    "counts a few um as usual); um written as mm is beyond",
 )
 ROTATION_ALIASES = {"cw": "clockwise", "ccw": "anticlockwise", "counterclockwise": "anticlockwise"}
 
@@ -173,6 +182,39 @@ class SimulateSection(Section):
     """Write each recording as CSV (time, channels in volts, keyphasor) beside the report."""
 
 
+class RunoutSection(Section):
+    """The runout of one probe against shaft angle, from a commissioning measurement (e.g. the synchronous
+    average of a slow roll): subtracted at the keyphasor's shaft angle from every window."""
+
+    probe: str
+    """The probe's name (its channel)."""
+    shaft_angle: Annotated[
+        list[Annotated[Angle, Plausible(0.0, 6.2832, "within one turn, from the keyphasor mark: 0 to 360 deg")]],
+        Field(min_length=3),
+    ]
+    """Shaft angles of the values, from the keyphasor mark in the direction of rotation, rising within one turn (e.g.
+    ["0 deg", "30 deg", ...]); the runout is periodic and linear between them."""
+    value: Annotated[list[Annotated[Length, RUNOUT]], Field(min_length=3)]
+    """Runout at those angles (e.g. ["0.8 um", ...]): what the probe's gap reads more than the journal's position
+    gives; its mean over the turn is removed (the mean gap is the reference point's)."""
+
+    @model_validator(mode="after")
+    def _one_value_per_rising_angle(self) -> RunoutSection:
+        if len(self.value) != len(self.shaft_angle):
+            raise field_error("value", len(self.value), f"one value per shaft angle ({len(self.shaft_angle)})")
+        angles = self.shaft_angle
+        for k in range(1, len(angles)):
+            if not angles[k] > angles[k - 1]:
+                raise field_error(
+                    f"shaft_angle[{k}]", angles[k], f"> shaft_angle[{k - 1}] = {angles[k - 1]:.6g} rad (rising)", "rad"
+                )
+        if not angles[-1] < angles[0] + 2 * 3.141592653589793:
+            raise field_error(
+                f"shaft_angle[{len(angles) - 1}]", angles[-1], "less than one turn after shaft_angle[0]", "rad"
+            )
+        return self
+
+
 class IdentifySection(Section):
     """Recordings of the probes identified window by window into the trend database
     (``shaftline monitor identify CASE.toml RECORDING...``)."""
@@ -202,6 +244,13 @@ class IdentifySection(Section):
     """Slow-roll recording (same channels, a speed at which film and unbalance do not move the
     journal): each probe's runout against the keyphasor's phase is measured on it and subtracted
     from every window; --slow-roll replaces it. None: no runout compensation."""
+    slow_roll_speed: Annotated[PositiveSpeed, SHAFT_SPEED] | None = None
+    """Windows of each recording slower than this (speed from the keyphasor) are its slow roll: their gaps averaged
+    over whole revolutions against the keyphasor's shaft angle are the probes' runout, subtracted from every window of
+    that recording (e.g. "30 rpm" for a run-up from turning gear). None: not used."""
+    runout: list[RunoutSection] = []
+    """Runout of every probe against shaft angle from a commissioning measurement ([[monitor.identify.runout]]),
+    subtracted from every window. At most one of slow_roll, slow_roll_speed and runout."""
     database: str = "monitor.sqlite"
     """Trend database: a SQLAlchemy URL, or a SQLite file relative to this case (made if new);
     --db replaces it."""
@@ -225,6 +274,28 @@ class IdentifySection(Section):
         ),
     ] = 600.0
     """Shortest stretch below the threshold that is an alarm."""
+
+    @model_validator(mode="after")
+    def _one_runout_source(self) -> IdentifySection:
+        given = [name for name in ("slow_roll", "slow_roll_speed", "runout") if getattr(self, name)]
+
+        def shown(name: str) -> tuple[object, str]:
+            value = getattr(self, name)
+            return (
+                (f"{len(value)} probes", "")
+                if name == "runout"
+                else (value, "rad/s" if name == "slow_roll_speed" else "")
+            )
+
+        if len(given) > 1:
+            value, unit = shown(given[1])
+            raise field_error(given[1], value, f"one source of runout only ({' and '.join(given)} given)", unit)
+        if given and not self.keyphasor:
+            value, unit = shown(given[0])
+            raise field_error(
+                given[0], value, "recordings with a keyphasor (runout is a function of shaft angle)", unit
+            )
+        return self
 
 
 class MonitorSection(Section):
@@ -325,11 +396,40 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
     speeds = tuple(section.simulate.speeds) if section.simulate is not None else ()
     slow_roll = section.simulate.slow_roll_speed if section.simulate is not None else 0.0
     write = section.simulate.write_recordings if section.simulate is not None else False
-    identify = None if section.identify is None else _identify_plan(section.identify, context)
+    identify = None if section.identify is None else _identify_plan(section.identify, context, layout)
     return MonitorStudy(layout, rig, speeds, slow_roll, write, shape, identify)
 
 
-def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyPlan:
+def _runout_table(section: IdentifySection, channels: tuple[str, ...]) -> RunoutTable | None:
+    """The case's runout table in the layout's channel order: every probe once, no other name."""
+    from shaftline.errors import InputError
+    from shaftline.monitor.study import RunoutTable
+
+    if not section.runout:
+        return None
+    by_probe: dict[str, RunoutSection] = {}
+    for k, row in enumerate(section.runout):
+        if row.probe not in channels:
+            raise InputError(f"identify.runout[{k}].probe", row.probe, "", "one of the probes: " + ", ".join(channels))
+        if row.probe in by_probe:
+            raise InputError(f"identify.runout[{k}].probe", row.probe, "", "each probe once")
+        by_probe[row.probe] = row
+    missing = [c for c in channels if c not in by_probe]
+    if missing:
+        raise InputError(
+            "identify.runout",
+            f"{len(by_probe)} of {len(channels)} probes",
+            "",
+            f"a runout table for every probe (missing: {', '.join(missing)}; a probe without runout: values of 0 um)",
+        )
+    return RunoutTable(
+        channels,
+        tuple(tuple(by_probe[c].shaft_angle) for c in channels),
+        tuple(tuple(by_probe[c].value) for c in channels),
+    )
+
+
+def _identify_plan(section: IdentifySection, context: BuildContext, layout: ProbeLayout) -> IdentifyPlan:
     from shaftline.monitor.study import IdentifyPlan
     from shaftline.monitor.trends import TrendStore
 
@@ -359,6 +459,8 @@ def _identify_plan(section: IdentifySection, context: BuildContext) -> IdentifyP
         alarm_duration=section.alarm_duration,
         slow_roll=slow_roll,
         speed=section.speed,
+        slow_roll_speed=section.slow_roll_speed,
+        runout=_runout_table(section, layout.channels),
     )
 
 

@@ -187,8 +187,6 @@ def trend(
     shaded, the fitted straight line of the bearing's smallest film carried on to its limit
     (the projected crossing date marked; not with ``fit`` False), and the regime thresholds where
     known."""
-    import matplotlib.dates as mdates
-
     top = 0.0
     marked = False
     for k, item in enumerate(trends):
@@ -230,9 +228,25 @@ def trend(
     ax.set_ylim(bottom=0.0, top=max(1.1 * top, 1.0))
     ax.set_ylabel("h_min [µm]")
     ax.set_xlabel("time (UTC)" + ("; shaded: lambda alarms" if marked else ""))
-    ax.xaxis.set_major_formatter(mdates.ConciseDateFormatter(ax.xaxis.get_major_locator()))
+    ax.xaxis.set_major_formatter(_time_axis(ax.xaxis.get_major_locator()))
     ax.legend(fontsize=7, ncol=2)
     return ax
+
+
+def _time_axis(locator: Any) -> Any:
+    """Tick labels of a time axis from seconds to years: matplotlib's concise labels, except
+    that ticks seconds apart (the windows of one recording) read as clock times, 06:00:02, not
+    as bare seconds (02) beside a 06:00 whose minute the reader must infer; the date is the
+    offset at the axis' end."""
+    import matplotlib.dates as mdates
+
+    clock = "%H:%M:%S.%f"  # trailing zeros of the fraction are dropped by the formatter
+    return mdates.ConciseDateFormatter(
+        locator,
+        formats=["%Y", "%b", "%d", "%H:%M", "%H:%M", clock],
+        zero_formats=["", "%Y", "%b", "%b-%d", "%H:%M", clock],
+        offset_formats=["", "%Y", "%Y-%m", "%Y-%m-%d", "%Y-%m-%d", "%Y-%m-%d"],
+    )
 
 
 def _few_ticks() -> Any:

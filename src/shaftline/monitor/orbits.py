@@ -226,6 +226,19 @@ def runout_profile(gaps: np.ndarray, phase: np.ndarray, bins: int = 128) -> np.n
     return average - average.mean(axis=0)
 
 
+def runout_from_table(angles: list[np.ndarray], values: list[np.ndarray], bins: int = 128) -> np.ndarray:
+    """Runout profile (bins, channels) from a table per channel of runout against shaft angle (rad from
+    the keyphasor mark, rising within one turn): periodic linear interpolation at the bin centres of
+    :func:`runout_profile`, less its mean, m."""
+    centres = (np.arange(bins) + 0.5) * 2 * math.pi / bins
+    columns = [
+        np.interp(centres, np.asarray(a, dtype=float), np.asarray(v, dtype=float), period=2 * math.pi)
+        for a, v in zip(angles, values, strict=True)
+    ]
+    profile = np.stack(columns, axis=1)
+    return profile - profile.mean(axis=0)
+
+
 def compensate_runout(gaps: np.ndarray, phase: np.ndarray, profile: np.ndarray) -> np.ndarray:
     """Gaps less the slow-roll runout at their shaft phase (periodic linear interpolation), m."""
     gaps = np.asarray(gaps, dtype=float)

@@ -16,6 +16,7 @@ import datetime as dt
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field, replace
+from dataclasses import replace as replace_field
 from pathlib import Path
 
 import numpy as np
@@ -301,6 +302,13 @@ class SlowRoll:
         Probe samples that were NaN or beyond range, masked and filled.
     channels : tuple of str
         The probes' channels, in the order of the profile's columns.
+    source : str
+        Where the runout comes from: ``"recording"`` (a slow-roll recording), ``"slow windows"``
+        (the windows of a recording below ``slow_roll_speed``; then ``name`` and ``content_hash``
+        are that recording's) or ``"table"`` (the case's runout table; ``content_hash`` its
+        :meth:`~shaftline.monitor.study.RunoutTable.digest`, no speed).
+    windows : int
+        Windows averaged (``"slow windows"``).
     """
 
     name: str
@@ -310,6 +318,8 @@ class SlowRoll:
     profile: np.ndarray
     masked: int = 0
     channels: tuple[str, ...] = ()
+    source: str = "recording"
+    windows: int = 0
 
     @property
     def peak_to_peak(self) -> np.ndarray:
@@ -400,6 +410,92 @@ def slow_roll_runout(
     profile = average - average.mean(axis=0)
     speed = 2 * np.pi * turns * rate / span
     return SlowRoll(name, recording.content_hash(), float(speed), turns, profile, masked, layout.channels)
+
+
+def slow_windows_runout(
+    layout: ProbeLayout,
+    plan: RecordingPlan,
+    below: float,
+    max_invalid_share: float = MAX_INVALID_SHARE,
+    bins: int = RUNOUT_BINS,
+) -> SlowRoll | None:
+    """Runout of every probe from the windows of a recording slower than ``below`` (rad/s, speed
+    from the keyphasor marks in the window): the synchronous average of each probe's gap over the
+    whole revolutions of those windows, less its mean, as :func:`slow_roll_runout` does on a
+    slow-roll file. Windows without a whole revolution or with more than ``max_invalid_share``
+    of their samples invalid are left out (they are stored as rejected). None when no window is
+    slow enough.
+    """
+    sums = np.zeros((bins, len(layout.channels)))
+    counts = np.zeros(bins)
+    turns = span = masked = used = 0
+    for first, block in plan.blocks():
+        if first // plan.size >= plan.windows:
+            break
+        marks = revolution_marks(block[:, -1])
+        if marks.size < 2 or 2 * math.pi * speed_from_marks(marks, plan.sample_rate) >= below:
+            continue
+        signals, bad = mask_invalid(layout, block[:, :-1])
+        if bad > max_invalid_share * signals.size:
+            continue
+        kept = slice(int(marks[0]), int(marks[-1]))
+        phase = shaft_phase(block.shape[0], marks)[kept]
+        block_sums, block_counts = phase_bin_sums(layout.gaps(signals)[kept], phase, bins)
+        sums += block_sums
+        counts += block_counts
+        turns += marks.size - 1
+        span += int(marks[-1] - marks[0])
+        masked += bad
+        used += 1
+    if turns == 0:
+        return None
+    average = binned_average(sums, counts)
+    recording = plan.recording
+    return SlowRoll(
+        recording.path.name,
+        recording.content_hash(),
+        float(2 * np.pi * turns * plan.sample_rate / span),
+        turns,
+        average - average.mean(axis=0),
+        masked,
+        layout.channels,
+        source="slow windows",
+        windows=used,
+    )
+
+
+def processing_settings(
+    layout: ProbeLayout,
+    plan: IdentifyPlan,
+    shape: tuple[np.ndarray, np.ndarray] | None,
+    runout: str,
+    sample_rate: float,
+) -> dict[str, str]:
+    """What a recording's stored windows depend on besides its bytes, as text: the probe layout
+    (calibration, clearance, roughness), the shaft model's bending shape, the window, keyphasor or
+    given speed, the sample rate (Hz, the file's or the case's), invalid share, and the runout
+    subtracted (``runout``: its source). Numbers to 12 significant digits, the shape's to 9 (the
+    same case gives the same text on any machine); the layout and shape as SHA-256."""
+    import hashlib
+
+    def digest(text: str) -> str:
+        return hashlib.sha256(text.encode()).hexdigest()
+
+    def number(value: float | None) -> str:
+        return "none" if value is None else f"{value:.12g}"
+
+    shaped = "none"
+    if shape is not None:
+        shaped = digest(" ".join(f"{v:.9g}" for v in np.concatenate([np.ravel(shape[0]), np.ravel(shape[1])])))
+    return {
+        "layout": digest(repr(layout)),
+        "shaft_shape": shaped,
+        "window": f"{number(plan.window)} s",
+        "keyphasor": plan.keyphasor or f"none, {number(plan.speed)} rad/s",
+        "sample_rate": number(sample_rate),
+        "max_invalid_share": number(plan.max_invalid_share),
+        "runout": runout,
+    }
 
 
 def plan_recording(
@@ -585,11 +681,19 @@ class IdentifiedRecording:
     processed : ProcessedRecording
     trends : tuple of SectionTrend
         Smallest film of each section over the recording's windows, with its lambda alarms.
+    runout : SlowRoll or None
+        The runout subtracted from its windows identified by this run (None: none, or none
+        identified with ``slow_roll_speed``).
+    replaced : bool
+        Its windows stored with other processing settings were deleted and identified again
+        (``replace``).
     """
 
     plan: RecordingPlan
     processed: ProcessedRecording
     trends: tuple[SectionTrend, ...]
+    runout: SlowRoll | None = None
+    replaced: bool = False
 
 
 @dataclass(frozen=True, eq=False)
@@ -605,7 +709,11 @@ class Identified:
     alarm_duration : float
         s.
     slow_roll : SlowRoll or None
-        The runout subtracted from every window (None: none was given).
+        The runout subtracted from every window: a slow-roll recording's or the case's table
+        (None: neither; with ``slow_roll_speed`` each recording has its own,
+        :attr:`IdentifiedRecording.runout`).
+    slow_roll_speed : float or None
+        rad/s, where the runout of each recording comes from its windows below it.
     """
 
     database: str
@@ -613,6 +721,7 @@ class Identified:
     lambda_threshold: float
     alarm_duration: float
     slow_roll: SlowRoll | None = None
+    slow_roll_speed: float | None = None
 
 
 def identify_recordings(
@@ -620,11 +729,15 @@ def identify_recordings(
     plan: IdentifyPlan,
     shape: tuple[np.ndarray, np.ndarray] | None = None,
     progress: Progress = no_progress,
+    replace: bool = False,
 ) -> Identified:
     """Identify the recordings of ``plan`` into its trend database, window by window.
 
     Every recording is checked (:func:`plan_recording`) and the database reached before
-    anything is stored, so bad input stores nothing. Each window is then stored in its own
+    anything is stored, so bad input stores nothing. A recording stored before with other
+    processing settings (:func:`processing_settings`: layout, window, runout source...) is
+    refused, before anything is written, unless ``replace``: then its stored windows are
+    deleted and it is identified again (no other recording is touched). Each window is then stored in its own
     transaction: Ctrl-C keeps every window stored so far and raises
     :class:`~shaftline.errors.Interrupted` saying how to resume (the same command again skips
     what is stored). ``progress`` gets a :class:`~shaftline.registry.Tally` of the windows of
@@ -665,14 +778,19 @@ def identify_recordings(
             "rad/s",
             'the shaft speed of recordings without a keyphasor (keyphasor = "")',
         )
-    slow_roll = None
-    if plan.slow_roll is not None and not plan.keyphasor:
+    sources = [name for name in ("slow_roll", "slow_roll_speed", "runout") if getattr(plan, name) is not None]
+    if len(sources) > 1:
         raise InputError(
-            "identify.slow_roll",
-            plan.slow_roll,
+            f"identify.{sources[1]}", "given", "", f"one source of runout only ({' and '.join(sources)} given)"
+        )
+    if sources and not plan.keyphasor:
+        raise InputError(
+            f"identify.{sources[0]}",
+            plan.slow_roll if sources[0] == "slow_roll" else "given",
             "",
             "recordings with a keyphasor (the runout is a function of shaft phase)",
         )
+    slow_roll = None
     if plan.slow_roll is not None:
         try:
             slow_roll = slow_roll_runout(
@@ -685,6 +803,18 @@ def identify_recordings(
             )
         except InputError as error:
             raise named(error, plan.slow_roll) from None
+    elif plan.runout is not None:
+        if plan.runout.channels != layout.channels:
+            raise InputError("identify.runout", ", ".join(plan.runout.channels), "", "the layout's probes, in order")
+        slow_roll = SlowRoll(
+            "runout table of the case",
+            plan.runout.digest(),
+            math.nan,
+            0,
+            plan.runout.profile(RUNOUT_BINS),
+            channels=layout.channels,
+            source="table",
+        )
     plans = []
     start = plan.start
     for name in plan.recordings:
@@ -705,6 +835,14 @@ def identify_recordings(
         plans.append(checked)
         if start is not None:  # the next file follows this one
             start = start + timedelta(seconds=checked.duration)
+    # the runout's source by content (a slow-roll file renamed or moved is the same slow roll)
+    if slow_roll is not None:
+        key = f"{'slow-roll recording' if slow_roll.source == 'recording' else 'table'} sha256 {slow_roll.content_hash}"
+    elif plan.slow_roll_speed is not None:
+        key = f"slow windows below {plan.slow_roll_speed:.12g} rad/s"
+    else:
+        key = "none"
+    settings = [processing_settings(layout, plan, shape, key, c.sample_rate) for c in plans]
     shown = _hide_password(TrendStore.url_of(plan.database))
     done: list[IdentifiedRecording] = []
     try:
@@ -712,6 +850,25 @@ def identify_recordings(
     except InputError as error:
         raise InputError("database", error.value, "", error.allowed, in_file=True) from None
     with opened as store:
+        # every recording stored before with other settings is refused, or replaced, before anything is written
+        replaced = []
+        for checked, wanted in zip(plans, settings, strict=True):
+            stored = store.find(checked.recording.content_hash())
+            before = None if stored is None else store.settings(stored)
+            differ = sorted(k for k in wanted if before is not None and before.get(k) != wanted[k])
+            if differ and not replace:
+                file = checked.recording.path.name
+                raise InputError(
+                    f"{file}: settings",
+                    "; ".join(f"{k} {wanted[k]}" for k in differ),
+                    "",
+                    f"the settings its windows in {shown} were identified with ("
+                    + "; ".join(f"{k} {(before or {}).get(k, 'not recorded')}" for k in differ)
+                    + "); --replace identifies it again in place of its stored windows (other recordings are kept), "
+                    "or use another database",
+                    in_file=True,
+                )
+            replaced.append(bool(differ))
         try:
             for number, checked in enumerate(plans, 1):
                 label = f"{checked.recording.path.name} ({number}/{len(plans)})"
@@ -720,6 +877,25 @@ def identify_recordings(
                 def told(windows: int, total: int, label: str = label) -> None:
                     progress(Tally(label, windows, total, "windows"))
 
+                stored = store.recording(
+                    checked.recording.content_hash(),
+                    checked.recording.path.name,
+                    checked.recording.samples,
+                    checked.sample_rate,
+                    checked.started_at,
+                )
+                if replaced[number - 1] or store.settings(stored) is None:
+                    # (a recording stored before settings were kept takes this run's)
+                    store.keep_settings(stored, settings[number - 1], replace=replaced[number - 1])
+                    stored = replace_field(stored, complete=stored.complete and not replaced[number - 1])
+                runout = slow_roll
+                if plan.slow_roll_speed is not None:
+                    # per recording; not read again when nothing of it is left to identify
+                    runout = (
+                        None
+                        if stored.complete
+                        else slow_windows_runout(layout, checked, plan.slow_roll_speed, plan.max_invalid_share)
+                    )
                 processed = process_recording(
                     layout,
                     checked,
@@ -728,7 +904,7 @@ def identify_recordings(
                     shape=shape,
                     progress=told,
                     max_invalid_share=plan.max_invalid_share,
-                    runout=None if slow_roll is None else slow_roll.profile,
+                    runout=None if runout is None else runout.profile,
                 )
                 trends = section_trends(
                     store,
@@ -736,9 +912,9 @@ def identify_recordings(
                     timedelta(seconds=plan.alarm_duration),
                     recording=processed.recording,
                 )
-                done.append(IdentifiedRecording(checked, processed, trends))
+                done.append(IdentifiedRecording(checked, processed, trends, runout, replaced[number - 1]))
         except KeyboardInterrupt:
             raise Interrupted(
                 f"every window identified so far is kept in {shown}: run the same command again to resume"
             ) from None
-    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration, slow_roll)
+    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration, slow_roll, plan.slow_roll_speed)

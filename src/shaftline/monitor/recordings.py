@@ -31,7 +31,7 @@ from __future__ import annotations
 import hashlib
 import math
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
 
@@ -290,6 +290,7 @@ class Recording:
     channels: tuple[str, ...]
     samples: int
     _reader: Any
+    _hash: str | None = field(default=None, repr=False, compare=False)
 
     def sample_rate(self, columns: Sequence[str], given: float | None = None) -> float:
         """The sample rate of ``columns``, Hz: the file's, or ``given`` where the file states
@@ -305,8 +306,10 @@ class Recording:
         return float(stated if stated is not None else given)  # type: ignore[arg-type]
 
     def content_hash(self) -> str:
-        """SHA-256 of the file's bytes."""
-        return content_hash(self.path)
+        """SHA-256 of the file's bytes (read once per open recording: an hour of 32 channels is 9 GB)."""
+        if self._hash is None:
+            self._hash = content_hash(self.path)
+        return self._hash
 
     def _check(self, columns: Sequence[str]) -> None:
         missing = [c for c in columns if c not in self.channels]

@@ -179,6 +179,41 @@ def identify_window(
 
 
 @dataclass(frozen=True)
+class RunoutTable:
+    """Runout of every probe against shaft angle from the case (``[[monitor.identify.runout]]``).
+
+    Attributes
+    ----------
+    channels : tuple of str
+        The probes, in the layout's order.
+    angles : tuple of tuple of float
+        Shaft angles of each probe's values, rad from the keyphasor mark, rising within a turn.
+    values : tuple of tuple of float
+        Runout at those angles, m.
+    """
+
+    channels: tuple[str, ...]
+    angles: tuple[tuple[float, ...], ...]
+    values: tuple[tuple[float, ...], ...]
+
+    def profile(self, bins: int = 128) -> np.ndarray:
+        """The runout profile (bins, channels), mean removed, m
+        (:func:`~shaftline.monitor.orbits.runout_from_table`)."""
+        from shaftline.monitor.orbits import runout_from_table
+
+        return runout_from_table([np.asarray(a) for a in self.angles], [np.asarray(v) for v in self.values], bins)
+
+    def digest(self) -> str:
+        """SHA-256 of the table (its numbers to 12 significant digits): what a stored recording's
+        processing settings name."""
+        import hashlib
+
+        text = repr([(c, [f"{a:.12g}" for a in an], [f"{v:.12g}" for v in va])
+                     for c, an, va in zip(self.channels, self.angles, self.values, strict=True)])  # fmt: skip
+        return hashlib.sha256(text.encode()).hexdigest()
+
+
+@dataclass(frozen=True)
 class IdentifyPlan:
     """Recordings to identify into the trend database (``[monitor.identify]``).
 
@@ -209,6 +244,11 @@ class IdentifyPlan:
         Slow-roll recording whose runout is subtracted from every window (None: none).
     speed : float or None
         Shaft speed of recordings without a keyphasor (``keyphasor`` ""), rad/s.
+    slow_roll_speed : float or None
+        Windows of a recording slower than this are its slow roll (their runout is subtracted from
+        all its windows), rad/s; None: not used.
+    runout : RunoutTable or None
+        Runout of every probe from the case; None: none.
     """
 
     recordings: tuple[str, ...]
@@ -223,6 +263,8 @@ class IdentifyPlan:
     alarm_duration: float = 600.0
     slow_roll: str | None = None
     speed: float | None = None
+    slow_roll_speed: float | None = None
+    runout: RunoutTable | None = None
 
 
 @dataclass(frozen=True, eq=False)

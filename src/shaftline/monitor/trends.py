@@ -13,6 +13,10 @@ a fleet, by changing the URL only:
     One row per processed window: recording, window number, time of its first sample, speed.
 ``window_values``
     One row per (window, section, quantity): the value in SI units.
+``recording_settings``
+    One row per recording: the processing settings its windows were identified with (layout,
+    window, runout source...), as JSON, and their SHA-256; a recording is skipped as stored only
+    when they are the same (added to a database made before it).
 
 Each window is written in its own transaction, with all its values, so a run stopped at any
 point leaves whole windows only; a new run on the same recording skips the windows already
@@ -91,18 +95,38 @@ def _tables() -> Any:
         sa.Column("quantity", sa.String(128), primary_key=True),
         sa.Column("value", sa.Float, nullable=True),
     )
+    sa.Table(
+        "recording_settings",
+        metadata,
+        sa.Column("recording_id", sa.Integer, sa.ForeignKey("recordings.id", ondelete="CASCADE"), primary_key=True),
+        sa.Column("fingerprint", sa.String(64), nullable=False),
+        sa.Column("settings", sa.Text, nullable=False),
+    )
     return metadata
+
+
+#: The tables a trend database holds from its first version on (``recording_settings`` came later
+#: and is added to a database without it).
+CORE_TABLES = frozenset({"recordings", "windows", "window_values"})
 
 
 @dataclass(frozen=True)
 class StoredRecording:
-    """A recording's row: its id and whether every window of it is stored."""
+    """A recording's row: its id, whether every window of it is stored, and its length (s)."""
 
     id: int
     content_hash: str
     name: str
     started_at: dt.datetime
     complete: bool
+    duration: float = math.nan
+
+
+def _stored(row: Any) -> StoredRecording:
+    duration = row.samples / row.sample_rate if row.sample_rate else math.nan
+    return StoredRecording(
+        row.id, row.content_hash, row.name, _aware(row.started_at), bool(row.complete), float(duration)
+    )
 
 
 class TrendStore:
@@ -133,8 +157,11 @@ class TrendStore:
         try:
             self._engine = sa.create_engine(text, future=True)
             self._metadata = _tables()
-            if file is not None and file.is_file():  # (inspecting a new file would make it empty first)
-                self._refuse_foreign(file)
+            if file is None or file.is_file():  # (inspecting a new file would make it empty first)
+                # before create_all: a foreign table of one of our names is refused with nothing written
+                tables = self._refuse_other_columns(_hide_password(text))
+                if file is not None:
+                    self._refuse_foreign(file, tables)
             self._metadata.create_all(self._engine)
         except InputError:
             self._engine.dispose()
@@ -155,21 +182,43 @@ class TrendStore:
         self._windows = self._metadata.tables["windows"]
         self._values = self._metadata.tables["window_values"]
 
-    def _refuse_foreign(self, file: Path) -> None:
+    def _refuse_other_columns(self, shown: str) -> set[str]:
+        """The database's tables; an InputError when one of them has the name of one of ours but
+        other columns (another application's ``recordings`` on a shared server, say): inserting
+        into it would fail half-way with the driver's error, or write into that application's
+        table. Checked before anything is created, so nothing is written."""
+        import sqlalchemy as sa
+
+        inspector = sa.inspect(self._engine)
+        tables = set(inspector.get_table_names())
+        for table in self._metadata.sorted_tables:
+            if table.name not in tables:
+                continue
+            have = [column["name"] for column in inspector.get_columns(table.name)]
+            need = [column.name for column in table.columns]
+            if set(have) != set(need):
+                raise InputError(
+                    "db",
+                    shown,
+                    "",
+                    f"a database whose table {table.name} is the trend store's, with the columns {', '.join(need)} "
+                    f"(this one's has {', '.join(have) or 'none'}: another application's table; use another database)",
+                )
+        return tables
+
+    def _refuse_foreign(self, file: Path, tables: set[str]) -> None:
         """A SQLite file holding tables but not those of a trend database is another program's:
         adding ours to it would change a file this program did not make (a server's database
         may hold other applications' tables beside ours, and is not checked)."""
-        import sqlalchemy as sa
-
-        tables = set(sa.inspect(self._engine).get_table_names())
         ours = set(self._metadata.tables)
-        if tables and not ours <= tables:
+        if tables and not CORE_TABLES <= tables:
+            others = sorted(tables - ours) or sorted(tables)
             raise InputError(
                 "db",
                 str(file),
                 "",
                 f"a trend database made by monitor identify, or a new file (this one holds the tables "
-                f"{', '.join(sorted(tables - ours)[:5])})",
+                f"{', '.join(others[:5])})",
             )
 
     @staticmethod
@@ -225,7 +274,54 @@ class TrendStore:
                     sa.select(self._recordings).where(self._recordings.c.content_hash == content_hash)
                 ).first()
         assert row is not None
-        return StoredRecording(row.id, row.content_hash, row.name, _aware(row.started_at), bool(row.complete))
+        return _stored(row)
+
+    def find(self, content_hash: str) -> StoredRecording | None:
+        """The row of the recording of these bytes, None when it is not stored."""
+        import sqlalchemy as sa
+
+        with self._engine.connect() as connection:
+            row = connection.execute(
+                sa.select(self._recordings).where(self._recordings.c.content_hash == content_hash)
+            ).first()
+        if row is None:
+            return None
+        return _stored(row)
+
+    def settings(self, recording: StoredRecording) -> dict[str, Any] | None:
+        """The processing settings ``recording``'s windows were stored with (None: none recorded,
+        a recording stored before settings were kept, or one with no window yet)."""
+        import json
+
+        import sqlalchemy as sa
+
+        table = self._metadata.tables["recording_settings"]
+        with self._engine.connect() as connection:
+            row = connection.execute(sa.select(table.c.settings).where(table.c.recording_id == recording.id)).first()
+        return None if row is None else dict(json.loads(row.settings))
+
+    def keep_settings(self, recording: StoredRecording, settings: Mapping[str, Any], replace: bool = False) -> None:
+        """Record the processing settings of ``recording``'s windows; with ``replace``, first delete
+        its windows and their values (its row stays; no other recording is touched), in the same
+        transaction, so that it is identified again with these settings."""
+        import hashlib
+        import json
+
+        import sqlalchemy as sa
+
+        table = self._metadata.tables["recording_settings"]
+        text = json.dumps(dict(settings), sort_keys=True)
+        fingerprint = hashlib.sha256(text.encode()).hexdigest()
+        with self._engine.begin() as connection:
+            if replace:
+                ids = sa.select(self._windows.c.id).where(self._windows.c.recording_id == recording.id)
+                connection.execute(self._values.delete().where(self._values.c.window_id.in_(ids)))
+                connection.execute(self._windows.delete().where(self._windows.c.recording_id == recording.id))
+                connection.execute(
+                    self._recordings.update().where(self._recordings.c.id == recording.id).values(complete=False)
+                )
+            connection.execute(table.delete().where(table.c.recording_id == recording.id))
+            connection.execute(table.insert().values(recording_id=recording.id, fingerprint=fingerprint, settings=text))
 
     def windows_done(self, recording: StoredRecording) -> set[int]:
         """Numbers of the windows of ``recording`` already stored."""
@@ -289,7 +385,7 @@ class TrendStore:
 
         with self._engine.connect() as connection:
             rows = connection.execute(sa.select(self._recordings).order_by(self._recordings.c.started_at))
-            return [StoredRecording(r.id, r.content_hash, r.name, _aware(r.started_at), bool(r.complete)) for r in rows]
+            return [_stored(r) for r in rows]
 
     # -- series ------------------------------------------------------------------------
     def series(self, quantity: str, section: str | None = None, recording: StoredRecording | None = None) -> Any:
@@ -499,10 +595,19 @@ def section_trends(
     recording : StoredRecording, optional
         One recording only (default: all, oldest first).
     """
+    import pandas as pd
+
     films = store.series("min_film_thickness", recording=recording)
     ratios = store.series("film_parameter", recording=recording)
     if films.empty:
         return ()
+    # windows stored as rejected (processing.REJECTED): no film, and each ends a lambda stretch
+    flags = store.series("rejected", "bearing", recording=recording)
+    flags = flags[flags["value"].fillna(0.0) != 0.0]
+    gaps = [t.to_pydatetime() for t in flags["time"]]
+    gap_names = list(flags["recording"])
+    windows = pd.concat([films, flags]) if not flags.empty else films
+    lengths = _window_lengths(windows, {r.name: r.duration for r in store.recordings()})
     key = ["time", "window", "recording", "section"]
     joined = films.merge(ratios[[*key, "value"]], on=key, how="left", suffixes=("", "_lambda"))
     if limit is None:
@@ -515,7 +620,15 @@ def section_trends(
         times = [t.to_pydatetime() for t in rows["time"]]
         film = rows["value"].to_numpy(float)
         parameter = rows["value_lambda"].to_numpy(float)
-        alarms = lambda_alarms(times, parameter, threshold, min_duration, section)
+        # a rejected window, or time not recorded, ends a stretch: lambda is not known to stay below
+        # the threshold over it, so the alarm's duration is not carried across it
+        stamps, values = _with_breaks(
+            times + gaps,
+            np.concatenate([parameter, np.full(len(gaps), math.nan)]),
+            list(rows["recording"]) + gap_names,
+            lengths,
+        )
+        alarms = lambda_alarms(stamps, values, threshold, min_duration, section)
         crossing = None
         long_enough = bool(times) and max(times) - min(times) >= MIN_TREND_SPAN
         if math.isfinite(limit) and np.isfinite(film).sum() >= 2 and long_enough:
@@ -524,6 +637,51 @@ def section_trends(
             SectionTrend(section, times, film, parameter, rows["speed"].to_numpy(float), tuple(alarms), limit, crossing)
         )
     return tuple(trends)
+
+
+def _window_lengths(frame: Any, durations: Mapping[str, float]) -> dict[str, float]:
+    """Length of a window of each recording, s: the time from one window to the next of the
+    stored ones (a recording's windows are back to back), or the recording's length when it has
+    one window only."""
+    import pandas as pd
+
+    lengths: dict[str, float] = {}
+    for name, rows in frame.drop_duplicates(["recording", "window"]).groupby("recording"):
+        number = rows["window"].to_numpy(float)
+        stamps = pd.to_datetime(rows["time"], utc=True)
+        seconds = (stamps - stamps.min()).dt.total_seconds().to_numpy(float)
+        order = np.argsort(number)
+        steps, spans = np.diff(number[order]), np.diff(seconds[order])
+        each = spans[steps > 0] / steps[steps > 0]
+        lengths[str(name)] = float(np.median(each)) if each.size else float(durations.get(str(name), math.nan))
+    return lengths
+
+
+#: Unrecorded time between two windows, in windows, beyond which a lambda stretch ends (back-to-back
+#: files lose less than half a window at each file's end: the windows cut from them).
+MAX_GAP_WINDOWS = 0.5
+
+
+def _with_breaks(
+    times: list[dt.datetime], values: np.ndarray, recordings: list[str], lengths: Mapping[str, float]
+) -> tuple[list[dt.datetime], np.ndarray]:
+    """The series in time order with a missing value (NaN, which ends a lambda stretch) wherever
+    the next window starts more than :data:`MAX_GAP_WINDOWS` of a window after the end of the
+    one before: time between two recordings, or windows of one not stored."""
+    order = sorted(range(len(times)), key=lambda k: times[k])
+    stamps: list[dt.datetime] = []
+    out: list[float] = []
+    for position, k in enumerate(order):
+        if position:
+            before = order[position - 1]
+            window = lengths.get(recordings[before], math.nan)
+            unrecorded = (times[k] - times[before]).total_seconds() - window
+            if math.isfinite(window) and unrecorded > MAX_GAP_WINDOWS * window:
+                stamps.append(times[before])
+                out.append(math.nan)
+        stamps.append(times[k])
+        out.append(float(values[k]))
+    return stamps, np.asarray(out)
 
 
 @dataclass(frozen=True)
