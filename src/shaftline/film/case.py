@@ -10,7 +10,7 @@ Layout::
     [[bearing.operation.grooves]]
     [bearing.lubricant]
     [bearing.surface]            rough journal and bore: mixed lubrication
-    [bearing.liner]              elastic liner on the bore (column model)
+    [bearing.liner]              elastic liner on the bore (column or bonded-layer model)
     [bearing.thermal]            film temperature from the heat balance
     [bearing.solver]             grid and cavitation model
     [[bearing.variants]]         other bores or tilts solved beside the base case
@@ -472,8 +472,14 @@ def checked_surface(section: SurfaceSection, clearance: float) -> SurfaceRoughne
 
 class LinerSection(Section):
     """Thin elastic liner bonded to the bore: deforms under the film and asperity pressure by
-    the column (Winkler) model, solved together with the film (docs/theory.md, "Elastic liner").
-    A preset gives every field; fields given beside it replace the preset's."""
+    the column (Winkler) model or as a bonded elastic layer, solved together with the film
+    (docs/theory.md, "Elastic liner", "Elastic layer"). A preset gives every field; fields given
+    beside it replace the preset's."""
+
+    model: Literal["column", "layer"] = "column"
+    """column: each point of the liner moves under its own pressure (Winkler); layer: the
+    surface compliance of an elastic layer bonded to the shell (spreads a load over a few
+    thicknesses, moves the end rows, holds a rubber liner up to poisson 0.5)."""
 
     preset: Literal["polymer_composite", "rubber", "white_metal"] | None = None
     """Named liner (docs/theory.md lists the sources): polymer_composite (seed 001's rig, 20 mm,
@@ -483,8 +489,8 @@ class LinerSection(Section):
     """Liner thickness (at most a quarter of the bore radius)."""
     modulus: Annotated[PositivePressure, Plausible(3e6, 5e11, _MODULUS)] | None = None
     """Young's modulus of the liner."""
-    poisson: Annotated[float, Quantity("dimensionless", gt=0, lt=0.5)] | None = None
-    """Poisson's ratio of the liner, in (0, 0.5)."""
+    poisson: Annotated[float, Quantity("dimensionless", gt=0, le=0.5)] | None = None
+    """Poisson's ratio of the liner, in (0, 0.5); the layer model also takes 0.5."""
 
     @model_validator(mode="after")
     def _complete(self) -> LinerSection:
@@ -492,6 +498,8 @@ class LinerSection(Section):
             for name in ("thickness", "modulus", "poisson"):
                 if getattr(self, name) is None:
                     raise field_error(name, "missing", "a value, or a preset")
+        if self.model == "column" and self.poisson == 0.5:
+            raise field_error("poisson", self.poisson, "in (0, 0.5) for the column model (model = 'layer' takes 0.5)")
         return self
 
 
@@ -504,7 +512,7 @@ def liner_of(section: LinerSection) -> Liner:
         given if given is not None else preset
         for given, preset in zip((section.thickness, section.modulus, section.poisson), base, strict=True)
     ]
-    return Liner(thickness=values[0], modulus=values[1], poisson=values[2])  # type: ignore[arg-type]
+    return Liner(thickness=values[0], modulus=values[1], poisson=values[2], model=section.model)  # type: ignore[arg-type]
 
 
 class ThermalSection(Section):
