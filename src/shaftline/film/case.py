@@ -479,7 +479,7 @@ class LinerSection(Section):
     model: Literal["column", "layer"] = "column"
     """column: each point of the liner moves under its own pressure (Winkler); layer: the
     surface compliance of an elastic layer bonded to the shell (spreads a load over a few
-    thicknesses, moves the end rows, holds a rubber liner up to poisson 0.5)."""
+    thicknesses; takes a rubber liner up to poisson 0.5; slower, docs/theory.md "Elastic layer")."""
 
     preset: Literal["polymer_composite", "rubber", "white_metal"] | None = None
     """Named liner (docs/theory.md lists the sources): polymer_composite (seed 001's rig, 20 mm,
@@ -685,7 +685,7 @@ class BearingSection(Section):
     surface: SurfaceSection | None = None
     """Rough journal and bore (mixed lubrication); none: smooth surfaces."""
     liner: LinerSection | None = None
-    """Elastic liner on the bore (column model); none: a rigid bore."""
+    """Elastic liner on the bore (column or bonded-layer model); none: a rigid bore."""
     thermal: ThermalSection | None = None
     """Film temperature from the heat balance; none: the lubricant table's temperature."""
     stribeck: StribeckSection | None = None
