@@ -810,6 +810,30 @@ def turbulence_note(geometry: BearingGeometry, operating: OperatingPoint, speed:
     )
 
 
+#: The layer model's end rows are resolved only with an axial step of at most this share of the
+#: liner thickness (docs/validation.md "Elastic layer": seed 001's rig at 135 rpm, end film
+#: 0.58, 0.96, 1.50, 1.94 um at dz = 1.5, 0.75, 0.375, 0.19 t; the interior within 1 %).
+LAYER_RESOLUTION = 0.5
+
+
+def layer_note(geometry: BearingGeometry, axial_nodes: int) -> str | None:
+    """A note when the layer model's liner is thin against the axial step (its deformation
+    near the bearing ends is not resolved); None otherwise."""
+    liner = geometry.liner
+    if liner is None or liner.model != "layer":
+        return None
+    dz = geometry.length / (axial_nodes - 1)
+    if dz <= LAYER_RESOLUTION * liner.thickness:
+        return None
+    needed = math.ceil(geometry.length / (LAYER_RESOLUTION * liner.thickness)) + 1
+    return (
+        f"liner.model = layer with an axial step of {dz * 1e3:.3g} mm, more than half the liner's "
+        f"{liner.thickness * 1e3:.3g} mm: the layer's deformation near the bearing ends is not resolved and the "
+        f"film there comes out too thin (set solver.axial_nodes to {needed} or more; docs/validation.md, "
+        '"Elastic layer").'
+    )
+
+
 def solver_options(s: SolverSection) -> SolverOptions:
     """The film's :class:`SolverOptions` of a ``solver`` table."""
     return SolverOptions(
@@ -909,6 +933,9 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
         options = solver_options(section.solver)
     with located("", {"operating": "operation", "options": "solver"}):
         BearingProblem(base_geometry, operating, options)
+    layer = layer_note(base_geometry, options.axial_nodes)
+    if layer is not None:
+        context.warnings.append(layer)
     if options.turbulence == "on":
         note = turbulence_note(base_geometry, operating, op.speed)
         if note is not None:
