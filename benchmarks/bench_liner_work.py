@@ -1,5 +1,6 @@
 """Work and time of one lined equilibrium (issue 15, soft liner): coupled LU factorisations, film
-solutions and Newton iterations per equilibrium, with the median time.
+solutions, GMRES iterations (layer model) and Newton iterations per equilibrium, with the median
+time; the column and the layer model of each liner alternated run by run, with their ratio.
 
 Run ``PYTHONPATH=src .venv/bin/python benchmarks/bench_liner_work.py [--repeat N]`` in a tree;
 the counts do not depend on the machine, so running it on two trees (e.g. main before a change,
@@ -28,7 +29,7 @@ from shaftline.film.liner import Liner
 from shaftline.film.roughness import SurfaceRoughness, gaussian_integral_table
 
 ROOT = Path(__file__).resolve().parents[1]
-COUNT = {"lu": 0, "film": 0}
+COUNT = {"lu": 0, "film": 0, "krylov": 0}
 
 
 def _counted() -> None:
@@ -45,6 +46,15 @@ def _counted() -> None:
         return solve(self, *args, **kwargs)
 
     elastic.LinerSystem.build = classmethod(counted_build)  # type: ignore[method-assign, assignment]
+    layer_solve = elastic.LayerSystem.solve
+
+    def counted_layer_solve(self, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
+        before = self.krylov_iterations
+        result = layer_solve(self, *args, **kwargs)
+        COUNT["krylov"] += self.krylov_iterations - before
+        return result
+
+    elastic.LayerSystem.solve = counted_layer_solve  # type: ignore[method-assign]
     reynolds.ReynoldsSolver.solve = counted_solve  # type: ignore[method-assign]
 
 
@@ -55,27 +65,45 @@ def main() -> None:
     _counted()
     case = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"].cases[0]
     surface = SurfaceRoughness.preset("turned_steel_white_metal")
-    print(f"{'case':50s} {'median s':>9s} {'its':>4s} {'LU':>4s} {'film':>5s} {'h_min um':>9s} {'p_max MPa':>10s}")
+    print(
+        f"{'case':58s} {'median s':>9s} {'its':>4s} {'LU':>4s} {'film':>5s} {'GMRES':>6s} "
+        f"{'h_min um':>9s} {'p_max MPa':>10s} {'layer/column':>12s}"
+    )
     for rpm, tilt in ((1.0, 0.0), (90.0, case.tilt_y)):
         operating = replace(case.operating, speed=rpm * np.pi / 30)
         for name in ("polymer_composite", "white_metal"):
-            geometry = replace(case.geometry, surface=surface, liner=Liner.preset(name))
-            bearing = JournalBearing(geometry, operating, case.options)
+            bearings = {
+                model: JournalBearing(
+                    replace(case.geometry, surface=surface, liner=Liner.preset(name, model=model)),
+                    operating,
+                    case.options,
+                )
+                for model in ("column", "layer")
+            }
+            work = {}
+            for model, bearing in bearings.items():
 
-            def solve(b: JournalBearing = bearing, t: float = tilt):  # noqa: ANN202 - benchmark helper
-                return b.equilibrium(case.load_y, case.load_z, tilt_y=t, tilt_z=case.tilt_z)
+                def solve(b: JournalBearing = bearing, t: float = tilt):  # noqa: ANN202 - benchmark helper
+                    return b.equilibrium(case.load_y, case.load_z, tilt_y=t, tilt_z=case.tilt_z)
 
-            COUNT["lu"] = COUNT["film"] = 0
-            eq = solve()
-            lu, film = COUNT["lu"], COUNT["film"]
-            t, _ = median_time(solve, repeat)
-            st = eq.state
-            label = f"{rpm:g} rpm, tilt {tilt * 1e3:.3f} mrad, {name} liner"
-            print(
-                f"{label:50s} {t:9.3f} {eq.iterations:4d} {lu:4d} {film:5d} "
-                f"{st.min_film_thickness * 1e6:9.4f} {st.max_pressure / 1e6:10.5f}"
-                + ("" if eq.converged else "  (not converged)")
-            )
+                COUNT["lu"] = COUNT["film"] = COUNT["krylov"] = 0
+                eq = solve()  # the first call builds the layer's transfer function (not timed below)
+                work[model] = (solve, eq, COUNT["lu"], COUNT["film"], COUNT["krylov"])
+            times: dict[str, list[float]] = {"column": [], "layer": []}
+            for _ in range(repeat):  # alternated: both models see the same load of the machine
+                for model in ("column", "layer"):
+                    times[model].append(median_time(work[model][0], 1)[0])
+            medians = {model: float(np.median(t)) for model, t in times.items()}
+            for model in ("column", "layer"):
+                _, eq, lu, film, krylov = work[model]
+                st = eq.state
+                label = f"{rpm:g} rpm, tilt {tilt * 1e3:.3f} mrad, {name} liner, {model}"
+                ratio = f"{medians['layer'] / medians['column']:12.2f}" if model == "layer" else f"{'':12s}"
+                print(
+                    f"{label:58s} {medians[model]:9.3f} {eq.iterations:4d} {lu:4d} {film:5d} {krylov:6d} "
+                    f"{st.min_film_thickness * 1e6:9.4f} {st.max_pressure / 1e6:10.5f} {ratio}"
+                    + ("" if eq.converged else "  (not converged)")
+                )
 
 
 if __name__ == "__main__":

@@ -10,8 +10,10 @@ measure).
    where the film is mixed (lambda_min 1.4, the asperities carry 3 %). (Misaligned at low
    speed the rigid bore's edge takes the load on a vanishing area: contact, part B's liner.)
    Issue 15 target (with the elastic liner of part B): <= 0.3 s. Beside each rough equilibrium,
-   the same with a white-metal and with seed 001's polymer liner (column model, part B), and
-   the ratio to the rigid rough one.
+   the same with a white-metal and with seed 001's polymer liner, each by the column model
+   (part B) and as a bonded elastic layer (film/layer.py), the ratio to the rigid rough one and
+   the layer's to the column's. (The layer's transfer function, built once per grid and liner,
+   is in the first of the repeats: the median leaves it out.)
 2. The same smooth equilibrium as bench_bearing.py, to show the smooth path's time unchanged
    (its stencil is the smooth one: ``rough`` None takes the old code).
 3. 30-speed Stribeck curves, warm-started: seed 001's rig (examples/seed001_water_rig.toml,
@@ -61,10 +63,11 @@ def main() -> None:
         smooth = JournalBearing(case.geometry, operating, case.options)
         rough = JournalBearing(replace(case.geometry, surface=surface), operating, case.options)
         lined = {
-            name: JournalBearing(
-                replace(case.geometry, surface=surface, liner=Liner.preset(name)), operating, case.options
+            (name, model): JournalBearing(
+                replace(case.geometry, surface=surface, liner=Liner.preset(name, model=model)), operating, case.options
             )
             for name in ("white_metal", "polymer_composite")
+            for model in ("column", "layer")
         }
 
         def solve(bearing: JournalBearing, tilt: float = tilt):  # noqa: ANN202 - benchmark helper
@@ -83,12 +86,13 @@ def main() -> None:
             f"{r.min_film_thickness * 1e6:9.2f} {r.min_film_ratio:7.2f} {100 * r.asperity_load_share:8.3f}"
             + ("" if eq_rough.converged else "  (not converged)")
         )
-        for name, (t, eq) in t_lined.items():
+        for (name, model), (t, eq) in t_lined.items():
             st = eq.state
+            versus = f", layer/column {t / t_lined[name, 'column'][0]:.2f}" if model == "layer" else ""
             print(
-                f"{label + ', rough + ' + name + ' liner':60s} {t:9.3f} {t / t_rough:7.2f} "
+                f"{label + ', rough + ' + name + ' liner, ' + model:60s} {t:9.3f} {t / t_rough:7.2f} "
                 f"{st.min_film_thickness * 1e6:9.2f} {st.min_film_ratio:7.2f} {100 * st.asperity_load_share:8.3f}"
-                f"  (max deformation {st.max_liner_deformation * 1e6:.2f} um)"
+                f"  (max deformation {st.max_liner_deformation * 1e6:.2f} um{versus})"
                 + ("" if eq.converged else "  (not converged)")
             )
     rig = load_case(ROOT / "examples" / "seed001_water_rig.toml").studies["bearing"].cases[0]

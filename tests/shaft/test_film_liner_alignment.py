@@ -119,3 +119,21 @@ def test_turbulence_in_the_alignment_film_is_reported(tmp_path: Path) -> None:
     assert film["turbulent"] is True and clearance_re < film["max_reynolds_number"] <= 2 * clearance_re
     text = " ".join(result.stdout.split())
     assert f"largest local Reynolds number {film['max_reynolds_number']:.4g}, turbulent" in text
+
+
+def test_stern_tube_aligned_on_a_layer_liner(tmp_path: Path) -> None:
+    # The same line on seed 001's polymer liner as a bonded elastic layer ([...film.liner] model
+    # = "layer", docs/theory.md "Elastic layer"): the alignment's film rows and their
+    # derivatives go through the layer's coupled solve. Reference: the column model, the
+    # layer's long-wave limit; the 20 mm liner is thin against this bearing's pressure zone, so
+    # the two agree within 1 % on p_max, h_min and the deformation (computed: 0.02 %, 0.04 %,
+    # 0.7 %), and carry the same share within 1e-3.
+    code, column, _ = solve(tmp_path, '  liner = { preset = "polymer_composite" }\n', "column")
+    assert code == 0 and column["converged"]
+    code, layer, _ = solve(tmp_path, '  liner = { preset = "polymer_composite", model = "layer" }\n', "layer")
+    assert code == 0 and layer["converged"]
+    (c,), (s,) = column["films"], layer["films"]
+    assert s["max_liner_deformation"] > 1e-6
+    for key in ("max_pressure", "min_film_thickness", "max_liner_deformation"):
+        assert s[key] == pytest.approx(c[key], rel=0.01)
+    assert s["force_y"] == pytest.approx(c["force_y"], rel=1e-3)

@@ -24,7 +24,7 @@ import numpy as np
 
 from shaftline.errors import InputError, SolverFailure, require_finite
 from shaftline.film.analytic import eccentricity_guess
-from shaftline.film.elastic import LinerSystem
+from shaftline.film.elastic import LayerSystem, LinerSystem
 from shaftline.film.extremes import local_extreme
 from shaftline.film.geometry import (
     BearingGeometry,
@@ -36,6 +36,7 @@ from shaftline.film.geometry import (
     squeeze_velocity,
 )
 from shaftline.film.jfo import JfoSolution, void_transport
+from shaftline.film.layer import ElasticLayer, layer_operator
 from shaftline.film.problem import (
     CAVITATION_MODELS,
     FILM_STARTS,
@@ -458,10 +459,10 @@ class _Evaluation:
     rate: np.ndarray | None = None  # (2/omega) dH/dt of a moving journal
     contact: np.ndarray | None = None  # asperity pressure, Pa (rough surfaces only)
     deformation: np.ndarray | None = None  # liner deformation, m (elastic liner only)
-    liner_system: LinerSystem | None = None  # coupled Newton matrix at this film (built on demand)
+    liner_system: LinerSystem | LayerSystem | None = None  # coupled Newton matrix at this film (built on demand)
     liner_iterations: int = 0
     liner_residual: float = 0.0  # max |R| of the liner equation left, of the clearance
-    nearby_system: LinerSystem | None = None  # the last matrix factorised in its liner iteration
+    nearby_system: LinerSystem | LayerSystem | None = None  # the last matrix factorised in its liner iteration
 
 
 class _SolverState:
@@ -501,6 +502,8 @@ class _SolverState:
         #: With a liner, results then depend on earlier calls to within the liner tolerance
         #: (1e-9 of the clearance); the equilibrium clears it first.
         self.last_deformation: np.ndarray | None = None
+        #: The layer model's compliance on this grid (built on first use; film/layer.py).
+        self.layer: ElasticLayer | None = None
         nz, nt = grid.shape
         fixed = np.zeros(grid.shape, dtype=bool)
         value = np.zeros(grid.shape)
@@ -693,7 +696,7 @@ class JournalBearing:
         tilt_rates: tuple[float, float] = (0.0, 0.0),
         start_pressure: np.ndarray | None = None,
         deformation: np.ndarray | None = None,
-        chord: LinerSystem | None = None,
+        chord: LinerSystem | LayerSystem | None = None,
         liner_tolerance: float = LINER_TOLERANCE,
     ) -> _Evaluation:
         """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
@@ -764,7 +767,7 @@ class JournalBearing:
         start: np.ndarray | None,
         deformation: np.ndarray,
         geometry: BearingGeometry,
-        chord: LinerSystem | None = None,
+        chord: LinerSystem | LayerSystem | None = None,
         tolerance: float = LINER_TOLERANCE,
     ) -> _Evaluation:
         """The film and the column-model liner solved together by Newton's method on the coupled
@@ -773,13 +776,16 @@ class JournalBearing:
         the journal has passed the rigid bore); a backtracking step keeps the film positive and
         lowers the liner residual. With ``chord``, the Newton matrix of a nearby film (a line-search
         trial's parent), the steps use it while each cuts the residual tenfold (a chord
-        iteration: no factorisation), then the film's own, kept likewise for the next steps."""
+        iteration: no factorisation), then the film's own, kept likewise for the next steps.
+        The layer model (``liner.model == "layer"``) takes the same steps with its own liner
+        residual and Newton system (:class:`~shaftline.film.elastic.LayerSystem`)."""
         cache = self._solver_state()
         solver = cache.reynolds
         liner = geometry.liner
         assert liner is not None
         c = self.geometry.radial_clearance
         compliance = liner.compliance
+        layer = self._layer() if liner.model == "layer" else None
         surface = geometry.surface
         rough = self._rough_film()
         rigid_nd = rigid / c
@@ -792,7 +798,10 @@ class JournalBearing:
             film = film_nd * c
             contact = None if surface is None else asperity_pressure(surface, film)
             load = self._gauge(relative) if contact is None else self._gauge(relative) + contact
-            residual = d_nd - (compliance / c) * load
+            if layer is None:
+                residual = d_nd - (compliance / c) * load
+            else:
+                residual = d_nd - layer.apply(load) / c
             evaluation = _Evaluation(
                 position,
                 grid,
@@ -859,7 +868,26 @@ class JournalBearing:
         never below 1e-13, the round-off of the residual."""
         return max(1e-13, share * float(evaluation.film.min()) / self.geometry.radial_clearance)
 
-    def _liner_system(self, evaluation: _Evaluation) -> LinerSystem:
+    def _layer(self) -> ElasticLayer:
+        """The layer model's compliance on this bearing's grid (docs/theory.md, "Elastic layer"),
+        built once per solver state: the end rows carry half cells."""
+        cache = self._solver_state()
+        if cache.layer is None:
+            liner = self.geometry.liner
+            assert liner is not None
+            grid = cache.grid
+            cache.layer = layer_operator(
+                grid.shape,
+                self.geometry.radius,
+                grid.dz,
+                liner.thickness,
+                liner.modulus,
+                liner.poisson,
+                half_end_cells=True,
+            )
+        return cache.layer
+
+    def _liner_system(self, evaluation: _Evaluation) -> LinerSystem | LayerSystem:
         """The coupled film-liner Newton matrix at ``evaluation``'s film (kept on it)."""
         if evaluation.liner_system is None:
             cache = self._solver_state()
@@ -867,6 +895,27 @@ class JournalBearing:
             assert liner is not None
             c = self.geometry.radial_clearance
             surface = self.geometry.surface
+            if liner.model == "layer":
+                slope = (
+                    np.zeros_like(evaluation.film)
+                    if surface is None
+                    else asperity_pressure_derivative(surface, evaluation.film)
+                )
+                evaluation.liner_system = LayerSystem.build(
+                    evaluation.stencil,
+                    evaluation.film / c,
+                    evaluation.relative_pressure,
+                    cache.reynolds.fixed | evaluation.solution.cavitated,
+                    cache.d_theta,
+                    cache.d_z,
+                    self._rough_film(),
+                    evaluation.rate,
+                    self._layer(),
+                    slope,
+                    self.pressure_scale,
+                    c,
+                )
+                return evaluation.liner_system
             diagonal = (
                 np.ones_like(evaluation.film)
                 if surface is None
@@ -931,7 +980,13 @@ class JournalBearing:
             return [None] * len(films)
         slope = asperity_pressure_derivative(surface, evaluation.film) * self.geometry.radial_clearance
         system = evaluation.liner_system
-        if system is not None:
+        if isinstance(system, LayerSystem):
+            # The film with the layer following: dH_r + dD of the linearised liner equation.
+            assert d_pressure is not None
+            films = [
+                d_film + system.deformation_change(d_film, dp) for d_film, dp in zip(films, d_pressure, strict=True)
+            ]
+        elif system is not None:
             # The film with the liner following: (dH_r + K dP) / M (film/elastic.py).
             assert d_pressure is not None
             diagonal = system.diagonal.reshape(evaluation.film.shape)
@@ -1008,7 +1063,10 @@ class JournalBearing:
         c = self.geometry.radial_clearance
         changes = []
         lined = evaluation.deformation is not None
-        diagonal = self._liner_system(evaluation).diagonal.reshape(evaluation.film.shape) if lined else None
+        system = self._liner_system(evaluation) if lined else None
+        # The column model scales the rigid film change by 1/M first (its asperity load's
+        # deformation); the layer model takes that share in its own solve (LayerSystem.response).
+        diagonal = system.diagonal.reshape(evaluation.film.shape) if isinstance(system, LinerSystem) else None
         for d_film, d_rate in directions:
             if diagonal is not None:
                 # The asperity load of the rigid film change deforms the liner too: the film
@@ -1033,9 +1091,13 @@ class JournalBearing:
                 d_residual = d_residual + void_transport(d_face, solution.void)
             changes.append(d_residual)
         d_residual = np.array(changes)
-        if evaluation.deformation is not None:
+        if isinstance(system, LayerSystem):
+            # Elastic layer: the film follows the pressure change (docs/theory.md, "Elastic layer").
+            rigid = np.array([np.broadcast_to(d_film, evaluation.film.shape) for d_film, _ in directions])
+            d_pressure, _ = system.response(d_residual, rigid)
+        elif system is not None:
             # Elastic liner: the film follows the pressure change (docs/theory.md, "Elastic liner").
-            d_pressure, _ = self._liner_system(evaluation).response(d_residual)
+            d_pressure, _ = system.response(d_residual)
         elif isinstance(solution, JfoSolution):
             d_pressure = solution.pressure_response(d_residual)
         else:
@@ -1638,6 +1700,9 @@ class JournalBearing:
         d_pressure = np.tensordot(step, response[1], axes=1)
         d_ey, d_ez = self._offset_directions(evaluation)
         rigid = step[0] * d_ey + step[1] * d_ez
+        if isinstance(system, LayerSystem):
+            change = system.deformation_change(np.broadcast_to(rigid, d_pressure.shape), d_pressure)
+            return evaluation.deformation + self.geometry.radial_clearance * change
         # dD = (K dP + (1 - M) dH_r) / M: the linearised liner equation (film/elastic.py).
         diagonal = system.diagonal.reshape(d_pressure.shape)
         change = (system.coupling * d_pressure + (1.0 - diagonal) * rigid) / diagonal

@@ -382,12 +382,13 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                     )
                 )
             if state.liner_deformation is not None:
+                model = run.case.geometry.liner.model if run.case.geometry.liner is not None else "column"
                 blocks.append(
                     Figure(
                         f"bearing_{index}_liner.png",
                         figures.liner_maps,
                         (state, name),
-                        caption=f"{name}: liner deformation (column model) and the film including it",
+                        caption=f"{name}: liner deformation ({model} model) and the film including it",
                     )
                 )
             if state.reynolds_number is not None:

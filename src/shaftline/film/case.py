@@ -10,7 +10,7 @@ Layout::
     [[bearing.operation.grooves]]
     [bearing.lubricant]
     [bearing.surface]            rough journal and bore: mixed lubrication
-    [bearing.liner]              elastic liner on the bore (column model)
+    [bearing.liner]              elastic liner on the bore (column or bonded-layer model)
     [bearing.thermal]            film temperature from the heat balance
     [bearing.solver]             grid and cavitation model
     [[bearing.variants]]         other bores or tilts solved beside the base case
@@ -472,8 +472,14 @@ def checked_surface(section: SurfaceSection, clearance: float) -> SurfaceRoughne
 
 class LinerSection(Section):
     """Thin elastic liner bonded to the bore: deforms under the film and asperity pressure by
-    the column (Winkler) model, solved together with the film (docs/theory.md, "Elastic liner").
-    A preset gives every field; fields given beside it replace the preset's."""
+    the column (Winkler) model or as a bonded elastic layer, solved together with the film
+    (docs/theory.md, "Elastic liner", "Elastic layer"). A preset gives every field; fields given
+    beside it replace the preset's."""
+
+    model: Literal["column", "layer"] = "column"
+    """column: each point of the liner moves under its own pressure (Winkler); layer: the
+    surface compliance of an elastic layer bonded to the shell (spreads a load over a few
+    thicknesses; takes a rubber liner up to poisson 0.5; slower, docs/theory.md "Elastic layer")."""
 
     preset: Literal["polymer_composite", "rubber", "white_metal"] | None = None
     """Named liner (docs/theory.md lists the sources): polymer_composite (seed 001's rig, 20 mm,
@@ -483,8 +489,8 @@ class LinerSection(Section):
     """Liner thickness (at most a quarter of the bore radius)."""
     modulus: Annotated[PositivePressure, Plausible(3e6, 5e11, _MODULUS)] | None = None
     """Young's modulus of the liner."""
-    poisson: Annotated[float, Quantity("dimensionless", gt=0, lt=0.5)] | None = None
-    """Poisson's ratio of the liner, in (0, 0.5)."""
+    poisson: Annotated[float, Quantity("dimensionless", gt=0, le=0.5)] | None = None
+    """Poisson's ratio of the liner, in (0, 0.5); the layer model also takes 0.5."""
 
     @model_validator(mode="after")
     def _complete(self) -> LinerSection:
@@ -492,6 +498,8 @@ class LinerSection(Section):
             for name in ("thickness", "modulus", "poisson"):
                 if getattr(self, name) is None:
                     raise field_error(name, "missing", "a value, or a preset")
+        if self.model == "column" and self.poisson == 0.5:
+            raise field_error("poisson", self.poisson, "in (0, 0.5) for the column model (model = 'layer' takes 0.5)")
         return self
 
 
@@ -504,7 +512,7 @@ def liner_of(section: LinerSection) -> Liner:
         given if given is not None else preset
         for given, preset in zip((section.thickness, section.modulus, section.poisson), base, strict=True)
     ]
-    return Liner(thickness=values[0], modulus=values[1], poisson=values[2])  # type: ignore[arg-type]
+    return Liner(thickness=values[0], modulus=values[1], poisson=values[2], model=section.model)  # type: ignore[arg-type]
 
 
 class ThermalSection(Section):
@@ -677,7 +685,7 @@ class BearingSection(Section):
     surface: SurfaceSection | None = None
     """Rough journal and bore (mixed lubrication); none: smooth surfaces."""
     liner: LinerSection | None = None
-    """Elastic liner on the bore (column model); none: a rigid bore."""
+    """Elastic liner on the bore (column or bonded-layer model); none: a rigid bore."""
     thermal: ThermalSection | None = None
     """Film temperature from the heat balance; none: the lubricant table's temperature."""
     stribeck: StribeckSection | None = None
@@ -802,6 +810,30 @@ def turbulence_note(geometry: BearingGeometry, operating: OperatingPoint, speed:
     )
 
 
+#: The layer model's end rows are resolved only with an axial step of at most this share of the
+#: liner thickness (docs/validation.md "Elastic layer": seed 001's rig at 135 rpm, end film
+#: 0.58, 0.96, 1.50, 1.94 um at dz = 1.5, 0.75, 0.375, 0.19 t; the interior within 1 %).
+LAYER_RESOLUTION = 0.5
+
+
+def layer_note(geometry: BearingGeometry, axial_nodes: int) -> str | None:
+    """A note when the layer model's liner is thin against the axial step (its deformation
+    near the bearing ends is not resolved); None otherwise."""
+    liner = geometry.liner
+    if liner is None or liner.model != "layer":
+        return None
+    dz = geometry.length / (axial_nodes - 1)
+    if dz <= LAYER_RESOLUTION * liner.thickness:
+        return None
+    needed = math.ceil(geometry.length / (LAYER_RESOLUTION * liner.thickness)) + 1
+    return (
+        f"liner.model = layer with an axial step of {dz * 1e3:.3g} mm, more than half the liner's "
+        f"{liner.thickness * 1e3:.3g} mm: the layer's deformation near the bearing ends is not resolved and the "
+        f"film there comes out too thin (set solver.axial_nodes to {needed} or more; docs/validation.md, "
+        '"Elastic layer").'
+    )
+
+
 def solver_options(s: SolverSection) -> SolverOptions:
     """The film's :class:`SolverOptions` of a ``solver`` table."""
     return SolverOptions(
@@ -901,6 +933,9 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
         options = solver_options(section.solver)
     with located("", {"operating": "operation", "options": "solver"}):
         BearingProblem(base_geometry, operating, options)
+    layer = layer_note(base_geometry, options.axial_nodes)
+    if layer is not None:
+        context.warnings.append(layer)
     if options.turbulence == "on":
         note = turbulence_note(base_geometry, operating, op.speed)
         if note is not None:

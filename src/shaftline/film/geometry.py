@@ -205,7 +205,8 @@ class BearingGeometry:
         Patir-Cheng flow factors and the asperities a Greenwood-Tripp contact pressure (mixed
         lubrication, :mod:`shaftline.film.roughness`); None (default) is a smooth film.
     liner : Liner or None
-        A thin elastic liner bonded to the bore (column model, :mod:`shaftline.film.liner`):
+        A thin elastic liner bonded to the bore (column model, :mod:`shaftline.film.liner`, or
+        bonded layer, :mod:`shaftline.film.layer`):
         it deforms under the film and asperity pressure and the deformation enters the film,
         solved together with it; None (default) is a rigid bore. Its thickness must not
         exceed :data:`~shaftline.film.liner.MAX_THICKNESS_RATIO` of the radius.
@@ -247,7 +248,7 @@ class BearingGeometry:
                 self.liner.thickness,
                 "m",
                 f"(0, {MAX_THICKNESS_RATIO * 0.5 * self.diameter:g}]: a thin liner, at most "
-                f"{MAX_THICKNESS_RATIO:g} of the bore radius (column model)",
+                f"{MAX_THICKNESS_RATIO:g} of the bore radius (a plane liner)",
             )
         if self.rotation not in ROTATIONS:
             raise InputError("rotation", self.rotation, "", "+1 (clockwise from aft) or -1")

@@ -26,9 +26,11 @@ from typing import Literal, get_args
 from shaftline.errors import InputError, require_finite, require_positive
 
 __all__ = [
+    "LINER_MODELS",
     "LINER_PRESETS",
     "MAX_THICKNESS_RATIO",
     "Liner",
+    "LinerModel",
     "LinerPreset",
     "constrained_modulus",
 ]
@@ -40,6 +42,10 @@ __all__ = [
 MAX_THICKNESS_RATIO = 0.25
 
 LinerPreset = Literal["polymer_composite", "rubber", "white_metal"]
+#: How the liner deforms: "column" (each point under its own pressure, this module) or "layer"
+#: (the surface compliance of an elastic layer bonded to the shell, :mod:`shaftline.film.layer`).
+LinerModel = Literal["column", "layer"]
+LINER_MODELS: tuple[str, ...] = get_args(LinerModel)
 
 #: Preset liners: (thickness m, Young's modulus Pa, Poisson's ratio); sources in docs/theory.md.
 #: polymer_composite: seed 001 (Li et al., Sensors 2022, 22, 3670, Sect. 2.1 and Table 1):
@@ -75,7 +81,10 @@ class Liner:
     modulus : float
         Young's modulus E, Pa (> 0).
     poisson : float
-        Poisson's ratio nu, in (0, 0.5).
+        Poisson's ratio nu, in (0, 0.5); the layer model also takes 0.5 (incompressible).
+    model : {"column", "layer"}
+        The column (Winkler) model (default) or the bonded elastic layer's compliance
+        (:mod:`shaftline.film.layer`, docs/theory.md "Elastic layer").
 
     Raises
     ------
@@ -92,30 +101,40 @@ class Liner:
     thickness: float
     modulus: float
     poisson: float
+    model: LinerModel = "column"
 
     def __post_init__(self) -> None:
         require_positive("thickness", self.thickness, "m")
         require_positive("modulus", self.modulus, "Pa")
+        if self.model not in LINER_MODELS:
+            raise InputError("model", self.model, "", "one of " + ", ".join(LINER_MODELS))
         nu = require_finite("poisson", self.poisson)
-        if not 0.0 < nu < 0.5:
+        if self.model == "layer":
+            # The bonded layer holds an incompressible liner (rubber): it deflects by bulging.
+            if not 0.0 < nu <= 0.5:
+                raise InputError("poisson", nu, "", "in (0, 0.5] for the layer model")
+        elif not 0.0 < nu < 0.5:
             raise InputError("poisson", nu, "", "in (0, 0.5)")
 
     @classmethod
-    def preset(cls, name: str) -> Liner:
-        """A preset liner (:data:`LINER_PRESETS`)."""
+    def preset(cls, name: str, model: LinerModel = "column") -> Liner:
+        """A preset liner (:data:`LINER_PRESETS`) deforming by ``model``."""
         if name not in LINER_PRESETS:
             raise InputError("preset", name, "", "one of " + ", ".join(get_args(LinerPreset)))
-        return cls(*LINER_PRESETS[name])
+        return cls(*LINER_PRESETS[name], model=model)
 
     @property
     def constrained_modulus(self) -> float:
-        """``M = E (1 - nu) / ((1 + nu)(1 - 2 nu))``, Pa."""
+        """``M = E (1 - nu) / ((1 + nu)(1 - 2 nu))``, Pa (infinite for nu = 0.5)."""
+        if self.poisson == 0.5:
+            return float("inf")
         return constrained_modulus(self.modulus, self.poisson)
 
     @property
     def compliance(self) -> float:
         """Column compliance ``t / M = t (1 + nu)(1 - 2 nu) / (E (1 - nu))``, m/Pa: the liner's
-        surface moves by this times the local pressure."""
+        surface moves by this times the local pressure (the column model; the layer model's
+        long-wave limit). Zero for nu = 0.5."""
         return self.thickness / self.constrained_modulus
 
     def deflection(self, pressure: float) -> float:

@@ -43,6 +43,9 @@ CHUNK_SIZE = 10
 EQUILIBRIUM_SECONDS_PER_NODE = 2e-5
 #: An elastic liner's coupled Newton multiplies an equilibrium's time by 3.5-12 (bench_mixed).
 LINER_FACTOR = 5.0
+#: The elastic-layer liner's GMRES costs 1.0-2.4 times the column model's equilibrium
+#: (bench_liner_work.py, docs/validation.md "Elastic layer"): 2 on top of LINER_FACTOR.
+LAYER_FACTOR = 2.0
 #: A curve estimated below this many seconds serially runs serially by default: the pool's
 #: start-up (1-3 s: the workers import the solver and build their tables) and the cold start
 #: of every chunk pay off only on long curves. Measured on 30 speeds (docs/validation.md): pool
@@ -106,9 +109,11 @@ def transition_speed(speed: np.ndarray, share: np.ndarray, limit: float = TRANSI
 
 def estimated_seconds(case: BearingCase, speeds: int) -> float:
     """Rough serial time of a curve of ``speeds`` speeds of ``case``, s: the grid's nodes times
-    :data:`EQUILIBRIUM_SECONDS_PER_NODE` per speed (times :data:`LINER_FACTOR` with a liner)."""
+    :data:`EQUILIBRIUM_SECONDS_PER_NODE` per speed (times :data:`LINER_FACTOR` with a liner, and
+    :data:`LAYER_FACTOR` more for the layer model)."""
     nodes = case.options.axial_nodes * case.options.circumferential_nodes
-    factor = LINER_FACTOR if case.geometry.liner is not None else 1.0
+    liner = case.geometry.liner
+    factor = 1.0 if liner is None else LINER_FACTOR * (LAYER_FACTOR if liner.model == "layer" else 1.0)
     return speeds * nodes * EQUILIBRIUM_SECONDS_PER_NODE * factor
 
 

@@ -110,7 +110,7 @@ LINER_FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
     (
         "max_liner_deformation",
         "m",
-        "largest liner deformation (column model); film, h_min and p_max include the deformation",
+        "largest liner deformation (column or layer model); film, h_min and p_max include the deformation",
         lambda s: s.max_liner_deformation,
     ),
 ]

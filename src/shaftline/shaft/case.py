@@ -373,7 +373,7 @@ class FilmSection(Section):
     surface: SurfaceSection | None = None
     """Rough journal and bore (mixed lubrication), as [bearing.surface]: the same fields and checks."""
     liner: LinerSection | None = None
-    """Elastic liner of the bore (column model solved with the film), as [bearing.liner]: the same
+    """Elastic liner of the bore (column or layer model solved with the film), as [bearing.liner]: the same
     fields and checks; a water-lubricated stern tube is aligned with its soft liner."""
     elements: Annotated[int, Field(ge=2, le=50)] = 10
     """Shaft elements across the bearing (at least; seed 004 uses 10)."""
