@@ -197,7 +197,8 @@ FILM_HEADERS = [
 def _film_notes(coupled: CoupledResult) -> Paragraph | None:
     """The film results the table has no columns for, where a film has them: rough surfaces
     (film ratio, asperity share), an elastic liner (its largest deformation), turbulence on or
-    auto (largest local Reynolds number and whether the coefficients applied)."""
+    auto (largest local Reynolds number and whether the coefficients applied). A film that fell
+    back to contact is said to be at its last journal line, not at an equilibrium."""
     parts = []
     for f in coupled.films:
         state = f.state
@@ -213,7 +214,12 @@ def _film_notes(coupled: CoupledResult) -> Paragraph | None:
             kind = "turbulent (coefficients applied)" if state.turbulent else "laminar"
             notes.append(f"largest local Reynolds number {state.max_reynolds_number:.4g}, {kind}")
         if notes:
-            parts.append(f"{f.name}: " + "; ".join(notes))
+            # A grounded film's state is the last journal line reached, not an equilibrium of
+            # shaft and film: its asperity share is not the share of the bearing's load.
+            where = (
+                " (at the last journal line before the fall-back to contact, not an equilibrium)" if f.contact else ""
+            )
+            parts.append(f"{f.name}{where}: " + "; ".join(notes))
     if not parts:
         return None
     return Paragraph(f"Film bearings, {coupled.condition.name}: " + ". ".join(parts) + ".")
