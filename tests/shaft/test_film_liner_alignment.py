@@ -128,3 +128,29 @@ def test_turbulence_in_the_alignment_film_is_reported(tmp_path: Path) -> None:
     assert film["turbulent"] is True and clearance_re < film["max_reynolds_number"] <= 2 * clearance_re
     text = " ".join(result.stdout.split())
     assert f"largest local Reynolds number {film['max_reynolds_number']:.4g}, turbulent" in text
+
+
+@pytest.mark.parametrize(
+    ("solver", "expected"),
+    [
+        ('turbulence_model = "constantinescu"', "alignment.bearings[0].film.solver.turbulence_model = constantinescu"),
+        ('turbulence = "on"', "alignment.bearings[0].film.solver.turbulence = on with a film whose largest local"),
+        ('turbulence = "off"', None),
+    ],
+)
+def test_turbulence_notes_in_the_alignment_film_as_in_the_bearing(tmp_path: Path, solver: str, expected) -> None:
+    # `[alignment.bearings.film.solver]` notes what `[bearing.solver]` notes (tests/film/
+    # test_turbulence.py): a turbulence_model named with turbulence left off has no effect, and
+    # turbulence on for this oil film (largest Re_h 28 against the onset 41.3 sqrt(R/c) = 993)
+    # is far below transition. Named under the film's table; turbulence off named is no note.
+    film = OWN_FILM.replace("circumferential_nodes = 36 }", f"circumferential_nodes = 36, {solver} }}")
+    path = tmp_path / "line.toml"
+    path.write_text(LINE.replace("FILM", film).replace("MOMENT", "-409948 N*m"))
+    out = tmp_path / "line.json"
+    result = invoke("align", str(path), "--json", str(out))
+    assert result.exit_code == 0, result.stderr
+    warnings = json.loads(out.read_text()).get("warnings", [])
+    if expected is None:
+        assert warnings == []
+    else:
+        assert len(warnings) == 1 and warnings[0].startswith(expected), warnings
