@@ -225,6 +225,11 @@ def _film_notes(coupled: CoupledResult) -> Paragraph | None:
     return Paragraph(f"Film bearings, {coupled.condition.name}: " + ". ".join(parts) + ".")
 
 
+def _count(n: int, noun: str) -> str:
+    """``"1 iteration"``, ``"3 iterations"``."""
+    return f"{n} {noun}" + ("" if n == 1 else "s")
+
+
 def _finite(value: float) -> float | None:
     """A float for the JSON, None (null) where it is nan: JSON has no nan."""
     return float(value) if math.isfinite(value) else None
@@ -574,12 +579,14 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
 
     def _film_blocks(self, coupled: CoupledResult, narrow: bool = False) -> list[Block]:
         name = coupled.condition.name
-        state = (
-            f"converged in {coupled.iterations} iterations ({coupled.film_solutions} film solutions)"
-            + (f"; {coupled.message}" if coupled.message else "")
-            if coupled.converged
-            else f"NOT CONVERGED: {coupled.message}"
-        )
+        work = f"{_count(coupled.iterations, 'iteration')} ({_count(coupled.film_solutions, 'film solution')})"
+        if not coupled.converged:
+            state = f"NOT CONVERGED: {coupled.message}"
+        elif coupled.contact:
+            # "converged" there is the contact solution's: the film iteration itself stalled.
+            state = f"the film iteration stopped after {work}; {coupled.message}"
+        else:
+            state = f"converged in {work}" + (f"; {coupled.message}" if coupled.message else "")
         blocks: list[Block] = [
             Paragraph(f"Film supports, {name}: {state}.", "text" if coupled.converged else "warn"),
             _narrowed(FILM_HEADERS, _film_rows(coupled), f"Film bearings: {name}", NARROW_FILM if narrow else None),
