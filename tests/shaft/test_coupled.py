@@ -557,6 +557,17 @@ def test_a_film_that_cannot_carry_falls_back_to_contact_at_the_bore():
     # Why it grounds: the film is far out of equilibrium with the shaft (its force would change
     # by more than GROUNDED_FORCE_MISMATCH, 1 %, to follow the shaft's line), quoted.
     assert "force mismatch" in result.message
+    # The journal figure says the film grounded and gives its h_min to 3 significant digits
+    # (a film at its floor read "h_min 0.0 µm").
+    from matplotlib.figure import Figure
+
+    from shaftline.shaft import figures
+
+    ax = Figure().subplots(2, 1)
+    figures.journal_in_bore(film, ax=ax)
+    title = ax[0].get_title()
+    assert "(at its floor: solved as contact)" in title
+    assert f"h_min {film.state.min_film_thickness * 1e6:.3g} µm" in title
 
 
 def test_a_film_near_its_floor_that_carries_its_share_does_not_ground():
