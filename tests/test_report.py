@@ -172,3 +172,26 @@ def test_stribeck_figure_titles_fit_and_contact_speeds_are_marked_on_both_panels
     # The h_min line joins the equilibria only (as the friction line).
     (line,) = [line for line in ax[1].lines if line.get_label() == "h_min"]
     assert list(line.get_xdata()) == pytest.approx(curve.speed[2:] * 30 / np.pi)
+
+
+def test_a_title_cut_at_the_figures_edge_is_wrapped():
+    # Two-panel figures of the bearing report (asperity contact, liner) put the case name ahead
+    # of the left panel's title and cut it at the figure's edge ("d 001 rig, soft liner, ...").
+    # The report wraps such a title (fit_titles, called by draw_figure before saving) and leaves
+    # the titles that fit as they are.
+    from shaftline.report.plotting import fit_titles
+
+    canvas = Figure(figsize=(11, 4.2), layout="constrained")
+    left, right = canvas.subplots(1, 2)
+    long = "seed 001 rig, soft liner, 95 rpm: asperities carry 0.36 % of the load of the bearing"
+    left.set_title(long)
+    right.set_title("λ_min = 0.10 (boundary)")
+    canvas.draw_without_rendering()
+    assert left.title.get_window_extent().x0 < canvas.bbox.x0  # cut before
+    fit_titles(canvas)
+    canvas.draw_without_rendering()
+    assert "\n" in left.title.get_text() and left.title.get_text().replace("\n", " ") == long
+    extent = left.title.get_window_extent()
+    assert canvas.bbox.x0 <= extent.x0 and extent.x1 <= canvas.bbox.x1
+    assert not extent.overlaps(right.title.get_window_extent())
+    assert right.title.get_text() == "λ_min = 0.10 (boundary)"

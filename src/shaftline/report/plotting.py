@@ -49,6 +49,30 @@ def figure_function(
     return wrap
 
 
+def fit_titles(figure: Any) -> None:
+    """Wrap each axes title of ``figure`` that is cut at the figure's edge or runs into another
+    panel's title onto more lines (at spaces), as wide as its axes: a long case name ahead of a
+    panel's title was cut off. The report applies this to each figure before saving it."""
+    import textwrap
+
+    figure.draw_without_rendering()  # lays out the axes and titles as they will be saved
+    box = figure.bbox
+    titles = [axes.title for axes in figure.axes if axes.title.get_text()]
+    extents = {id(title): title.get_window_extent() for title in titles}
+    for axes in figure.axes:
+        title = axes.title
+        text = title.get_text()
+        if not text or "\n" in text:
+            continue
+        extent = extents[id(title)]
+        cut = extent.x0 < box.x0 - 0.5 or extent.x1 > box.x1 + 0.5
+        crowded = any(other is not title and extent.overlaps(extents[id(other)]) for other in titles)
+        room = axes.get_window_extent().width
+        if (cut or crowded) and extent.width > room > 0:
+            # characters per line in proportion to the room (a title is one font, one size)
+            title.set_text(textwrap.fill(text, max(int(len(text) * room / extent.width), 12)))
+
+
 def plain(text: str) -> str:
     """User text (a case, condition or bearing name) as matplotlib shows it literally: a
     pair of ``$`` would otherwise start mathtext, and an unpaired one fails to draw."""
