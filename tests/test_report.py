@@ -126,3 +126,72 @@ def test_units_survive_the_terminal():
             assert units, name
             for unit in units:
                 assert unit in text, (name, unit)
+
+
+def test_stribeck_figure_titles_fit_and_contact_speeds_are_marked_on_both_panels():
+    # The Stribeck figure of the seed 001 rig (examples/seed001_water_rig.toml, `bearing
+    # stribeck`) cut its left title at the figure's edge (the regime colours were spelled out in
+    # it) and drew the contact speeds' h_min (films at the floor, one fitted below zero) as
+    # ordinary points of the curve. Now: titles inside the figure, the regimes in the legend, and
+    # the contact speeds marked x on both panels. A synthetic curve: 6 speeds, the two lowest
+    # in contact.
+    import numpy as np
+
+    from shaftline.film import figures
+    from shaftline.film.stribeck import StribeckCurve
+
+    n = 6
+    contact = np.array([True, True, False, False, False, False])
+    curve = StribeckCurve(
+        speed=np.geomspace(0.4, 40.0, n),
+        friction_coefficient=np.array([0.04, 0.03, 0.01, 0.003, 0.001, 0.0012]),
+        asperity_load_share=np.array([0.5, 0.3, 0.05, 0.008, 0.0, 0.0]),
+        min_film_thickness=np.array([1e-8, -2e-8, 2e-7, 1e-6, 3e-6, 8e-6]),
+        min_film_ratio=np.array([0.005, -0.01, 0.1, 0.5, 1.5, 4.0]),
+        regime=("boundary", "boundary", "boundary", "boundary", "mixed", "full film"),
+        converged=~contact,
+        contact=contact,
+        transition_speed=3.0,
+    )
+    canvas = Figure(figsize=figures.stribeck.size, layout="constrained")
+    ax = canvas.subplots(*figures.stribeck.layout)
+    figures.stribeck(curve, "seed 001 rig, 35 rpm, a case name of some length", ax=ax)
+    canvas.draw_without_rendering()
+    box = canvas.bbox
+    for axes in ax:
+        title = axes.title.get_window_extent()
+        assert box.x0 <= title.x0 and title.x1 <= box.x1, axes.get_title()
+        labels = axes.get_legend_handles_labels()[1]
+        marked = [line for line in axes.lines if line.get_label() == "contact: load not carried"]
+        assert len(marked) == 1 and list(marked[0].get_xdata()) == pytest.approx(curve.speed[:2] * 30 / np.pi)
+        assert [text.get_text() for text in axes.get_legend().get_texts()][-3:] == [
+            "boundary (λ < 1)",
+            "mixed (1-3)",
+            "full film (λ > 3)",
+        ], labels
+    # The h_min line joins the equilibria only (as the friction line).
+    (line,) = [line for line in ax[1].lines if line.get_label() == "h_min"]
+    assert list(line.get_xdata()) == pytest.approx(curve.speed[2:] * 30 / np.pi)
+
+
+def test_a_title_cut_at_the_figures_edge_is_wrapped():
+    # Two-panel figures of the bearing report (asperity contact, liner) put the case name ahead
+    # of the left panel's title and cut it at the figure's edge ("d 001 rig, soft liner, ...").
+    # The report wraps such a title (fit_titles, called by draw_figure before saving) and leaves
+    # the titles that fit as they are.
+    from shaftline.report.plotting import fit_titles
+
+    canvas = Figure(figsize=(11, 4.2), layout="constrained")
+    left, right = canvas.subplots(1, 2)
+    long = "seed 001 rig, soft liner, 95 rpm: asperities carry 0.36 % of the load of the bearing"
+    left.set_title(long)
+    right.set_title("λ_min = 0.10 (boundary)")
+    canvas.draw_without_rendering()
+    assert left.title.get_window_extent().x0 < canvas.bbox.x0  # cut before
+    fit_titles(canvas)
+    canvas.draw_without_rendering()
+    assert "\n" in left.title.get_text() and left.title.get_text().replace("\n", " ") == long
+    extent = left.title.get_window_extent()
+    assert canvas.bbox.x0 <= extent.x0 and extent.x1 <= canvas.bbox.x1
+    assert not extent.overlaps(right.title.get_window_extent())
+    assert right.title.get_text() == "λ_min = 0.10 (boundary)"

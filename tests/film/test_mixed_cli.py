@@ -177,3 +177,16 @@ def test_stribeck_of_a_smooth_case_has_no_regimes(tmp_path: Path) -> None:
     assert curve["transition_speed_rpm"] is None and curve["lubrication_regime"] == [None, None, None]
     assert curve["min_film_ratio"] == [None, None, None]  # infinite for smooth surfaces
     assert (out / "figures" / "bearing_stribeck.png").stat().st_size > 10_000
+
+
+def test_a_symmetric_films_load_centre_shows_as_zero(rig: Path) -> None:
+    # The aligned rig's film is symmetric about mid-length: its load centre is rounding (the
+    # JSON's value, below 1e-9 m), which the table printed as "-2.425e-17" m on
+    # examples/seed001_water_rig.toml. The table shows 0; the JSON keeps the value.
+    data = invoke("bearing", "solve", str(rig), "--json", "-", "--workers", "1")
+    offset = json.loads(data.stdout)["bearing"]["cases"][0]["load_centre_offset"]
+    assert abs(offset) < 1e-9
+    table = invoke("bearing", "solve", str(rig), "--workers", "1")
+    assert table.exit_code == 0, table.output
+    (row,) = [line for line in table.stdout.splitlines() if "load centre from L/2" in line]
+    assert row.split("│")[2].strip() == "0", row

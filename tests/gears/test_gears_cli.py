@@ -195,3 +195,27 @@ def test_flash_method_without_iso_rating_is_refused(tmp_path):
     assert result.exit_code == 2, result.stdout
     assert "gears.flash.method = 'iso_general'" in result.stderr and "[gears.iso]" in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
+
+@pytest.mark.parametrize("example", [SEED, FZG])
+def test_the_terminal_tables_fit_80_columns_a_line_a_row(example):
+    # The summary's tables (seed 002's SP, then ISO's ratings at the same steps) print each row and
+    # the header on one line of an 80-column terminal: the single table of nine or ten columns
+    # wrapped every row (the FZG stages over three lines, "uncertain" folded to "uncert|ain").
+    from rich.console import Console
+
+    from shaftline.cases import load_case
+    from shaftline.pipeline import run_case
+    from shaftline.report.blocks import Table
+    from shaftline.report.terminal import print_blocks
+
+    result = run_case(load_case(example))
+    capability, value = next(result.capabilities())
+    tables = [b for b in capability.summary(value) if isinstance(b, Table)]
+    assert len(tables) == 2 and tables[1].headers[-2:] == ["S_B", "S_intS"]
+    for table in tables:
+        console = Console(record=True, width=80)
+        print_blocks(console, [table])
+        lines = console.export_text().splitlines()
+        assert max(len(line) for line in lines) <= 80
+        assert sum(line.startswith("┃") for line in lines) == 1, lines  # the header
+        assert sum(line.startswith("│") for line in lines) == len(table.rows), lines

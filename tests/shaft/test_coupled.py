@@ -554,3 +554,39 @@ def test_a_film_that_cannot_carry_falls_back_to_contact_at_the_bore():
     # The work before the film grounded is counted: at least the first film evaluation and the
     # Newton iteration whose step found no better film (the count read 0 and 0 before).
     assert result.iterations >= 1 and result.film_solutions >= 1
+    # Why it grounds: the film is far out of equilibrium with the shaft (its force would change
+    # by more than GROUNDED_FORCE_MISMATCH, 1 %, to follow the shaft's line), quoted.
+    assert "force mismatch" in result.message
+    # The journal figure says the film grounded and gives its h_min to 3 significant digits
+    # (a film at its floor read "h_min 0.0 µm").
+    from matplotlib.figure import Figure
+
+    from shaftline.shaft import figures
+
+    ax = Figure().subplots(2, 1)
+    figures.journal_in_bore(film, ax=ax)
+    title = ax[0].get_title()
+    assert "(at its floor: solved as contact)" in title
+    assert f"h_min {film.state.min_film_thickness * 1e6:.3g} µm" in title
+
+
+def test_a_film_near_its_floor_that_carries_its_share_does_not_ground():
+    """A stall is not contact. The demo line converges to 2.6e-8 c with h_min = 0.21 c; with the
+    film floor raised to 0.6 of that (h_min within twice the floor, as a lined or rough film's
+    end rows sit) and tolerances below rounding (1e-16), Newton stalls at about 1e-15 c. The
+    film carries its share (force mismatch at rounding; the step does not thin it): the result
+    is "not converged" with the residuals, not the fall-back to contact, which the old rule
+    (a stall within twice the floor) took (docs/theory.md Sect. 10.1, "Contact fall-back")."""
+    film = ntua_film()
+    first = CoupledAlignment(ntua_line(), [FilmSupport("aft", film)]).solve()
+    assert first.converged and not first.contact
+    h = first.film("aft").state.min_film_thickness
+    raised = replace(film, options=replace(film.options, min_film_floor=0.6 * h / CLEARANCE))
+    options = CouplingOptions(film_tolerance=1e-16, force_tolerance=1e-16)
+    result = CoupledAlignment(ntua_line(), [FilmSupport("aft", raised)], options).solve()
+    assert not result.converged and not result.contact
+    assert "stalled" in result.message and "force mismatch" in result.message
+    assert result.condition.bearing("aft").contact == "film"
+    assert result.force_residual < 1e-9 and result.residual_history[-1] < 1e-9
+    # The same film as the converged solution: the stall is at rounding.
+    assert result.film("aft").force_y == pytest.approx(first.film("aft").force_y, rel=1e-7)

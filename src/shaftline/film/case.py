@@ -792,9 +792,12 @@ def lubricant_properties(lube: LubricantSection) -> tuple[Lubricant, float, floa
 FAR_BELOW_TRANSITION = 0.1
 
 
-def turbulence_note(geometry: BearingGeometry, operating: OperatingPoint, speed: float) -> str | None:
+def turbulence_note(
+    geometry: BearingGeometry, operating: OperatingPoint, speed: float, field: str = "solver"
+) -> str | None:
     """A note when turbulence is asked for with a film whose largest local Reynolds number
-    (``2 Re_c``, a film of at most 2c) is far below the Taylor-vortex onset; None otherwise."""
+    (``2 Re_c``, a film of at most 2c) is far below the Taylor-vortex onset; None otherwise.
+    ``field``: the case-file path of the solver table, for the note's text."""
     from shaftline.film.turbulence import clearance_reynolds, pressure_flow_coefficients, transition_reynolds
 
     radius, clearance = geometry.radius, geometry.radial_clearance
@@ -804,7 +807,7 @@ def turbulence_note(geometry: BearingGeometry, operating: OperatingPoint, speed:
         return None
     kx, _ = pressure_flow_coefficients(largest)
     return (
-        f"solver.turbulence = on with a film whose largest local Reynolds number is {largest:.3g}, far below the "
+        f"{field}.turbulence = on with a film whose largest local Reynolds number is {largest:.3g}, far below the "
         f"transition at {transition:.3g} (41.3 sqrt(R/c)): the film is laminar; the turbulence coefficients change "
         f"its pressure flow by at most {100 * (1 - 12 / float(kx)):.2g} % (set turbulence = off or auto)."
     )
@@ -832,6 +835,30 @@ def layer_note(geometry: BearingGeometry, axial_nodes: int) -> str | None:
         f"film there comes out too thin (set solver.axial_nodes to {needed} or more; docs/validation.md, "
         '"Elastic layer").'
     )
+
+def turbulence_notes(
+    solver: SolverSection,
+    options: SolverOptions,
+    geometry: BearingGeometry,
+    operating: OperatingPoint,
+    field: str = "solver",
+) -> list[str]:
+    """The notes (not errors) on a film's turbulence settings, the same for ``[bearing.solver]``
+    and ``[alignment.bearings.film.solver]``: turbulence on for a film far below transition
+    (:func:`turbulence_note`), and a ``turbulence_model`` named with turbulence left off.
+    ``field``: the case-file path of the solver table, for the notes' text."""
+    notes = []
+    if options.turbulence == "on":
+        note = turbulence_note(geometry, operating, operating.speed, field)
+        if note is not None:
+            notes.append(note)
+    if options.turbulence == "off" and "turbulence_model" in solver.model_fields_set:
+        # a model named with turbulence left at its default: the user likely meant it to apply
+        notes.append(
+            f"{field}.turbulence_model = {options.turbulence_model} has no effect with turbulence = off (the "
+            "default): the film is laminar (set turbulence = on or auto)."
+        )
+    return notes
 
 
 def solver_options(s: SolverSection) -> SolverOptions:
@@ -946,6 +973,8 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
             f"solver.turbulence_model = {options.turbulence_model} has no effect with turbulence = off (the "
             "default): the film is laminar (set turbulence = on or auto)."
         )
+
+    context.warnings.extend(turbulence_notes(section.solver, options, base_geometry, operating))
     tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)
     tilt_z = _tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, length, clearance)
 

@@ -165,12 +165,16 @@ def reynolds_map(state: BearingState, title: str = "", *, ax: Any) -> Any:
 def stribeck(curve: Any, title: str = "", *, ax: Any) -> Any:
     """Friction coefficient (Stribeck curve) and h_min against speed, shaded by lubrication
     regime (boundary lambda < 1, mixed 1-3, full film > 3), with the transition speed."""
+    from matplotlib.patches import Patch
+
     rpm = curve.speed * 30.0 / np.pi
     ok = ~curve.contact
     ax[0].loglog(rpm[ok], curve.friction_coefficient[ok], "o-", color="C0", ms=3, label="friction coefficient")
+    ax[1].semilogx(rpm[ok], curve.min_film_thickness[ok] * 1e6, "o-", color="C2", ms=3, label="h_min")
     if (~ok).any():
-        ax[0].loglog(rpm[~ok], curve.friction_coefficient[~ok], "x", color="C3", label="contact: load not carried")
-    ax[1].semilogx(rpm, curve.min_film_thickness * 1e6, "o-", color="C2", ms=3, label="h_min")
+        # The same speeds marked on both panels: a film at its floor is not an equilibrium's h_min.
+        for axes, values in ((ax[0], curve.friction_coefficient), (ax[1], curve.min_film_thickness * 1e6)):
+            axes.plot(rpm[~ok], values[~ok], "x", color="C3", label="contact: load not carried")
     colours = {"boundary": "#f4cccc", "mixed": "#fff2cc", "full film": "#d9ead3"}
     edges = np.sqrt(rpm[1:] * rpm[:-1])
     lows = np.concatenate([[rpm[0]], edges])
@@ -184,10 +188,16 @@ def stribeck(curve: Any, title: str = "", *, ax: Any) -> Any:
             axes.axvline(curve.transition_speed * 30.0 / np.pi, color="k", ls="--", lw=1, label="asperity share < 1 %")
     ax[0].set_ylabel("friction coefficient [-]")
     ax[1].set_ylabel("h_min [µm]")
+    # The regimes' colours in the legend (they were named in a title too long for the axes).
+    present = [regime for regime in colours if regime in curve.regime]
+    keys = {"boundary": "boundary (λ < 1)", "mixed": "mixed (1-3)", "full film": "full film (λ > 3)"}
     for axes in ax:
         axes.set_xlabel("shaft speed [rpm]")
-        axes.legend(fontsize=8)
+        handles, labels = axes.get_legend_handles_labels()
+        handles += [Patch(color=colours[regime]) for regime in present]
+        labels += [keys[regime] for regime in present]
+        axes.legend(handles, labels, fontsize=8)
     head = f"{plain(title)}: " if title else ""
-    ax[0].set_title(f"{head}Stribeck curve (red: boundary, yellow: mixed, green: full film)")
+    ax[0].set_title(f"{head}Stribeck curve")
     ax[1].set_title("smallest film")
     return ax

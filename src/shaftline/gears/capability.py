@@ -176,35 +176,58 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
             }
         return out
 
-    def _table(self, result: GearResult) -> Table:
+    def _tables(self, result: GearResult) -> list[Table]:
+        """Seed 002's SP and, with ``[gears.iso]``, ISO's ratings, as two tables over the same
+        torque steps: one table of nine or ten columns wrapped every row in an 80-column
+        terminal."""
         study, c = result.study, result.state.contact
         stages = study.fzg_load_stages
+        first = ["stage"] if stages else []  # the FZG load stage, named so in the titles
+        by_stage = "FZG load stages, " if stages else ""
+        steps = [([str(stages[k])] if stages else []) + [f"{torque:g}"] for k, torque in enumerate(study.torques)]
         rows = []
-        for k, torque in enumerate(study.torques):
+        for k, step in enumerate(steps):
             sp = float(result.sp[k, 0])
-            row = [
-                f"{torque:g}" + (f" (stage {stages[k]})" if stages else ""),
-                f"{float(c.peak_pressure[k, 0].max()) / 1e9:.2f}",
-                f"{float(c.film_ratio[k, 0].min()):.2f}",
-                f"{float(c.friction[k, 0].max()):.3f}",
-                f"{sp:.2f}",
-                _verdict(sp),
-            ]
-            if result.iso is not None:
-                row += [f"{float(result.iso.contact_max[k, 0]):.0f}", f"{float(result.iso.safety[k, 0]):.2f}"]
-            if result.integral is not None:
-                row.append(f"{float(result.integral.safety[k, 0]):.2f}")
-            rows.append(row)
-        headers = ["pinion torque [N m]", "max p_H [GPa]", "min Lambda", "max f", "SP", "seed 002"]
-        if result.iso is not None:
-            headers += ["ISO θ_Bmax [°C]", "ISO S_B", "ISO S_intS"]
+            rows.append(
+                [
+                    *step,
+                    f"{float(c.peak_pressure[k, 0].max()) / 1e9:.2f}",
+                    f"{float(c.film_ratio[k, 0].min()):.2f}",
+                    f"{float(c.friction[k, 0].max()):.3f}",
+                    f"{sp:.2f}",
+                    _verdict(sp),
+                ]
+            )
         speed = float(study.speeds[0]) * 30.0 / math.pi
-        return Table(
-            headers,
-            rows,
-            f"{study.mesh.model.lubricant.name} at {study.oil_temperature:g} °C, {speed:.0f} rpm, "
-            f"C = {result.coefficient:.4g} W/(m K), T_cr = {study.critical_temperature:g} °C",
-        )
+        tables = [
+            Table(
+                [*first, "T_pinion [N m]", "max p_H [GPa]", "min Λ", "max f", "SP", "seed 002"],
+                rows,
+                f"{by_stage}{study.mesh.model.lubricant.name} at {study.oil_temperature:g} °C, {speed:.0f} rpm: "
+                f"seed 002's SP, C = {result.coefficient:.4g} W/(m K), T_cr = {study.critical_temperature:g} °C",
+            )
+        ]
+        if result.iso is not None:
+            iso, integral = result.iso, result.integral
+            headers = [*first, "T_pinion [N m]", "θ_B,max [°C]", "S_B"]
+            iso_rows = []
+            for k, step in enumerate(steps):
+                row = [*step, f"{float(iso.contact_max[k, 0]):.0f}", f"{float(iso.safety[k, 0]):.2f}"]
+                if integral is not None:
+                    row.append(f"{float(integral.safety[k, 0]):.2f}")
+                iso_rows.append(row)
+            if integral is not None:
+                headers.append("S_intS")
+            tables.append(
+                Table(
+                    headers,
+                    iso_rows,
+                    "ISO/TS 6336-20 flash temperature (θ_B,max, S_B)"
+                    + (" and 6336-21 integral temperature (S_intS)" if integral is not None else "")
+                    + f", {by_stage}{speed:.0f} rpm",
+                )
+            )
+        return tables
 
     def _notes(self, result: GearResult) -> list[Block]:
         blocks: list[Block] = [Paragraph(f"Extrapolated: {text}", "warn") for text in result.warnings]
@@ -250,14 +273,14 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
         return found
 
     def summary(self, result: GearResult) -> list[Block]:
-        return [*self._notes(result), self._table(result)]
+        return [*self._notes(result), *self._tables(result)]
 
     def report(self, result: GearResult) -> list[Block]:
         from shaftline.gears import figures
 
         return [
             *self._notes(result),
-            self._table(result),
+            *self._tables(result),
             Paragraph(f"Lubricant data: {result.study.mesh.model.lubricant.source}", "note"),
             Paragraph(
                 "SP: seed 002 Eq. 7 as read in docs/theory.md 19.2; ISO: flash-temperature (S_B, TS 6336-20, "

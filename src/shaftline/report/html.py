@@ -23,6 +23,7 @@ from shaftline.report.blocks import (
     Table,
     is_number,
 )
+from shaftline.report.plotting import fit_titles
 
 
 def svg_name(file: str) -> str:
@@ -42,6 +43,7 @@ def draw_figure(figure: Figure, path: Path) -> Path:
     canvas = MatplotlibFigure(figsize=plot.size, layout="constrained")
     axes = canvas.subplots(*plot.layout, sharex=plot.sharex)
     plot(*figure.args, ax=axes, **figure.kwargs)
+    fit_titles(canvas)
     canvas.savefig(path, dpi=110)
     canvas.savefig(path.with_suffix(".svg"))
     return path

@@ -197,7 +197,8 @@ FILM_HEADERS = [
 def _film_notes(coupled: CoupledResult) -> Paragraph | None:
     """The film results the table has no columns for, where a film has them: rough surfaces
     (film ratio, asperity share), an elastic liner (its largest deformation), turbulence on or
-    auto (largest local Reynolds number and whether the coefficients applied)."""
+    auto (largest local Reynolds number and whether the coefficients applied). A film that fell
+    back to contact is said to be at its last journal line, not at an equilibrium."""
     parts = []
     for f in coupled.films:
         state = f.state
@@ -213,10 +214,20 @@ def _film_notes(coupled: CoupledResult) -> Paragraph | None:
             kind = "turbulent (coefficients applied)" if state.turbulent else "laminar"
             notes.append(f"largest local Reynolds number {state.max_reynolds_number:.4g}, {kind}")
         if notes:
-            parts.append(f"{f.name}: " + "; ".join(notes))
+            # A grounded film's state is the last journal line reached, not an equilibrium of
+            # shaft and film: its asperity share is not the share of the bearing's load.
+            where = (
+                " (at the last journal line before the fall-back to contact, not an equilibrium)" if f.contact else ""
+            )
+            parts.append(f"{f.name}{where}: " + "; ".join(notes))
     if not parts:
         return None
     return Paragraph(f"Film bearings, {coupled.condition.name}: " + ". ".join(parts) + ".")
+
+
+def _count(n: int, noun: str) -> str:
+    """``"1 iteration"``, ``"3 iterations"``."""
+    return f"{n} {noun}" + ("" if n == 1 else "s")
 
 
 def _finite(value: float) -> float | None:
@@ -568,12 +579,14 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
 
     def _film_blocks(self, coupled: CoupledResult, narrow: bool = False) -> list[Block]:
         name = coupled.condition.name
-        state = (
-            f"converged in {coupled.iterations} iterations ({coupled.film_solutions} film solutions)"
-            + (f"; {coupled.message}" if coupled.message else "")
-            if coupled.converged
-            else f"NOT CONVERGED: {coupled.message}"
-        )
+        work = f"{_count(coupled.iterations, 'iteration')} ({_count(coupled.film_solutions, 'film solution')})"
+        if not coupled.converged:
+            state = f"NOT CONVERGED: {coupled.message}"
+        elif coupled.contact:
+            # "converged" there is the contact solution's: the film iteration itself stalled.
+            state = f"the film iteration stopped after {work}; {coupled.message}"
+        else:
+            state = f"converged in {work}" + (f"; {coupled.message}" if coupled.message else "")
         blocks: list[Block] = [
             Paragraph(f"Film supports, {name}: {state}.", "text" if coupled.converged else "warn"),
             _narrowed(FILM_HEADERS, _film_rows(coupled), f"Film bearings: {name}", NARROW_FILM if narrow else None),

@@ -898,7 +898,11 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
             _condition(line, mr.condition),
             (mr.reference[0], mr.reference[1]) if mr.reference is not None else None,
         )
-    built = [_film_support(section, k, line) for k, bearing in enumerate(section.bearings) if bearing.film is not False]
+    built = [
+        _film_support(section, k, line, context.warnings)
+        for k, bearing in enumerate(section.bearings)
+        if bearing.film is not False
+    ]
     films = tuple(support for support, _ in built)
     lubricants = tuple(oil for _, oil in built)
     c = section.coupling
@@ -926,11 +930,19 @@ def build_study(section: AlignmentSection, context: BuildContext) -> AlignmentSt
 
 
 def _film_support(
-    section: AlignmentSection, k: int, line: ShaftLine
+    section: AlignmentSection, k: int, line: ShaftLine, notes: list[str] | None = None
 ) -> tuple[FilmSupport, tuple[Lubricant, float | None]]:
     """The film of ``bearings[k]`` as a domain object (errors placed under its table), with its
-    lubricant and film temperature (None for a viscosity given as such)."""
-    from shaftline.film.case import _bore, checked_surface, liner_of, lubricant_properties, solver_options
+    lubricant and film temperature (None for a viscosity given as such). ``notes``: where the
+    film's turbulence notes go (as for ``[bearing.solver]``)."""
+    from shaftline.film.case import (
+        _bore,
+        checked_surface,
+        liner_of,
+        lubricant_properties,
+        solver_options,
+        turbulence_notes,
+    )
     from shaftline.film.problem import BearingProblem
 
     bearing = section.bearings[k]
@@ -978,4 +990,8 @@ def _film_support(
     # a rename replaces the prefix too: the operating point's fields are the film table's own
     with located(where, {"operating": where, "options": f"{where}.solver"}):
         problem = BearingProblem(geometry, operating, options)
+    if notes is not None:
+        # a shared [alignment.film] table gives its note once, not once per bearing
+        fresh = turbulence_notes(film.solver, options, geometry, operating, f"alignment.{where}.solver")
+        notes.extend(note for note in fresh if note not in notes)
     return FilmSupport(bearing.name, problem, film.elements), (lubricant, film.lubricant.temperature)

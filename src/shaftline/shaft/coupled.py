@@ -50,6 +50,13 @@ __all__ = [
 ]
 
 
+#: Force mismatch (share of the film's force, :meth:`CoupledAlignment._force_residual`) above
+#: which a stalled film at its floor is out of equilibrium with the shaft and grounds: 1 %, far
+#: above the converged solutions' 1e-6 and far below the 1.6-31 (160-3100 %) of the films
+#: that ground in the tests and examples (docs/theory.md Sect. 10.1, "Contact fall-back").
+GROUNDED_FORCE_MISMATCH = 1e-2
+
+
 @dataclass(frozen=True)
 class FilmSupport:
     """A bearing of the line supported by its film.
@@ -643,11 +650,15 @@ class CoupledAlignment:
                     break
                 alpha *= 0.5
             if accepted is None:
-                grounded = self._grounded(current.s, condition)
+                mismatches = self._film_force_mismatches(current, stiffness)
+                grounded = self._grounded(current.s, step, mismatches, condition)
                 if grounded:
                     spent = (iterations, solutions * len(self._films))
-                    return self._fall_back(grounded, current, points, condition, progress, spent)
-                message = f"the coupled iteration stalled at a film mismatch of {current.norm:.3g} of the clearance"
+                    return self._fall_back(grounded, current, points, condition, progress, spent, mismatches)
+                message = (
+                    f"the coupled iteration stalled at a film mismatch of {current.norm:.3g} of the clearance, "
+                    f"force mismatch {force_residual:.3g}"
+                )
                 break
             current = accepted
             history.append(current.norm)
@@ -665,12 +676,24 @@ class CoupledAlignment:
             condition,
         )
 
-    def _grounded(self, s: np.ndarray, condition: Condition) -> list[int]:
-        """Film bearings (indices into the films) whose film is within twice its floor."""
+    def _grounded(self, s: np.ndarray, step: np.ndarray, mismatches: list[float], condition: Condition) -> list[int]:
+        """Film bearings (indices into the films) that cannot carry their share, after a stall.
+
+        A film is grounded when the stalled iteration leaves it (1) within twice its floor,
+        (2) with the Newton step, the linearised equilibrium of shaft and film, taking it
+        below its floor (the shaft asks for a thinner film than the film model may give:
+        edge loading, or asperities at their Greenwood-Tripp cap), and (3) out of equilibrium
+        with the shaft: its force would change by more than :data:`GROUNDED_FORCE_MISMATCH`
+        of itself to follow the shaft's line. A film near its floor that carries its share (a
+        lined or rough film's end rows sit there) stalls as "not converged" instead.
+        docs/theory.md Sect. 10.1, "Contact fall-back"."""
         grounded = []
-        for k, (film, (cy, cz)) in enumerate(zip(self._films, self._centre_lines(s, condition), strict=True)):
+        lines = zip(self._centre_lines(s, condition), self._centre_lines(s + step, condition), strict=True)
+        for k, (film, (now, after)) in enumerate(zip(self._films, lines, strict=True)):
             floor = film.bearing.film_floor
-            if film.bearing.min_film_of_line(cy, cz) <= 2.0 * floor:
+            near = film.bearing.min_film_of_line(*now) <= 2.0 * floor
+            below = film.bearing.min_film_of_line(*after) < floor
+            if near and below and mismatches[k] > GROUNDED_FORCE_MISMATCH:
                 grounded.append(k)
         return grounded
 
@@ -682,12 +705,14 @@ class CoupledAlignment:
         condition: Condition,
         progress: Callable[[int, float], None] | None,
         spent: tuple[int, int] = (0, 0),
+        mismatches: list[float] | None = None,
     ) -> CoupledResult:
         """Solve again with the grounded films as contact at their bore: a multi-point support
         along the bore bottom with the top of the bore as a second contact (edge loading).
 
         ``spent``: the Newton iterations and film solutions before the films grounded, counted
-        in the result's with those of the solution after it."""
+        in the result's with those of the solution after it; ``mismatches``: each film's force
+        mismatch at the stall (:meth:`_film_force_mismatches`), quoted in the message."""
         line = self.line
         bearings = list(line.bearings)
         for k in grounded:
@@ -724,9 +749,14 @@ class CoupledAlignment:
         order = {b.name: i for i, b in enumerate(line.bearings)}
         films.sort(key=lambda f: order[f.name])
         names = ", ".join(self._films[k].support.bearing for k in grounded)
+        shortfall = ""
+        if mismatches is not None:
+            worst = max(mismatches[k] for k in grounded)
+            shortfall = f" (the shaft's line asks for a film below the floor; force mismatch {worst:.3g})"
         message = (
-            f"film at its floor in {names}: the film cannot carry its share there, so the bearing was solved "
-            "as contact at the bore (edge loading); the film results are those at the floor"
+            f"film at its floor in {names}: the film cannot carry its share there{shortfall}, so the bearing was "
+            "solved as contact at the bore (edge loading); the film results are those at the last journal line "
+            "reached, at the floor (not an equilibrium)"
         )
         return CoupledResult(
             condition=result_condition,
@@ -761,10 +791,15 @@ class CoupledAlignment:
     def _force_residual(self, iterate: _Iterate, stiffness: np.ndarray) -> float:
         """Largest change of a film's resultant that moving it onto the shaft's line would cause,
         as a share of that resultant."""
+        return max(self._film_force_mismatches(iterate, stiffness))
+
+    def _film_force_mismatches(self, iterate: _Iterate, stiffness: np.ndarray) -> list[float]:
+        """Per film, the change of its resultant that moving it onto the shaft's line would
+        cause, as a share of that resultant."""
         m = iterate.s.shape[1]
         flat = np.concatenate([iterate.residual[0], iterate.residual[1]])
         change = stiffness @ flat  # nodal film force change (springs: they cancel at the fixed point)
-        worst = 0.0
+        shares = []
         for film, part, load in zip(self._films, self._slices(), iterate.loads, strict=True):
             spring = np.zeros(2 * m)
             for plane in range(2):
@@ -776,8 +811,8 @@ class CoupledAlignment:
                 [film_change[plane * m + part.start : plane * m + part.stop][0::2].sum() for plane in range(2)]
             )
             magnitude = max(float(np.hypot(*load.row_force.sum(axis=1))), 1e-30)
-            worst = max(worst, float(np.hypot(*resultant)) / magnitude)
-        return worst
+            shares.append(float(np.hypot(*resultant)) / magnitude)
+        return shares
 
     def _against_bores(self, points: ConditionResult) -> ConditionResult:
         """The point-support alignment with each film bearing's relative slope taken against

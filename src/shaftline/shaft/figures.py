@@ -149,8 +149,11 @@ def journal_in_bore(film: FilmBearingResult, *, ax: Any) -> Any:
         axes.plot(z, centre * 1e6, color="C0", lw=2, label="journal centre")
         axes.set_ylabel(f"{label} [µm]")
     top.axvline(0.5 * z[-1] + film.support_point, color="C3", ls=":", label="film resultant (support point)")
+    # h_min to 3 significant digits (a film at its floor, 0.03 µm, read "0.0 µm"); a grounded
+    # film's line is the last one reached, not an equilibrium: the title says so.
+    grounded = " (at its floor: solved as contact)" if film.contact else ""
     top.set_title(
-        f"{plain(film.name)}: journal in the bore; h_min {film.state.min_film_thickness * 1e6:.1f} µm, "
+        f"{plain(film.name)}: journal in the bore{grounded}; h_min {film.state.min_film_thickness * 1e6:.3g} µm, "
         f"support point {film.support_point * 1e3:+.0f} mm from mid-length"
     )
     top.legend(fontsize=7, loc="best")
