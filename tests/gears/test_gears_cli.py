@@ -196,6 +196,7 @@ def test_flash_method_without_iso_rating_is_refused(tmp_path):
     assert "gears.flash.method = 'iso_general'" in result.stderr and "[gears.iso]" in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
 
+
 @pytest.mark.parametrize("example", [SEED, FZG])
 def test_the_terminal_tables_fit_80_columns_a_line_a_row(example):
     # The summary's tables (seed 002's SP, then ISO's ratings at the same steps) print each row and

@@ -151,6 +151,7 @@ def test_stern_tube_aligned_on_a_layer_liner(tmp_path: Path) -> None:
         assert s[key] == pytest.approx(c[key], rel=0.01)
     assert s["force_y"] == pytest.approx(c["force_y"], rel=1e-3)
 
+
 @pytest.mark.parametrize(
     ("solver", "expected"),
     [

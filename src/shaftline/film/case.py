@@ -836,6 +836,7 @@ def layer_note(geometry: BearingGeometry, axial_nodes: int) -> str | None:
         '"Elastic layer").'
     )
 
+
 def turbulence_notes(
     solver: SolverSection,
     options: SolverOptions,
@@ -963,17 +964,6 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
     layer = layer_note(base_geometry, options.axial_nodes)
     if layer is not None:
         context.warnings.append(layer)
-    if options.turbulence == "on":
-        note = turbulence_note(base_geometry, operating, op.speed)
-        if note is not None:
-            context.warnings.append(note)
-    if options.turbulence == "off" and "turbulence_model" in section.solver.model_fields_set:
-        # a model named with turbulence left at its default: the user likely meant it to apply
-        context.warnings.append(
-            f"solver.turbulence_model = {options.turbulence_model} has no effect with turbulence = off (the "
-            "default): the film is laminar (set turbulence = on or auto)."
-        )
-
     context.warnings.extend(turbulence_notes(section.solver, options, base_geometry, operating))
     tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)
     tilt_z = _tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, length, clearance)
