@@ -10,7 +10,6 @@ bearing in a 14 m line, coarse film grid). References: the standalone bearing's 
 from __future__ import annotations
 
 import json
-import re
 from pathlib import Path
 
 import pytest
@@ -83,34 +82,24 @@ def test_bad_liner_or_surface_in_the_alignment_is_one_line(tmp_path: Path, table
 def test_seed001_rig_alignment_example(tmp_path: Path) -> None:
     """``shaftline align examples/seed001_rig_alignment_liner.toml``: the rig's stern bearing on its
     water film and polymer liner at 175 rpm. The overhung counterweight tilts the journal in its
-    1.2 m bearing and the water film cannot carry the aft edge: the coupled iteration stalls with
-    the film at its floor there, the Newton step asking for less, and the film far out of
-    equilibrium with the shaft (force mismatch 2.9, against the 1 % of the fall-back rule), so the
-    bearing is reported in contact (exit 3). The same line on a rigid, smooth bore grounds too
-    (docs/validation.md, "When a film grounds"). The asperity share at that last line is small, and
-    the report says the line is not an equilibrium."""
+    1.2 m bearing and the water film cannot carry the aft edge. While the film stopped at the mean
+    plane the coupled iteration stalled there (contact, exit 3: the edge's asperities capped at
+    K E* F_5/2(0)); with the film carried below the mean plane (docs/theory.md, "Boundary
+    lubrication") the aft edge runs in boundary lubrication, its asperities past the mean plane
+    and the liner compressed under them, and the line converges (exit 0): lambda_min between the
+    boundary limit -3 and 0 (-2.3 computed), asperities carrying more than 1 % of the load (8.4 %),
+    the liner deformed by tens of micrometres (44), the film carrying the stern bearing's share."""
     out = tmp_path / "r.json"
     result = invoke("align", str(EXAMPLES / "seed001_rig_alignment_liner.toml"), "--json", str(out))
-    assert result.exit_code == 3, result.stderr
-    (film,) = json.loads(out.read_text())["alignment"]["film_supports"][0]["films"]
-    assert film["contact"]
-    assert 5e-6 < film["max_liner_deformation"] < 20e-6
-    assert film["min_film_ratio"] < 0.1  # boundary lubrication at the ends
-    # Small at the last line reached: the edge row that cannot carry is half a cell wide.
-    assert film["asperity_load_share"] < 0.01
-    # The terminal line under the film table counts the work done before the film grounded and
-    # says what was solved instead (it read "converged in 0 iterations (0 film solutions)", then
-    # "converged in 1 iterations (1 film solutions)" of a film iteration that had stalled).
+    assert result.exit_code == 0, result.stderr
     support = json.loads(out.read_text())["alignment"]["film_supports"][0]
-    assert support["iterations"] >= 1 and support["film_solutions"] >= 1
-    text = " ".join(result.stdout.split())
-    n, m = support["iterations"], support["film_solutions"]
-    work = f"{n} iteration{'s' * (n != 1)} ({m} film solution{'s' * (m != 1)})"
-    assert f"Film supports, base: the film iteration stopped after {work}; film at its floor in stern" in text
-    assert "converged in" not in text
-    mismatch = float(re.search(r"force mismatch ([0-9.eE+-]+)\)", support["message"]).group(1))
-    assert mismatch > 0.01
-    assert "stern (at the last journal line before the fall-back to contact, not an equilibrium)" in text
+    assert support["converged"]
+    (film,) = support["films"]
+    assert not film["contact"]
+    assert -3.0 < film["min_film_ratio"] < 0.0  # boundary lubrication at the aft edge
+    assert 0.01 < film["asperity_load_share"] < 0.5
+    assert 5e-6 < film["max_liner_deformation"] < 100e-6
+    assert "Film supports, base: converged in" in " ".join(result.stdout.split())
 
 
 def test_turbulence_in_the_alignment_film_is_reported(tmp_path: Path) -> None:

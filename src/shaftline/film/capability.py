@@ -473,6 +473,11 @@ def _stribeck_table(result: BearingStudyResult) -> Table:
         ["at [rpm]", fmt(curve.speed[lowest] * 30 / math.pi)],
         ["speeds in contact (load not carried)", str(int(curve.contact.sum()))],
     ]
+    # A rough film that stalls above its boundary limit is not contact (docs/theory.md, "Boundary
+    # lubrication"): said apart, so that a curve with such speeds is not read as all converged.
+    stalled = int((~curve.converged.astype(bool) & ~curve.contact.astype(bool)).sum())
+    if stalled:
+        rows.append(["speeds not converged (above the contact limit)", str(stalled)])
     if curve.max_reynolds_number is not None and curve.turbulent is not None:
         import numpy as np
 

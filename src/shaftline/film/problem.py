@@ -317,8 +317,9 @@ class SolverOptions:
     min_film_floor : float
         Smallest film, as a share of the radial clearance, that the equilibrium search
         may approach; below it the load is reported as not carried (contact). With rough
-        surfaces (``geometry.surface``) the floor is at most 2 % of the composite roughness,
-        so that the asperities take their share first (docs/theory.md Sect. 17).
+        surfaces (``geometry.surface``) the film may instead pass the mean plane down to
+        ``-3 sigma``, the asperities carrying the load (docs/theory.md Sect. 17, "Boundary
+        lubrication"); this share then only sets how the mean plane is first approached.
     tolerance : float
         Relative force residual at which the equilibrium is accepted.
     max_iterations : int

@@ -922,5 +922,8 @@ def _marched_film_fraction(film: np.ndarray, cavitated: np.ndarray) -> np.ndarra
     rows = np.arange(nz)[:, None]
     has_source = last_full > -(5 * nt)
     source = np.where(has_source, last_full % nt, 0)
-    fraction = np.where(has_source, film[rows, source] / film, 1.0)
+    # A rough film may close past the mean plane (h <= 0, boundary lubrication): the gap there is
+    # the asperities' valleys, full (fraction 1), never a negative share.
+    has_source = has_source & (film > 0.0)
+    fraction = np.where(has_source, film[rows, source] / np.where(has_source, film, 1.0), 1.0)
     return np.where(full, 1.0, np.clip(fraction, 0.0, 1.0))

@@ -39,8 +39,13 @@ __all__ = [
     "RoughFilm",
     "SurfacePreset",
     "SurfaceRoughness",
+    "BOUNDARY_LIMIT",
+    "LAMBDA_SWITCH",
     "asperity_pressure",
     "asperity_pressure_derivative",
+    "boundary_flow_factor",
+    "boundary_flow_factor_derivative",
+    "boundary_shear_factor",
     "contact_area_ratio",
     "gaussian_integral",
     "gaussian_integral_fit",
@@ -248,17 +253,26 @@ def gaussian_integral_fit(lam: np.ndarray | float) -> np.ndarray:
 
 #: Knot spacing of the tables of F_n the solver evaluates (:func:`gaussian_integral_table`).
 TABLE_STEP = 0.02
+#: Lowest film-thickness ratio ``h / sigma`` the tables of F_n cover (the mean planes 4 sigma
+#: past each other); the equilibrium stops at :data:`BOUNDARY_LIMIT` above it.
+TABLE_LOWEST = -4.0
+#: Lowest film-thickness ratio an equilibrium may reach (boundary lubrication, the mean planes
+#: 3 sigma past each other): there the Greenwood-Tripp contact-area ratio
+#: ``pi^2 (sigma beta eta)^2 F_2(-3)`` is 16 % with the default sigma beta eta = 0.04 (and F_5/2
+#: 30 times its value at h = 0); beyond it the independent-asperity model is not used
+#: (docs/theory.md, "Boundary lubrication").
+BOUNDARY_LIMIT = -3.0
 
 
 @lru_cache(maxsize=8)
 def gaussian_integral_table(order: float) -> Any:
     """``F_n`` on ``[0, THICK_FILM_RATIO]`` as a cubic Hermite spline through exact values and
-    slopes (``dF_n/dlam = -n F_{n-1}``) every :data:`TABLE_STEP`; zero above, and below 0 the
-    spline's end value is not used (the film is positive). The exact function costs about
-    8 us a node (``pbdv``); the table about 0.1 us, and it differs from it by less than 1e-9 of
-    ``F_n(0)`` (7e-10 measured; its slope 1e-7; tests/film/test_roughness.py). Its derivative
-    (``table(lam, 1)``) is that of the same function, so the equilibrium's Jacobian stays exact
-    for what the solver evaluates."""
+    slopes (``dF_n/dlam = -n F_{n-1}``) every :data:`TABLE_STEP`; zero above. The exact function
+    costs about 8 us a node (``pbdv``); the table about 0.1 us, and it differs from it by less
+    than 1e-9 of ``F_n(0)`` (7e-10 measured; its slope 1e-7; tests/film/test_roughness.py). Its
+    derivative (``table(lam, 1)``) is that of the same function, so the equilibrium's Jacobian
+    stays exact for what the solver evaluates. Negative ratios (the mean planes past each
+    other, boundary lubrication) have their own table, :func:`gaussian_integral_table_below`."""
     from scipy.interpolate import CubicHermiteSpline
 
     knots = np.arange(0.0, THICK_FILM_RATIO + TABLE_STEP, TABLE_STEP)
@@ -266,14 +280,34 @@ def gaussian_integral_table(order: float) -> Any:
     return CubicHermiteSpline(knots, gaussian_integral(order, knots), slopes, extrapolate=True)
 
 
+@lru_cache(maxsize=8)
+def gaussian_integral_table_below(order: float) -> Any:
+    """``F_n`` on ``[TABLE_LOWEST, 0]`` as :func:`gaussian_integral_table` (exact values and slopes
+    every :data:`TABLE_STEP`): a table of its own so that the table of positive ratios, and with
+    it every film above the mean plane, is the one it was (bit for bit). The two meet at 0 in
+    value and slope (both exact there)."""
+    from scipy.interpolate import CubicHermiteSpline
+
+    count = round(-TABLE_LOWEST / TABLE_STEP)
+    knots = np.linspace(TABLE_LOWEST, 0.0, count + 1)
+    slopes = -order * gaussian_integral(order - 1.0, knots)
+    return CubicHermiteSpline(knots, gaussian_integral(order, knots), slopes, extrapolate=True)
+
+
 def _tabulated(order: float, lam: np.ndarray, derivative: bool = False) -> np.ndarray:
-    """``F_n(lam)`` (or its derivative) from :func:`gaussian_integral_table`, zero above the table."""
+    """``F_n(lam)`` (or its derivative) from the tables, zero above :data:`THICK_FILM_RATIO`:
+    :func:`gaussian_integral_table` for ``lam >= 0``, :func:`gaussian_integral_table_below` for
+    negative ratios (held at :data:`TABLE_LOWEST` below it)."""
     lam = np.asarray(lam, dtype=float)
     out = np.zeros(lam.shape)
     near = lam < THICK_FILM_RATIO
     if np.any(near):
         table = gaussian_integral_table(order)
         out[near] = table(np.maximum(lam[near], 0.0), 1 if derivative else 0)
+    below = lam < 0.0
+    if np.any(below):
+        table = gaussian_integral_table_below(order)
+        out[below] = table(np.maximum(lam[below], TABLE_LOWEST), 1 if derivative else 0)
     return out
 
 
@@ -360,6 +394,68 @@ def lubrication_regime(lam: float) -> str:
     return "full film"
 
 
+# -- flow below the mean plane (boundary lubrication) ------------------------------------------
+#: Film-thickness ratio below which the flow continues past Patir & Cheng's fits (which hold for
+#: ``lam > 0.5`` and were kept down to the former film floor 0.02 sigma): at and above it the
+#: flow is the one of before, bit for bit, so every equilibrium that stayed above the floor is
+#: unchanged. docs/theory.md, "Boundary lubrication".
+LAMBDA_SWITCH = 0.02
+#: Share of the pressure flow factor on the mean gap at :data:`LAMBDA_SWITCH` that is left far
+#: below it: the regularisation of a gap past its percolation threshold (no connected path for
+#: the pressure flow, Harp & Salant 2001) that keeps the film equation's matrix definite.
+PERCOLATED_SHARE = 0.5
+
+
+def _normal_cdf(lam: float) -> float:
+    return 0.5 * (1.0 + math.erf(lam / math.sqrt(2.0)))
+
+
+def _switch_constants() -> tuple[float, float, float, float]:
+    """``(psi_s, k, Phi_s(lam_s), q)``: the continuation below :data:`LAMBDA_SWITCH` matched in
+    value and slope to ``lam^3 phi_x`` and ``Phi_s`` there (docs/theory.md)."""
+    lam = LAMBDA_SWITCH
+    cdf = _normal_cdf(lam)
+    gap = lam * cdf + math.exp(-0.5 * lam * lam) / math.sqrt(2.0 * math.pi)
+    phi_x = 1.0 - _PC_C * math.exp(-_PC_R * lam)
+    slope_phi_x = _PC_C * _PC_R * math.exp(-_PC_R * lam)
+    psi_s = lam**3 * phi_x / gap**3
+    # d ln(lam^3 phi_x)/dlam = d ln(h_T^3 psi)/dlam at lam_s fixes psi's log-slope.
+    log_slope_psi = 3.0 / lam + slope_phi_x / phi_x - 3.0 * cdf / gap
+    k = log_slope_psi / (1.0 - PERCOLATED_SHARE)
+    shear = _PS_A1 * lam**_PS_ALPHA1 * math.exp(-_PS_ALPHA2 * lam + _PS_ALPHA3 * lam * lam)
+    log_slope_shear = _PS_ALPHA1 / lam - _PS_ALPHA2 + 2.0 * _PS_ALPHA3 * lam
+    q = log_slope_shear * gap / cdf
+    return psi_s, k, shear, q
+
+
+_PSI_S, _PSI_K, _SHEAR_S, _SHEAR_Q = _switch_constants()
+_GAP_S = LAMBDA_SWITCH * _normal_cdf(LAMBDA_SWITCH) + math.exp(-0.5 * LAMBDA_SWITCH**2) / math.sqrt(2.0 * math.pi)
+
+
+def boundary_flow_factor(lam: np.ndarray) -> np.ndarray:
+    """Pressure flow factor on the mean gap below :data:`LAMBDA_SWITCH`,
+    ``psi = psi_s (a + (1 - a) exp(k (lam - lam_s)))`` with ``a`` = :data:`PERCOLATED_SHARE`:
+    the pressure flow there is ``h_T^3 psi`` (over ``sigma^3``), equal in value and slope to
+    ``h^3 phi_x`` at ``lam_s`` and tending to ``a psi_s h_T^3`` as the gap closes."""
+    lam = np.asarray(lam, dtype=float)
+    return _PSI_S * (
+        PERCOLATED_SHARE + (1.0 - PERCOLATED_SHARE) * np.exp(_PSI_K * np.minimum(lam - LAMBDA_SWITCH, 0.0))
+    )
+
+
+def boundary_flow_factor_derivative(lam: np.ndarray) -> np.ndarray:
+    """``d psi / d lam`` (of :func:`boundary_flow_factor`, on its range ``lam <= lam_s``)."""
+    lam = np.asarray(lam, dtype=float)
+    return _PSI_S * (1.0 - PERCOLATED_SHARE) * _PSI_K * np.exp(_PSI_K * np.minimum(lam - LAMBDA_SWITCH, 0.0))
+
+
+def boundary_shear_factor(gap: np.ndarray) -> np.ndarray:
+    """``Phi_s`` below :data:`LAMBDA_SWITCH` as a power of the mean gap, ``Phi_s(lam_s) (h_T /
+    h_T(lam_s))^q`` (value and slope matched at ``lam_s``): it vanishes with the mean gap, faster
+    than it, so the transport ``h_T + w Phi_s`` (|w| <= 1) stays positive."""
+    return _SHEAR_S * (np.minimum(np.asarray(gap, dtype=float), _GAP_S) / _GAP_S) ** _SHEAR_Q
+
+
 class FilmFlow(Protocol):
     """What the film equation takes from a non-smooth flow model (:class:`RoughFilm`, or a
     turbulent film, :class:`shaftline.film.turbulence.TurbulentFilm`): the pressure-flow
@@ -392,13 +488,27 @@ class RoughFilm:
     shear_weight: float
 
     def conductance(self, film: np.ndarray) -> np.ndarray:
-        """``H^3 phi_x(H / sigma)`` of face films ``H``."""
-        return film**3 * pressure_flow_factor(film / self.sigma)
+        """``H^3 phi_x(H / sigma)`` of face films ``H``; below ``lam_s`` (:data:`LAMBDA_SWITCH`,
+        films down to the boundary regime, ``H <= 0`` included) ``(h_T/c)^3 psi`` on the mean gap
+        (:func:`boundary_flow_factor`): positive for every film."""
+        lam = film / self.sigma
+        above = film**3 * pressure_flow_factor(lam)
+        if np.all(lam >= LAMBDA_SWITCH):
+            return above
+        gap = self.sigma * mean_gap(lam)
+        return np.where(lam >= LAMBDA_SWITCH, above, gap**3 * boundary_flow_factor(lam))
 
     def conductance_derivative(self, film: np.ndarray) -> np.ndarray:
-        """``d(H^3 phi_x) / dH``."""
+        """``d(H^3 phi_x) / dH`` (below ``lam_s``: ``d((h_T/c)^3 psi) / dH``)."""
         lam = film / self.sigma
-        return 3.0 * film**2 * pressure_flow_factor(lam) + film**3 * pressure_flow_factor_derivative(lam) / self.sigma
+        above = 3.0 * film**2 * pressure_flow_factor(lam) + film**3 * pressure_flow_factor_derivative(lam) / self.sigma
+        if np.all(lam >= LAMBDA_SWITCH):
+            return above
+        gap = self.sigma * mean_gap(lam)
+        below = 3.0 * gap**2 * mean_gap_derivative(lam) * boundary_flow_factor(lam) + gap**3 * (
+            boundary_flow_factor_derivative(lam) / self.sigma
+        )
+        return np.where(lam >= LAMBDA_SWITCH, above, below)
 
     def axial_conductance(self, film: np.ndarray) -> np.ndarray:
         """``H^3 phi_z`` of z-face films: ``phi_z = phi_x`` for isotropic roughness."""
@@ -409,14 +519,24 @@ class RoughFilm:
         return self.conductance_derivative(film)
 
     def transport(self, film: np.ndarray) -> np.ndarray:
-        """Couette transport of face films ``H`` over that of a smooth film, ``h_T/c + (sigma/c) w Phi_s``."""
+        """Couette transport of face films ``H`` over that of a smooth film, ``h_T/c + (sigma/c) w Phi_s``
+        (``Phi_s`` continued below ``lam_s`` by :func:`boundary_shear_factor`)."""
         lam = film / self.sigma
-        return self.sigma * (mean_gap(lam) + self.shear_weight * shear_flow_factor(lam))
+        gap = mean_gap(lam)
+        shear = shear_flow_factor(lam)
+        if not np.all(lam >= LAMBDA_SWITCH):
+            shear = np.where(lam >= LAMBDA_SWITCH, shear, boundary_shear_factor(gap))
+        return self.sigma * (gap + self.shear_weight * shear)
 
     def transport_derivative(self, film: np.ndarray) -> np.ndarray:
         """``d transport / dH``."""
         lam = film / self.sigma
-        return mean_gap_derivative(lam) + self.shear_weight * shear_flow_factor_derivative(lam)
+        slope = shear_flow_factor_derivative(lam)
+        if not np.all(lam >= LAMBDA_SWITCH):
+            gap = mean_gap(lam)
+            below = _SHEAR_Q * boundary_shear_factor(gap) * mean_gap_derivative(lam) / gap
+            slope = np.where(lam >= LAMBDA_SWITCH, slope, below)
+        return mean_gap_derivative(lam) + self.shear_weight * slope
 
     def squeeze_factor(self, film: np.ndarray) -> np.ndarray:
         """``dh_T / dh = Phi(H / sigma)`` of node films: the squeeze acts on the mean gap."""

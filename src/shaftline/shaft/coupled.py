@@ -691,7 +691,8 @@ class CoupledAlignment:
         lines = zip(self._centre_lines(s, condition), self._centre_lines(s + step, condition), strict=True)
         for k, (film, (now, after)) in enumerate(zip(self._films, lines, strict=True)):
             floor = film.bearing.film_floor
-            near = film.bearing.min_film_of_line(*now) <= 2.0 * floor
+            # Within the floor's own size above it (a rough film's floor is below the mean plane).
+            near = film.bearing.min_film_of_line(*now) <= floor + abs(floor)
             below = film.bearing.min_film_of_line(*after) < floor
             if near and below and mismatches[k] > GROUNDED_FORCE_MISMATCH:
                 grounded.append(k)
