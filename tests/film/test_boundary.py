@@ -182,3 +182,24 @@ def test_seed001_lined_rig_runs_through_boundary_lubrication_towards_full_film()
     cap = float(asperity_pressure(surface, np.zeros(1))[0])
     assert states[0].max_asperity_pressure > 1.5 * cap
     assert states[0].min_film_thickness > BOUNDARY_LIMIT * surface.sigma
+
+
+def test_seed001_rigid_rig_carries_its_load_below_the_mean_plane_at_15_rpm() -> None:
+    # examples/seed001_water_rig.toml (rigid, rough) at 15 rpm ended in contact (residual 4 % of
+    # the load, the asperities saturated at K E* F_5/2(0)); now it converges just below the mean
+    # plane, in boundary lubrication, the asperities above their former cap and carrying a larger
+    # share than at the seed's 35 rpm, which is unchanged (lambda 0.497, as before).
+    case = load_case(ROOT / "examples" / "seed001_water_rig.toml").studies["bearing"].cases[0]
+    surface = case.geometry.surface
+    assert surface is not None
+    states = []
+    for rpm in (15, 35):
+        bearing = JournalBearing(case.geometry, replace(case.operating, speed=rpm * math.pi / 30), case.options)
+        eq = bearing.equilibrium(case.load_y, case.load_z)
+        assert eq.converged and not eq.contact, rpm
+        states.append(eq.state)
+    slow, seed = states
+    assert slow.min_film_ratio < 0.0 < seed.min_film_ratio
+    assert seed.min_film_ratio == pytest.approx(0.497, abs=1e-3)
+    assert slow.max_asperity_pressure > float(asperity_pressure(surface, np.zeros(1))[0])
+    assert slow.asperity_load_share > seed.asperity_load_share
