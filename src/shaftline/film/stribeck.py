@@ -134,6 +134,13 @@ def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float
             initial=None if previous is None else previous.position,
             initial_cavitated=None if previous is None else previous.cavitated,
         )
+        if previous is not None and not (equilibrium.converged and not equilibrium.contact):
+            # A warm start from a neighbour in boundary lubrication (its film below the mean plane)
+            # can keep the journal there when this speed's film is thicker, or stall: the cold start
+            # then (docs/theory.md Sect. 17, "Boundary lubrication"), kept if it converges.
+            cold = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
+            if cold.converged and not cold.contact:
+                equilibrium = cold
         state = equilibrium.state
         if equilibrium.converged and not equilibrium.contact:
             previous = state
