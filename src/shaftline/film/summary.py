@@ -71,7 +71,14 @@ FIELDS: list[tuple[str, str, str, Callable[[BearingState], Any]]] = [
     ),
     ("side_leakage", "m^3/s", "net flow out through both bearing edges", lambda s: s.side_leakage),
     ("sommerfeld_number", "-", "(R/c)^2 eta N / P, N in rev/s", lambda s: s.sommerfeld_number),
-    ("contact", "-", "true when the film reaches the solver's film floor", lambda s: s.contact),
+    (
+        "contact",
+        "-",
+        "true when the film reaches the solver's film floor (rough surfaces: the boundary limit 3σ "
+        "below the mean plane; h_min, the mean-plane separation, is negative in boundary "
+        "lubrication: docs/theory.md Sect. 17)",
+        lambda s: s.contact,
+    ),
 ]
 
 
