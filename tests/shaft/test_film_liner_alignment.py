@@ -210,3 +210,24 @@ def test_a_start_the_liner_cannot_hold_is_a_clear_solver_failure(tmp_path: Path,
     assert code == 3 and not data
     text = " ".join(stderr.split())
     assert text.startswith("not solved: film-supported alignment: the elastic liner of aft stern tube does not settle")
+
+
+def test_under_resolved_layer_liner_in_the_alignment_is_noted(tmp_path: Path) -> None:
+    # `[alignment.bearings.film.liner]` with model = "layer" gets the note `[bearing.liner]` gets
+    # (tests/film/test_layer_film.py) when the axial step is above half the liner thickness,
+    # named under its own table: 1.05 m on 41 rows is a 26.25 mm step against a 10 mm rubber
+    # liner, which needs ceil(1.05 / 0.005) + 1 = 211 rows. On 211 rows (5 mm) and with the
+    # column model (no end effect to resolve) there is no note.
+    from shaftline.cases.loader import load_case
+
+    def notes(film: str) -> list[str]:
+        path = tmp_path / "line.toml"
+        path.write_text(LINE.replace("FILM", film).replace("MOMENT", "-409948 N*m"))
+        return [text for text in load_case(path).warnings if "liner.model = layer" in text]
+
+    layer = OWN_FILM + '  liner = { preset = "rubber", model = "layer" }\n'
+    (note,) = notes(layer)
+    assert note.startswith("alignment.bearings[0].film.liner.model = layer with an axial step of 26.3 mm")
+    assert "set alignment.bearings[0].film.solver.axial_nodes to 211 or more" in note
+    assert notes(layer.replace("axial_nodes = 41", "axial_nodes = 211")) == []
+    assert notes(OWN_FILM + '  liner = { preset = "rubber" }\n') == []
