@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 import numpy as np
 import typer
 
-from shaftline.commandline import JsonOption, OutOption, StrictOption
+from shaftline.commandline import JsonOption, OutOption, strict_help
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
 
@@ -62,7 +62,18 @@ def scuffing_command(
     ] = None,
     json_path: JsonOption = None,
     out: OutOption = None,
-    strict: StrictOption = False,
+    strict: Annotated[
+        bool,
+        typer.Option(
+            "--strict",
+            # what GearScuffing.findings judges, with and without ``criterion``
+            help=strict_help(
+                "seed 002's scuffing parameter SP exceeds 1 or ISO/TS 6336-20's S_B falls below 1 at a torque-speed "
+                "step",
+                "seed 002's thermal correction clipped to 0 beyond its fit range (SP understated: no result)",
+            ),
+        ),
+    ] = False,
 ) -> None:
     """Scuffing of a gear pair along the mesh: seed 002's scuffing parameter beside ISO/TS 6336-20."""
     from shaftline.commandline import run_cases

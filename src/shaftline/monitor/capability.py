@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from shaftline.commandline import JsonOption, OutOption, StrictOption
+from shaftline.commandline import JsonOption, OutOption, strict_help
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table
 
@@ -42,6 +42,10 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             "Synthetic probe recordings of seed 001's rig from the bearing solver and the shaft model, identified "
             "(orbits, film round the sections and along the bearing, regimes) and compared with the truth.",
             options={"task": "simulate"},
+            # what FilmMonitor.findings judges of a simulation (the recording findings are identify's)
+            strict=strict_help(
+                "the bearing solver finds no film carrying the load above its floor at a simulated speed"
+            ),
         ),
     )
 
@@ -681,6 +685,20 @@ def _identified_blocks(identified: Identified, levels: tuple[float, float], layo
     return blocks
 
 
+#: ``--strict`` of ``monitor identify``: what FilmMonitor.findings judges of recordings.
+IdentifyStrict = Annotated[
+    bool,
+    typer.Option(
+        "--strict",
+        help=strict_help(
+            "a lambda alarm is raised (the film parameter below [monitor.identify] lambda_threshold for "
+            "alarm_duration or longer)",
+            "a window that could not be identified (rejected)",
+        ),
+    ),
+]
+
+
 def identify_command(
     case_file: Annotated[Path, typer.Argument(help="Case file (TOML) with the [monitor] probes.")],
     recordings: Annotated[
@@ -713,7 +731,7 @@ def identify_command(
     ] = False,
     json_path: JsonOption = None,
     out: OutOption = None,
-    strict: StrictOption = False,
+    strict: IdentifyStrict = False,
 ) -> None:
     """Identify probe recordings window by window (orbits, film, regimes) into the trend database;
     Ctrl-C keeps every window stored and the same command resumes."""

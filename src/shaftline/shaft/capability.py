@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from shaftline.commandline import strict_help
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Details, Figure, Heading, Paragraph, Table, fmt
 
@@ -288,7 +289,18 @@ def _narrowed(headers: list[str], rows: list[list[str]], title: str, keep: tuple
 class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "AlignmentResult"]):
     key = "alignment"
     title = "Shaft alignment"
-    verbs = (Verb(("align",), "Shaft alignment: elastic line, reactions, slopes, influence matrix and rule checks."),)
+    verbs = (
+        Verb(
+            ("align",),
+            "Shaft alignment: elastic line, reactions, slopes, influence matrix and rule checks.",
+            # what ShaftAlignment.findings judges, with and without ``criterion``
+            strict=strict_help(
+                "a class-rule check fails (also with the optimised offsets), the offset optimisation sits on its "
+                "bound, or a film bearing is below its film limit at the operating speed (minimum speed)",
+                "a film-supported alignment that does not converge or a film at its floor (solved as contact)",
+            ),
+        ),
+    )
     moved_tables = {
         "shaft": "alignment.shaft",
         "bearings": "alignment.bearings",
