@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
@@ -23,9 +24,9 @@ from shaftline.cases import load_case
 from shaftline.errors import InputError
 from shaftline.film import BearingGeometry, JournalBearing
 from shaftline.film.bearing import LINER_TOLERANCE
-from shaftline.film.elastic import film_residual_jacobian
+from shaftline.film.elastic import CoupledOrderings, LinerSystem, film_operator, film_residual_jacobian
 from shaftline.film.liner import LINER_PRESETS, Liner
-from shaftline.film.reynolds import apply_operator, stencil_derivative
+from shaftline.film.reynolds import apply_operator, build_stencil, stencil_derivative
 from shaftline.film.roughness import RoughFilm, SurfaceRoughness, asperity_pressure
 from tests.conftest import invoke
 
@@ -125,6 +126,44 @@ def test_film_residual_jacobian_is_the_stencil_derivative(rough: bool) -> None:
         dc_theta, dc_z, d_rhs = stencil_derivative(film, change, 0.5, 0.2, film_model, rate)
         expected = apply_operator(dc_theta, dc_z, pressure) - d_rhs
         np.testing.assert_allclose(jacobian @ change.ravel(), expected.ravel(), rtol=1e-12, atol=1e-12)
+
+
+@pytest.mark.parametrize("rough", [False, True])
+def test_coupled_matrix_in_a_kept_ordering_is_the_sparse_sum(rough: bool) -> None:
+    # The coupled Newton matrix (A + B diag(K/M)) on the free nodes is assembled on the grid's
+    # five-point pattern and factorised in an ordering kept per free set (elastic.py): its
+    # Newton step must be that of the matrix formed by sparse arithmetic from film_operator
+    # and film_residual_jacobian (both checked above), solved densely, to round-off (1e-10 of
+    # the step: the matrix's condition number here is ~1e3); the second build of the same
+    # free set factorises in the kept order (SuperLU's permutation then the identity).
+    rng = np.random.default_rng(5)
+    shape = (7, 12)
+    film = 0.3 + rng.random(shape)
+    pressure = rng.random(shape)
+    rate = rng.standard_normal(shape)
+    film_model = RoughFilm(0.2, 1.0) if rough else None
+    held = rng.random(shape) < 0.3
+    diagonal = 1.0 + rng.random(shape)
+    coupling = 0.7
+    stencil = build_stencil(film, 0.5, 0.2, rate, film_model)
+    matrix = film_operator(stencil) + film_residual_jacobian(film, pressure, 0.5, 0.2, film_model, rate) @ sp.diags(
+        coupling / diagonal.ravel()
+    )
+    free = ~held.ravel()
+    dense = matrix.toarray()[np.ix_(free, free)]
+    residual = rng.standard_normal(shape)
+    jacobian = film_residual_jacobian(film, pressure, 0.5, 0.2, film_model, rate)
+    expected = np.zeros(free.size)
+    expected[free] = np.linalg.solve(dense, (jacobian @ (residual.ravel() / diagonal.ravel()))[free])
+    orderings = CoupledOrderings()
+    args = (stencil, film, pressure, held, 0.5, 0.2, film_model, rate, coupling, diagonal)
+    for build in range(2):
+        system = LinerSystem.build(*args, orderings)
+        d_pressure, d_deformation = system.step(residual)
+        np.testing.assert_allclose(d_pressure, expected, rtol=0, atol=1e-10 * np.abs(expected).max())
+        np.testing.assert_allclose(d_deformation, (coupling * expected - residual.ravel()) / diagonal.ravel())
+        assert len(orderings) == 1
+        assert np.array_equal(system.factor.perm_c, np.arange(free.sum())) == (build == 1)
 
 
 @pytest.mark.parametrize("rough", [False, True])

@@ -24,7 +24,7 @@ import numpy as np
 
 from shaftline.errors import InputError, SolverFailure, require_finite
 from shaftline.film.analytic import eccentricity_guess
-from shaftline.film.elastic import LayerSystem, LinerSystem
+from shaftline.film.elastic import CoupledOrderings, LayerSystem, LinerSystem
 from shaftline.film.extremes import local_extreme
 from shaftline.film.geometry import (
     BearingGeometry,
@@ -504,6 +504,9 @@ class _SolverState:
         self.last_deformation: np.ndarray | None = None
         #: The layer model's compliance on this grid (built on first use; film/layer.py).
         self.layer: ElasticLayer | None = None
+        #: Orderings of the coupled film-liner matrix per free set (film/elastic.py), cleared
+        #: with the deformation where a result must not depend on earlier calls.
+        self.orderings = CoupledOrderings()
         nz, nt = grid.shape
         fixed = np.zeros(grid.shape, dtype=bool)
         value = np.zeros(grid.shape)
@@ -607,6 +610,7 @@ class JournalBearing:
             shared.coarse_bearing = None
             shared.last_cavitated = None
             shared.last_deformation = None
+            shared.orderings = CoupledOrderings()
             shared.reynolds.drop_factors()
             other._cache = shared
         return other
@@ -914,6 +918,7 @@ class JournalBearing:
                     slope,
                     self.pressure_scale,
                     c,
+                    cache.orderings,
                 )
                 return evaluation.liner_system
             diagonal = (
@@ -933,6 +938,7 @@ class JournalBearing:
                 evaluation.rate,
                 liner.compliance * self.pressure_scale / c,
                 diagonal,
+                cache.orderings,
             )
         return evaluation.liner_system
 
@@ -1469,6 +1475,7 @@ class JournalBearing:
         # equilibrium then depends only on the problem and its arguments.
         self._solver_state().last_cavitated = None
         self._solver_state().last_deformation = None
+        self._solver_state().orderings.clear()
         evaluation = self._evaluate(position, start=self._start_set(initial_cavitated))
         residual = evaluation.force + load
         contact = False
