@@ -20,13 +20,14 @@ import scipy.sparse as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
+import shaftline.film.bearing as bearing_module
 from shaftline.cases import load_case
 from shaftline.errors import InputError
 from shaftline.film import BearingGeometry, JournalBearing
 from shaftline.film.bearing import LINER_TOLERANCE
 from shaftline.film.elastic import CoupledOrderings, LinerSystem, film_operator, film_residual_jacobian
 from shaftline.film.liner import LINER_PRESETS, Liner
-from shaftline.film.reynolds import apply_operator, build_stencil, stencil_derivative
+from shaftline.film.reynolds import ReynoldsSolver, apply_operator, build_stencil, stencil_derivative
 from shaftline.film.roughness import RoughFilm, SurfaceRoughness, asperity_pressure
 from tests.conftest import invoke
 
@@ -190,6 +191,41 @@ def test_film_liner_jacobian_matches_central_differences(ntua, rough: bool) -> N
     numeric = np.column_stack(columns)
     scale = np.abs(numeric).max()
     assert np.abs(jacobian - numeric).max() <= 5e-3 * scale
+
+
+def test_fixed_nodes_settled_node_by_node_save_film_solutions(ntua, monkeypatch) -> None:  # noqa: ANN001
+    # On the fixed-pressure nodes (the bearing's ends) of a column liner the liner equation
+    # involves the node's own deformation only, through the asperity pressure (docs/theory.md,
+    # "Elastic liner"): solved there by a scalar Newton iteration before each film solution,
+    # the equilibrium needs fewer film solutions and reaches the same position (within 1e-6 of
+    # the clearance, as from another start: test_lined_equilibrium_does_not_depend_on_its_start)
+    # with the column law met node by node. Seed 001's polymer liner at 1 rpm, where the
+    # asperities at the aft end carry ~1 MPa.
+    surface = SurfaceRoughness.preset("turned_steel_white_metal")
+    geometry = replace(ntua.geometry, surface=surface, liner=Liner.preset("polymer_composite"))
+    bearing = JournalBearing(geometry, replace(ntua.operating, speed=np.pi / 30), ntua.options)
+    count = [0]
+    solve = ReynoldsSolver.solve
+
+    def counted(self, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
+        count[0] += 1
+        return solve(self, *args, **kwargs)
+
+    monkeypatch.setattr(ReynoldsSolver, "solve", counted)
+    settled = bearing.equilibrium(ntua.load_y, ntua.load_z)
+    settled_solutions = count[0]
+    monkeypatch.setattr(bearing_module, "FIXED_ITERATIONS", 0)
+    count[0] = 0
+    plain = bearing.equilibrium(ntua.load_y, ntua.load_z)
+    assert settled.converged and plain.converged
+    assert settled_solutions < count[0]
+    c = ntua.geometry.radial_clearance
+    assert abs(settled.state.position.ey - plain.state.position.ey) <= 1e-6 * c
+    assert abs(settled.state.position.ez - plain.state.position.ez) <= 1e-6 * c
+    st = settled.state
+    assert st.liner_deformation is not None and st.asperity_pressure is not None
+    law = geometry.liner.compliance * (st.pressure + st.asperity_pressure)
+    assert np.abs(st.liner_deformation - law).max() <= LINER_TOLERANCE * c
 
 
 @pytest.mark.parametrize("name", ["white_metal", "polymer_composite"])
