@@ -91,3 +91,50 @@ def test_a_film_within_three_roughnesses_is_mixed_lubrication(tmp_path):
     assert any("mixed lubrication" in t for t in texts), texts
     case.write_text(MINIMAL_CASE)
     assert invoke("bearing", "solve", str(case), "--json", "-").exit_code == 0  # default 2.2 µm: 6.6 µm < h_min
+
+
+def _strict_helps() -> dict[str, str]:
+    """``--strict`` help of every command that has the option, by command line."""
+    import typer
+
+    from shaftline.cli import make_app
+
+    def commands(command, path):
+        for name, sub in (getattr(command, "commands", None) or {}).items():
+            yield from commands(sub, [*path, name])
+        if not getattr(command, "commands", None):
+            yield " ".join(path), command
+
+    helps = {}
+    for path, command in commands(typer.main.get_command(make_app()), []):
+        for parameter in command.params:
+            if "--strict" in parameter.opts:
+                helps[path] = " ".join(parameter.help.split())
+    return helps
+
+
+def test_each_verb_says_what_strict_judges_there():
+    # `--strict` had one text on every verb ("a rule check, an allowable wear"); each verb's own
+    # now names what its capability's findings judge as design criteria (then exit 3) and what
+    # exits with 3 without it. The generic text is `run`'s alone, and verbs of different
+    # capabilities never share one.
+    helps = _strict_helps()
+    assert len(helps) >= 13
+    generic = helps.pop("run")
+    assert "each verb's --strict help names its own" in generic
+    assert all(text != generic for text in helps.values())
+    assert helps["bearing solve"] == helps["bearing stribeck"] and helps["cpp fretting"] == helps["cpp motion"]
+    distinct = {helps[path] for path in ("align", "bearing solve", "contact ehl", "cpp fretting", "gears scuffing")}
+    distinct |= {helps[f"monitor {verb}"] for verb in ("simulate", "identify")}
+    distinct |= {helps[f"design {verb}"] for verb in ("slopes", "robustness", "sweep")}
+    assert len(distinct) == 10
+    # Checked against what the findings do (the cases of the tests above): failed rule checks
+    # are a criterion of align, a film at its floor makes a bearing run not acceptable anyway,
+    # a rejected window makes an identify run not acceptable anyway and an alarm needs --strict.
+    criteria, always = helps["align"].split(" Without it, ")
+    assert "a class-rule check fails" in criteria and "a film at its floor" in always
+    criteria, always = helps["bearing solve"].split(" Without it, ")
+    assert "h_min is below 30 µm" in criteria and "a film at its floor (contact)" in always
+    criteria, always = helps["monitor identify"].split(" Without it, ")
+    assert "a lambda alarm" in criteria and "could not be identified (rejected)" in always
+    assert helps["design sweep"].startswith("No effect here")

@@ -72,6 +72,15 @@ def schema(
 
 
 def _case_verb(capability: Capability[Any, Any, Any], verb: Verb) -> Callable[..., None]:
+    """The typer command of ``verb``, its ``--strict`` help the verb's own."""
+    command = _case_command(capability, verb)
+    if verb.strict:
+        # The three shapes below share one signature; the help is the verb's.
+        command.__annotations__["strict"] = Annotated[bool, typer.Option("--strict", help=verb.strict)]
+    return command
+
+
+def _case_command(capability: Capability[Any, Any, Any], verb: Verb) -> Callable[..., None]:
     key = capability.key
     options = {key: dict(verb.options)}
     if not verb.many and capability.parallel:

@@ -26,10 +26,29 @@ JsonOption = Annotated[
 ]
 OutOption = Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")]
 CaseArgument = Annotated[Path, typer.Argument(help="Case file (TOML).")]
+
+
+def strict_help(criteria: str, always: str = "") -> str:
+    """The ``--strict`` help of a verb, from what its capability's findings judge
+    (:class:`~shaftline.registry.Finding`): ``criteria``, the design criteria (``criterion=True``:
+    exit status 3 only with ``--strict``); ``always``, what exits with 3 without it
+    (``criterion=False``), empty when nothing of the verb does."""
+    text = f"Exit with status 3 also when {criteria}."
+    if always:
+        return f"{text} Without it, status 3 only for {always}."
+    return f"{text} Without it, no result of this command exits with 3."
+
+
+#: ``--strict`` of ``run`` (every analysis of the case): each verb's own help names its criteria.
 StrictOption = Annotated[
     bool,
     typer.Option(
-        "--strict", help="Exit with status 3 also when a design criterion fails (a rule check, an allowable wear)."
+        "--strict",
+        help=strict_help(
+            "a design criterion of any analysis fails (a class-rule check, a film limit, an allowable wear depth, a "
+            "scuffing limit, gross fretting, a lambda alarm...: each verb's --strict help names its own)",
+            "a result that is not acceptable (no convergence, a film at its floor, a rejected recording window...)",
+        ),
     ),
 ]
 

@@ -95,12 +95,16 @@ class Verb:
     many : bool
         The verb takes several case files and compares their results
         (:meth:`Capability.compare`); with one file it is an ordinary run.
+    strict : str
+        Help of its ``--strict`` option (:func:`shaftline.commandline.strict_help`): what of
+        this verb's result then also exits with status 3; empty for the generic text.
     """
 
     path: tuple[str, ...]
     help: str
     options: Mapping[str, Any] = field(default_factory=dict)
     many: bool = False
+    strict: str = ""
 
 
 @dataclass(frozen=True)

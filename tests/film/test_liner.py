@@ -16,16 +16,18 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
+import shaftline.film.bearing as bearing_module
 from shaftline.cases import load_case
 from shaftline.errors import InputError
 from shaftline.film import BearingGeometry, JournalBearing
 from shaftline.film.bearing import LINER_TOLERANCE
-from shaftline.film.elastic import film_residual_jacobian
+from shaftline.film.elastic import CoupledOrderings, LinerSystem, film_operator, film_residual_jacobian
 from shaftline.film.liner import LINER_PRESETS, Liner
-from shaftline.film.reynolds import apply_operator, stencil_derivative
+from shaftline.film.reynolds import ReynoldsSolver, apply_operator, build_stencil, stencil_derivative
 from shaftline.film.roughness import BOUNDARY_LIMIT, RoughFilm, SurfaceRoughness, asperity_pressure
 from tests.conftest import invoke
 
@@ -128,6 +130,44 @@ def test_film_residual_jacobian_is_the_stencil_derivative(rough: bool) -> None:
 
 
 @pytest.mark.parametrize("rough", [False, True])
+def test_coupled_matrix_in_a_kept_ordering_is_the_sparse_sum(rough: bool) -> None:
+    # The coupled Newton matrix (A + B diag(K/M)) on the free nodes is assembled on the grid's
+    # five-point pattern and factorised in an ordering kept per free set (elastic.py): its
+    # Newton step must be that of the matrix formed by sparse arithmetic from film_operator
+    # and film_residual_jacobian (both checked above), solved densely, to round-off (1e-10 of
+    # the step: the matrix's condition number here is ~1e3); the second build of the same
+    # free set factorises in the kept order (SuperLU's permutation then the identity).
+    rng = np.random.default_rng(5)
+    shape = (7, 12)
+    film = 0.3 + rng.random(shape)
+    pressure = rng.random(shape)
+    rate = rng.standard_normal(shape)
+    film_model = RoughFilm(0.2, 1.0) if rough else None
+    held = rng.random(shape) < 0.3
+    diagonal = 1.0 + rng.random(shape)
+    coupling = 0.7
+    stencil = build_stencil(film, 0.5, 0.2, rate, film_model)
+    matrix = film_operator(stencil) + film_residual_jacobian(film, pressure, 0.5, 0.2, film_model, rate) @ sp.diags(
+        coupling / diagonal.ravel()
+    )
+    free = ~held.ravel()
+    dense = matrix.toarray()[np.ix_(free, free)]
+    residual = rng.standard_normal(shape)
+    jacobian = film_residual_jacobian(film, pressure, 0.5, 0.2, film_model, rate)
+    expected = np.zeros(free.size)
+    expected[free] = np.linalg.solve(dense, (jacobian @ (residual.ravel() / diagonal.ravel()))[free])
+    orderings = CoupledOrderings()
+    args = (stencil, film, pressure, held, 0.5, 0.2, film_model, rate, coupling, diagonal)
+    for build in range(2):
+        system = LinerSystem.build(*args, orderings)
+        d_pressure, d_deformation = system.step(residual)
+        np.testing.assert_allclose(d_pressure, expected, rtol=0, atol=1e-10 * np.abs(expected).max())
+        np.testing.assert_allclose(d_deformation, (coupling * expected - residual.ravel()) / diagonal.ravel())
+        assert len(orderings) == 1
+        assert np.array_equal(system.factor.perm_c, np.arange(free.sum())) == (build == 1)
+
+
+@pytest.mark.parametrize("rough", [False, True])
 def test_film_liner_jacobian_matches_central_differences(ntua, rough: bool) -> None:  # noqa: ANN001
     # Frozen-set derivative of the coupled system (elastic.py) against central differences of the
     # converged force; the step (1e-4 of the clearance) moves no cavitation boundary node on
@@ -151,6 +191,41 @@ def test_film_liner_jacobian_matches_central_differences(ntua, rough: bool) -> N
     numeric = np.column_stack(columns)
     scale = np.abs(numeric).max()
     assert np.abs(jacobian - numeric).max() <= 5e-3 * scale
+
+
+def test_fixed_nodes_settled_node_by_node_save_film_solutions(ntua, monkeypatch) -> None:  # noqa: ANN001
+    # On the fixed-pressure nodes (the bearing's ends) of a column liner the liner equation
+    # involves the node's own deformation only, through the asperity pressure (docs/theory.md,
+    # "Elastic liner"): solved there by a scalar Newton iteration before each film solution,
+    # the equilibrium needs fewer film solutions and reaches the same position (within 1e-6 of
+    # the clearance, as from another start: test_lined_equilibrium_does_not_depend_on_its_start)
+    # with the column law met node by node. Seed 001's polymer liner at 1 rpm, where the
+    # asperities at the aft end carry ~1 MPa.
+    surface = SurfaceRoughness.preset("turned_steel_white_metal")
+    geometry = replace(ntua.geometry, surface=surface, liner=Liner.preset("polymer_composite"))
+    bearing = JournalBearing(geometry, replace(ntua.operating, speed=np.pi / 30), ntua.options)
+    count = [0]
+    solve = ReynoldsSolver.solve
+
+    def counted(self, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
+        count[0] += 1
+        return solve(self, *args, **kwargs)
+
+    monkeypatch.setattr(ReynoldsSolver, "solve", counted)
+    settled = bearing.equilibrium(ntua.load_y, ntua.load_z)
+    settled_solutions = count[0]
+    monkeypatch.setattr(bearing_module, "FIXED_ITERATIONS", 0)
+    count[0] = 0
+    plain = bearing.equilibrium(ntua.load_y, ntua.load_z)
+    assert settled.converged and plain.converged
+    assert settled_solutions < count[0]
+    c = ntua.geometry.radial_clearance
+    assert abs(settled.state.position.ey - plain.state.position.ey) <= 1e-6 * c
+    assert abs(settled.state.position.ez - plain.state.position.ez) <= 1e-6 * c
+    st = settled.state
+    assert st.liner_deformation is not None and st.asperity_pressure is not None
+    law = geometry.liner.compliance * (st.pressure + st.asperity_pressure)
+    assert np.abs(st.liner_deformation - law).max() <= LINER_TOLERANCE * c
 
 
 @pytest.mark.parametrize("name", ["white_metal", "polymer_composite"])

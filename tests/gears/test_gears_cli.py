@@ -212,7 +212,9 @@ def test_the_terminal_tables_fit_80_columns_a_line_a_row(example):
     result = run_case(load_case(example))
     capability, value = next(result.capabilities())
     tables = [b for b in capability.summary(value) if isinstance(b, Table)]
-    assert len(tables) == 2 and tables[1].headers[-2:] == ["S_B", "S_intS"]
+    # a pair per pinion speed (the seed's five speeds showed only the first)
+    assert len(tables) == 2 * len(value.study.speeds)
+    assert all(table.headers[-2:] == ["S_B", "S_intS"] for table in tables[1::2])
     for table in tables:
         console = Console(record=True, width=80)
         print_blocks(console, [table])
@@ -220,3 +222,28 @@ def test_the_terminal_tables_fit_80_columns_a_line_a_row(example):
         assert max(len(line) for line in lines) <= 80
         assert sum(line.startswith("┃") for line in lines) == 1, lines  # the header
         assert sum(line.startswith("│") for line in lines) == len(table.rows), lines
+
+
+def test_the_summary_shows_every_speed_of_the_study():
+    # The seed example rates five pinion speeds (10 000, 2 000, 6 000, 14 000, 18 000 rpm): the
+    # summary has seed 002's SP table and ISO's table for each in the study's order, each titled
+    # with its speed and holding that speed's SP and S_B (formatted as the table does). The
+    # summary showed the first speed's only.
+    from shaftline.cases import load_case
+    from shaftline.pipeline import run_case
+    from shaftline.report.blocks import Table
+
+    result = run_case(load_case(SEED))
+    capability, value = next(result.capabilities())
+    tables = [b for b in capability.summary(value) if isinstance(b, Table)]
+    rpm = [10000, 2000, 6000, 14000, 18000]
+    assert len(tables) == 2 * len(rpm)
+    for j, (sp_table, iso_table) in enumerate(zip(tables[0::2], tables[1::2], strict=True)):
+        assert f", {rpm[j]} rpm: seed 002's SP" in sp_table.title
+        assert iso_table.title.endswith(f", {rpm[j]} rpm")
+        column = sp_table.headers.index("SP")
+        assert [row[column] for row in sp_table.rows] == [f"{v:.2f}" for v in value.sp[:, j]]
+        column = iso_table.headers.index("S_B")
+        assert [row[column] for row in iso_table.rows] == [f"{v:.2f}" for v in value.iso.safety[:, j]]
+    # the speeds differ in SP: the tables are not one table repeated
+    assert len({tuple(row[-2] for row in t.rows) for t in tables[0::2]}) == len(rpm)

@@ -614,3 +614,56 @@ def test_a_foreign_recordings_table_on_postgresql_is_one_line(truth, tmp_path, p
         with engine.connect() as connection:
             connection.execute(sa.text("drop database if exists music"))
         engine.dispose()
+
+
+def _fits_80_columns(blocks) -> list:
+    """Print each table of ``blocks`` on an 80-column console (as COLUMNS=80): every line at most
+    80 wide, the header on one line and a line a row (as tests/gears/test_gears_cli.py). The
+    tables, for the caller's own checks."""
+    from rich.console import Console
+
+    from shaftline.report.blocks import Table
+    from shaftline.report.terminal import print_blocks
+
+    tables = [b for b in blocks if isinstance(b, Table)]
+    for table in tables:
+        console = Console(record=True, width=80)
+        print_blocks(console, [table])
+        lines = console.export_text().splitlines()
+        assert max(len(line) for line in lines) <= 80
+        assert sum(line.startswith("┃") for line in lines) == 1, lines  # the header: no "window s"
+        assert sum(line.startswith("│") for line in lines) == len(table.rows), lines
+    return tables
+
+
+def test_the_identify_tables_fit_80_columns_a_line_a_row(truth, tmp_path):
+    # `monitor identify`'s summary folded every row of its one nine-column table over five lines
+    # at COLUMNS=80 and split the header "windows" into "window s": now two tables (what was done
+    # with each recording; what was found in it), each row on one line, headers unbroken.
+    from shaftline.cases import load_case
+    from shaftline.pipeline import run_case
+
+    path = write_csv(tmp_path / "recording_120rpm.csv", truth)
+    overrides = {"monitor.identify.recordings": [str(path)], "monitor.identify.database": str(tmp_path / "m.sqlite")}
+    case = load_case(case_file(tmp_path), overrides=overrides)
+    result = run_case(case, options={"monitor": {"task": "identify"}})
+    capability, value = next(result.capabilities())
+    work, found = _fits_80_columns(capability.summary(value))
+    assert work.headers == ["recording", "start (UTC)", "windows", "stored", "rejected"]
+    assert work.rows == [["recording_120rpm.csv", "2026-11-02 06:00:00", "2", "2", "0"]]
+    assert found.headers[:3] == ["recording", "rpm", "h_min [µm]"] and found.rows[0][1] == "120"
+    assert "mean h_min at D1/D2/D3" in found.title
+
+
+@pytest.mark.slow
+def test_the_simulate_table_fits_80_columns_a_line_a_row():
+    # `monitor simulate`'s table of the example (3 speeds) wrapped each row over two lines at
+    # COLUMNS=80 ("3.82 / 4.64 / 4.74" broken at its spaces).
+    from shaftline.cases import load_case
+    from shaftline.pipeline import run_case
+
+    result = run_case(load_case(EXAMPLE), options={"monitor": {"task": "simulate"}})
+    capability, value = next(result.capabilities())
+    (table,) = _fits_80_columns(capability.summary(value))
+    assert [row[0] for row in table.rows] == ["135", "175", "215"]
+    assert all(len(row[1].split("/")) == 3 for row in table.rows)  # h_min at D1, D2, D3

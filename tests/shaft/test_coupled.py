@@ -425,6 +425,9 @@ def test_point_and_film_relative_slopes_are_against_the_same_machined_bore():
     assert result.converged, result.message
     alone = AlignmentModel(ntua_line()).solve_condition(ntua_line().all_conditions()[0]).bearing("aft")
     point = result.point_supports.bearing("aft")
+    # Converged, the film table's relative slope (the journal's chord against the bore's) is the
+    # alignment table's (the shaft's chord less the bearing's and the bore's slopes): one chord.
+    assert result.film("aft").relative_slope == pytest.approx(result.condition.bearing("aft").relative_slope, rel=1e-6)
     assert point.shaft_slope == pytest.approx(alone.shaft_slope, rel=1e-12)
     assert point.relative_slope == pytest.approx(alone.shaft_slope - slope, rel=1e-9)
     # the bearings without a film keep the point model's own relative slope
@@ -568,6 +571,27 @@ def test_a_film_that_cannot_carry_falls_back_to_contact_at_the_bore():
     title = ax[0].get_title()
     assert "(at its floor: solved as contact)" in title
     assert f"h_min {film.state.min_film_thickness * 1e6:.3g} µm" in title
+    # The point-vs-film figure draws the grounded bearing as contact, not as a film support
+    # (its bar is the contact solution's); the other bearings stay "film supports".
+    ax = Figure().subplots(1, 2)
+    figures.point_vs_film(result, ax=ax)
+    for axes in ax:
+        labels = [bars.get_label() for bars in axes.containers]
+        assert labels == ["point supports", "film supports", "film at its floor: contact at the bore"]
+        (grounded,) = axes.containers[2]  # one bar: the aft bearing's
+        assert grounded.get_x() + 0.5 * grounded.get_width() == pytest.approx(0.2)
+    assert ax[1].containers[2][0].get_height() == pytest.approx(aft.relative_slope * 1e3)
+    # The film's relative slope (at its last journal line) is not the contact solution's: the
+    # notes under the film table give both and say which table has which.
+    assert abs(film.relative_slope - aft.relative_slope) > 1e-5
+    from shaftline.shaft.capability import _film_notes
+
+    notes = _film_notes(result)
+    assert notes is not None
+    assert (
+        f"relative slope {film.relative_slope * 1e3:.4g} mrad at that line (the film table's); "
+        f"{aft.relative_slope * 1e3:.4g} mrad with the bearing in contact at the bore (the alignment table's"
+    ) in notes.text
 
 
 def test_a_film_near_its_floor_that_carries_its_share_does_not_ground():

@@ -165,3 +165,58 @@ def test_turbulence_notes_in_the_alignment_film_as_in_the_bearing(tmp_path: Path
         assert warnings == []
     else:
         assert len(warnings) == 1 and warnings[0].startswith(expected), warnings
+
+
+@pytest.mark.slow
+def test_a_trial_the_layer_liner_cannot_hold_is_rejected_not_fatal(tmp_path: Path) -> None:
+    # A 10 mm rubber liner as a bonded layer (nu 0.49: it bulges at the bearing ends, which the
+    # column model does not hold) in the same line: a line-search trial pushes the film past what
+    # the layer holds and the film-liner iteration fails (LinerConvergenceError). That trial is
+    # rejected like a film cutting the bore; the iteration goes on to the film's floor at the
+    # forward end and the bearing falls back to contact, with the results written and the
+    # rejected trial named in the message. It ended "not solved" (exit 3, nothing written).
+    liner = '  liner = { preset = "rubber", thickness = "10 mm", model = "layer" }\n'
+    code, data, stderr = solve(tmp_path, liner, "rubber_layer")
+    assert code == 3 and data, stderr
+    assert "not solved" not in stderr
+    (film,) = data["films"]
+    assert film["contact"] and film["max_liner_deformation"] > 50e-6
+    assert "asked more of the elastic liner than it holds" in data["message"]
+    assert "rejected as a film cutting the bore" in data["message"]
+
+
+def test_a_start_the_liner_cannot_hold_is_a_clear_solver_failure(tmp_path: Path, monkeypatch) -> None:
+    # A liner that settles at no starting line (forced here: every film-liner iteration fails)
+    # ends in one line naming the bearing and what to try, not the bare residual of the liner
+    # iteration ("not solved: 0.000399...").
+    from shaftline.film.bearing import JournalBearing, LinerConvergenceError
+
+    def failing(self, *args, **kwargs):
+        raise LinerConvergenceError(4e-4)
+
+    monkeypatch.setattr(JournalBearing, "film_load", failing)
+    code, data, stderr = solve(tmp_path, '  liner = { preset = "rubber" }\n', "never")
+    assert code == 3 and not data
+    text = " ".join(stderr.split())
+    assert text.startswith("not solved: film-supported alignment: the elastic liner of aft stern tube does not settle")
+
+
+def test_under_resolved_layer_liner_in_the_alignment_is_noted(tmp_path: Path) -> None:
+    # `[alignment.bearings.film.liner]` with model = "layer" gets the note `[bearing.liner]` gets
+    # (tests/film/test_layer_film.py) when the axial step is above half the liner thickness,
+    # named under its own table: 1.05 m on 41 rows is a 26.25 mm step against a 10 mm rubber
+    # liner, which needs ceil(1.05 / 0.005) + 1 = 211 rows. On 211 rows (5 mm) and with the
+    # column model (no end effect to resolve) there is no note.
+    from shaftline.cases.loader import load_case
+
+    def notes(film: str) -> list[str]:
+        path = tmp_path / "line.toml"
+        path.write_text(LINE.replace("FILM", film).replace("MOMENT", "-409948 N*m"))
+        return [text for text in load_case(path).warnings if "liner.model = layer" in text]
+
+    layer = OWN_FILM + '  liner = { preset = "rubber", model = "layer" }\n'
+    (note,) = notes(layer)
+    assert note.startswith("alignment.bearings[0].film.liner.model = layer with an axial step of 26.3 mm")
+    assert "set alignment.bearings[0].film.solver.axial_nodes to 211 or more" in note
+    assert notes(layer.replace("axial_nodes = 41", "axial_nodes = 211")) == []
+    assert notes(OWN_FILM + '  liner = { preset = "rubber" }\n') == []

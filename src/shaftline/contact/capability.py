@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+from shaftline.commandline import strict_help
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
 
@@ -61,6 +62,11 @@ class LubricatedContact(Capability["ContactSection", "ContactStudy", "ContactRes
             ("contact", "ehl"),
             "Hertz pressure, EHL film, Lambda and mixed friction (seed 002) of a lubricated contact, with "
             "load and speed sweeps.",
+            # what LubricatedContact.findings judges, with and without ``criterion``
+            strict=strict_help(
+                "the contact runs boundary-dominated at the operating point (seed 002 Eq. 2)",
+                "seed 002's thermal correction clipped to 0 beyond its fit range (friction 0: no result)",
+            ),
         ),
     )
 

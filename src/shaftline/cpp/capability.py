@@ -7,6 +7,7 @@ import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
+from shaftline.commandline import strict_help
 from shaftline.registry import BuildContext, Capability, Comparison, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table
 
@@ -47,6 +48,13 @@ def periodicity(motion: dict[str, Any]) -> str:
     )
 
 
+#: ``--strict`` of the cpp verbs: BladeBearings.findings has one finding, a criterion.
+CPP_STRICT = strict_help(
+    "the blade bearing frets grossly: the spindle torque overcomes the friction torque both ways every "
+    "revolution (with several case files, in any of them)"
+)
+
+
 class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingResult"]):
     key = "cpp"
     title = "CPP blade bearing: friction and fretting"
@@ -57,10 +65,12 @@ class BladeBearings(Capability["CppSection", "BladeBearingStudy", "BladeBearingR
             "case files, the propellers ranked by fretting risk.",
             options={"motion": False},
             many=True,
+            strict=CPP_STRICT,
         ),
         Verb(
             ("cpp", "motion"),
             "Fretting motion of the blade carrier over revolutions (oil spring, backlash, friction law).",
+            strict=CPP_STRICT,
         ),
     )
 

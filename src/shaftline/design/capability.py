@@ -16,8 +16,8 @@ from shaftline.commandline import (
     JsonOption,
     OutOption,
     SchedulerOption,
-    StrictOption,
     WorkersOption,
+    strict_help,
 )
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table, fmt
@@ -426,6 +426,33 @@ StoreOption = Annotated[
 ]
 
 
+#: ``--strict`` of the design verbs: what SlopeDesign.findings judges of each task's result
+#: (the search's front for slopes and an unnamed robustness run, the robustness of the chosen
+#: designs; a sweep's fronts are shown, not judged).
+_BOUND = "the design front sits on a variable's bound (half its designs within 2 % of it)"
+_NONE_ACCEPTABLE = "a search that finds no acceptable design"
+SlopesStrict = Annotated[bool, typer.Option("--strict", help=strict_help(_BOUND, _NONE_ACCEPTABLE))]
+RobustnessStrict = Annotated[
+    bool,
+    typer.Option(
+        "--strict",
+        help=strict_help(
+            "no chosen design keeps h_min at or above the limit in every scenario, or (designs found by a search) "
+            + _BOUND.replace("the design front", "the front"),
+            _NONE_ACCEPTABLE,
+        ),
+    ),
+]
+SweepStrict = Annotated[
+    bool,
+    typer.Option(
+        "--strict",
+        help="No effect here: a sweep's fronts are shown, not judged (--strict of design slopes and design "
+        "robustness judges a front and its robustness).",
+    ),
+]
+
+
 def _search_run(
     task: str,
     case_file: Path,
@@ -458,7 +485,7 @@ def slopes(
     store: StoreOption = None,
     json_path: JsonOption = None,
     out: OutOption = None,
-    strict: StrictOption = False,
+    strict: SlopesStrict = False,
     workers: WorkersOption = None,
     scheduler: SchedulerOption = None,
 ) -> None:
@@ -477,7 +504,7 @@ def sweep_command(
     store: StoreOption = None,
     json_path: JsonOption = None,
     out: OutOption = None,
-    strict: StrictOption = False,
+    strict: SweepStrict = False,
     workers: WorkersOption = None,
     scheduler: SchedulerOption = None,
 ) -> None:
@@ -535,7 +562,7 @@ def robustness_command(
     ] = None,
     json_path: JsonOption = None,
     out: OutOption = None,
-    strict: StrictOption = False,
+    strict: RobustnessStrict = False,
     workers: WorkersOption = None,
     scheduler: SchedulerOption = None,
 ) -> None:

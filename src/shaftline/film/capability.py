@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+from shaftline.commandline import strict_help
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
 
@@ -91,15 +92,26 @@ def thermal_json(run: Any) -> dict[str, Any]:
     }
 
 
+#: ``--strict`` of ``bearing solve`` and ``bearing stribeck``: the findings of
+#: :meth:`BearingFilm.findings` with and without ``criterion``.
+BEARING_STRICT = strict_help(
+    "a case runs in mixed or boundary lubrication on rough surfaces (the asperities carry load) or its h_min is "
+    f"below {MIN_FILM_CRITERION * 1e6:g} µm (Bureau Veritas)",
+    "a film at its floor (contact), an equilibrium that does not converge, a heat balance that does not close, "
+    f"h_min below three times the roughness of a smooth film, or p_max above {PEAK_PRESSURE_LIMIT / 1e6:g} MPa",
+)
+
+
 class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResult"]):
     key = "bearing"
     title = "Stern-tube bearing film"
     verbs = (
-        Verb(("bearing", "solve"), "Solve the bearing film at equilibrium under the case load."),
+        Verb(("bearing", "solve"), "Solve the bearing film at equilibrium under the case load.", strict=BEARING_STRICT),
         Verb(
             ("bearing", "stribeck"),
             "Solve the bearing, then sweep its speed: the Stribeck curve, h_min and the lift-off speed.",
             options={"task": "stribeck"},
+            strict=BEARING_STRICT,
         ),
     )
     parallel = True

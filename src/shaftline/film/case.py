@@ -819,9 +819,11 @@ def turbulence_note(
 LAYER_RESOLUTION = 0.5
 
 
-def layer_note(geometry: BearingGeometry, axial_nodes: int) -> str | None:
+def layer_note(geometry: BearingGeometry, axial_nodes: int, table: str = "") -> str | None:
     """A note when the layer model's liner is thin against the axial step (its deformation
-    near the bearing ends is not resolved); None otherwise."""
+    near the bearing ends is not resolved); None otherwise. ``table``: the case-file path of the
+    film's table with its dot (``"alignment.bearings[0].film."``; empty for ``[bearing]``), for
+    the fields the note names."""
     liner = geometry.liner
     if liner is None or liner.model != "layer":
         return None
@@ -830,9 +832,9 @@ def layer_note(geometry: BearingGeometry, axial_nodes: int) -> str | None:
         return None
     needed = math.ceil(geometry.length / (LAYER_RESOLUTION * liner.thickness)) + 1
     return (
-        f"liner.model = layer with an axial step of {dz * 1e3:.3g} mm, more than half the liner's "
+        f"{table}liner.model = layer with an axial step of {dz * 1e3:.3g} mm, more than half the liner's "
         f"{liner.thickness * 1e3:.3g} mm: the layer's deformation near the bearing ends is not resolved and the "
-        f"film there comes out too thin (set solver.axial_nodes to {needed} or more; docs/validation.md, "
+        f"film there comes out too thin (set {table}solver.axial_nodes to {needed} or more; docs/validation.md, "
         '"Elastic layer").'
     )
 

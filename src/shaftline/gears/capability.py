@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 import numpy as np
 import typer
 
-from shaftline.commandline import JsonOption, OutOption, StrictOption
+from shaftline.commandline import JsonOption, OutOption, strict_help
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
 
@@ -62,7 +62,18 @@ def scuffing_command(
     ] = None,
     json_path: JsonOption = None,
     out: OutOption = None,
-    strict: StrictOption = False,
+    strict: Annotated[
+        bool,
+        typer.Option(
+            "--strict",
+            # what GearScuffing.findings judges, with and without ``criterion``
+            help=strict_help(
+                "seed 002's scuffing parameter SP exceeds 1 or ISO/TS 6336-20's S_B falls below 1 at a torque-speed "
+                "step",
+                "seed 002's thermal correction clipped to 0 beyond its fit range (SP understated: no result)",
+            ),
+        ),
+    ] = False,
 ) -> None:
     """Scuffing of a gear pair along the mesh: seed 002's scuffing parameter beside ISO/TS 6336-20."""
     from shaftline.commandline import run_cases
@@ -178,43 +189,47 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
 
     def _tables(self, result: GearResult) -> list[Table]:
         """Seed 002's SP and, with ``[gears.iso]``, ISO's ratings, as two tables over the same
-        torque steps: one table of nine or ten columns wrapped every row in an 80-column
-        terminal."""
+        torque steps, for each pinion speed of the study in turn (its rpm in the titles): one
+        table of nine or ten columns wrapped every row in an 80-column terminal, and one table
+        of all speeds showed only the first."""
         study, c = result.study, result.state.contact
         stages = study.fzg_load_stages
         first = ["stage"] if stages else []  # the FZG load stage, named so in the titles
         by_stage = "FZG load stages, " if stages else ""
         steps = [([str(stages[k])] if stages else []) + [f"{torque:g}"] for k, torque in enumerate(study.torques)]
-        rows = []
-        for k, step in enumerate(steps):
-            sp = float(result.sp[k, 0])
-            rows.append(
-                [
-                    *step,
-                    f"{float(c.peak_pressure[k, 0].max()) / 1e9:.2f}",
-                    f"{float(c.film_ratio[k, 0].min()):.2f}",
-                    f"{float(c.friction[k, 0].max()):.3f}",
-                    f"{sp:.2f}",
-                    _verdict(sp),
-                ]
+        tables = []
+        for j, omega in enumerate(study.speeds):
+            speed = float(omega) * 30.0 / math.pi
+            rows = []
+            for k, step in enumerate(steps):
+                sp = float(result.sp[k, j])
+                rows.append(
+                    [
+                        *step,
+                        f"{float(c.peak_pressure[k, j].max()) / 1e9:.2f}",
+                        f"{float(c.film_ratio[k, j].min()):.2f}",
+                        f"{float(c.friction[k, j].max()):.3f}",
+                        f"{sp:.2f}",
+                        _verdict(sp),
+                    ]
+                )
+            tables.append(
+                Table(
+                    [*first, "T_pinion [N m]", "max p_H [GPa]", "min Λ", "max f", "SP", "seed 002"],
+                    rows,
+                    f"{by_stage}{study.mesh.model.lubricant.name} at {study.oil_temperature:g} °C, {speed:.0f} rpm: "
+                    f"seed 002's SP, C = {result.coefficient:.4g} W/(m K), T_cr = {study.critical_temperature:g} °C",
+                )
             )
-        speed = float(study.speeds[0]) * 30.0 / math.pi
-        tables = [
-            Table(
-                [*first, "T_pinion [N m]", "max p_H [GPa]", "min Λ", "max f", "SP", "seed 002"],
-                rows,
-                f"{by_stage}{study.mesh.model.lubricant.name} at {study.oil_temperature:g} °C, {speed:.0f} rpm: "
-                f"seed 002's SP, C = {result.coefficient:.4g} W/(m K), T_cr = {study.critical_temperature:g} °C",
-            )
-        ]
-        if result.iso is not None:
+            if result.iso is None:
+                continue
             iso, integral = result.iso, result.integral
             headers = [*first, "T_pinion [N m]", "θ_B,max [°C]", "S_B"]
             iso_rows = []
             for k, step in enumerate(steps):
-                row = [*step, f"{float(iso.contact_max[k, 0]):.0f}", f"{float(iso.safety[k, 0]):.2f}"]
+                row = [*step, f"{float(iso.contact_max[k, j]):.0f}", f"{float(iso.safety[k, j]):.2f}"]
                 if integral is not None:
-                    row.append(f"{float(integral.safety[k, 0]):.2f}")
+                    row.append(f"{float(integral.safety[k, j]):.2f}")
                 iso_rows.append(row)
             if integral is not None:
                 headers.append("S_intS")

@@ -128,7 +128,7 @@ class StepsSection(Section):
     speeds: Annotated[
         list[Annotated[float, Quantity("speed", gt=0), PINION_SPEED]], Field(min_length=1, max_length=200)
     ]
-    """Pinion speeds; the first is the test speed of the SP-against-torque table and figure."""
+    """Pinion speeds; the first is the test speed of the SP-against-torque figure (the tables show each)."""
 
     @model_validator(mode="after")
     def _one_load(self) -> StepsSection:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from shaftline.commandline import JsonOption, OutOption, StrictOption
+from shaftline.commandline import JsonOption, OutOption, strict_help
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table
 
@@ -42,6 +42,10 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             "Synthetic probe recordings of seed 001's rig from the bearing solver and the shaft model, identified "
             "(orbits, film round the sections and along the bearing, regimes) and compared with the truth.",
             options={"task": "simulate"},
+            # what FilmMonitor.findings judges of a simulation (the recording findings are identify's)
+            strict=strict_help(
+                "the bearing solver finds no film carrying the load above its floor at a simulated speed"
+            ),
         ),
     )
 
@@ -139,32 +143,29 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
         rows = []
         for point in result.points:
             window = point.window
-            films = " / ".join(f"{orbit.min_film.mean() * MICRO:.2f}" for orbit in window.orbits)
+            # Cells without spaces ("3.82/4.64/4.74", not "3.82 / 4.64 / 4.74"): a cell with
+            # spaces is wrapped at them in an 80-column terminal, a row over two lines.
+            films = "/".join(f"{orbit.min_film.mean() * MICRO:.2f}" for orbit in window.orbits)
             rows.append(
                 [
-                    _rpm(window.speed),
+                    f"{window.speed * RPM:.0f}",
                     films,
-                    f"{window.regimes.boundary[0] * 1e3:.0f} / {window.regimes.mixed[0] * 1e3:.0f} / "
+                    f"{window.regimes.boundary[0] * 1e3:.0f}/{window.regimes.mixed[0] * 1e3:.0f}/"
                     f"{window.regimes.hydrodynamic[0] * 1e3:.0f}",
-                    f"{point.true_regimes.boundary[0] * 1e3:.0f} / {point.true_regimes.mixed[0] * 1e3:.0f} / "
+                    f"{point.true_regimes.boundary[0] * 1e3:.0f}/{point.true_regimes.mixed[0] * 1e3:.0f}/"
                     f"{point.true_regimes.hydrodynamic[0] * 1e3:.0f}",
                     f"{point.film_error * MICRO:.3f}",
                     f"{point.line_error * MICRO:.3f}",
                 ]
             )
         names = "/".join(section.name for section in result.study.layout.sections)
-        headers = [
-            "speed",
-            f"h_min {names} [µm]",
-            "B/M/H [mm]",
-            "true B/M/H [mm]",
-            "film err [µm]",
-            "h_min err [µm]",
-        ]
+        # Headers no wider than their cells where they can be (units in the title): a table
+        # wider than the terminal is narrowed by rich inside the cells, a row over two lines.
+        headers = ["rpm", "h_min [µm]", "B/M/H [mm]", "true B/M/H", "film err", "h_min err"]
         title = (
-            "Synthetic recordings identified: mean h_min at each section, lengths of the boundary, mixed and "
-            "hydrodynamic regions (identified and true), largest error of the mean film round the sections and of "
-            "h_min along the bearing"
+            f"Synthetic recordings identified: mean h_min at {names}, lengths of the boundary, mixed and "
+            "hydrodynamic regions (identified and true, mm), largest error of the mean film round the sections and "
+            "of h_min along the bearing (µm)"
         )
         return Table(headers, rows, title)
 
@@ -201,7 +202,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             blocks += [
                 *_masked_warnings(result.identified),
                 *_runout_blocks(result.identified),
-                _identified_table(result.identified),
+                *_identified_tables(result.identified),
             ]
         if result.points:
             blocks.append(self._table(result))
@@ -590,28 +591,33 @@ def _masked_warnings(identified: Identified) -> list[Block]:
     return blocks
 
 
-def _identified_table(identified: Identified) -> Table:
+def _identified_tables(identified: Identified) -> list[Table]:
+    """What ``monitor identify`` did with each recording (windows, stored, rejected) and what it
+    found (speed, mean h_min per section, lowest lambda, alarms): two tables, each row on one line
+    of an 80-column terminal (one table of nine columns folded every row over five lines and its
+    headers inside words, "window s")."""
     import numpy as np
 
-    rows = []
+    work, found = [], []
     for item in identified.recordings:
         done = item.processed
+        name = item.plan.recording.path.name
         by_name = {trend.section: trend for trend in item.trends}
-        films = " / ".join(
+        # no spaces in a cell that must stay on one line (wrapped at them otherwise)
+        films = "/".join(
             f"{np.nanmean(t.min_film) * MICRO:.2f}" if np.isfinite(t.min_film).any() else "-"
-            for name, t in by_name.items()
-            if name != "bearing"
+            for name_, t in by_name.items()
+            if name_ != "bearing"
         )
         whole = by_name.get("bearing")
         lowest = f"{np.nanmin(whole.film_parameter):.2f}" if whole is not None and whole.times else "-"
         speeds = next(iter(by_name.values())).speed if by_name else np.array([])
-        rows.append(
+        work.append(
+            [name, _when(done.recording.started_at), f"{done.windows}", f"{done.written}", f"{len(done.rejected)}"]
+        )
+        found.append(
             [
-                item.plan.recording.path.name,
-                _when(done.recording.started_at),
-                f"{done.windows}",
-                f"{done.written}",
-                f"{len(done.rejected)}",
+                name,
                 f"{np.nanmean(speeds) * RPM:.0f}" if speeds.size else "-",
                 films,
                 lowest,
@@ -621,28 +627,28 @@ def _identified_table(identified: Identified) -> Table:
     names = "/".join(
         t.section for t in (identified.recordings[0].trends if identified.recordings else ()) if t.section != "bearing"
     )
-    return Table(
-        [
-            "recording",
-            "start (UTC)",
-            "windows",
-            "stored now",
-            "rejected",
-            "speed [rpm]",
-            f"mean h_min {names} [µm]",
-            "min lambda",
-            "alarms",
-        ],
-        rows,
-        f"Recordings identified into {identified.database} (lambda alarms below {identified.lambda_threshold:g} for "
-        f"{identified.alarm_duration:g} s or more)",
-    )
+    # Headers no wider than their cells where they can be: a table wider than the terminal is
+    # narrowed by rich inside the cells (the recording names folded).
+    return [
+        Table(
+            ["recording", "start (UTC)", "windows", "stored", "rejected"],
+            work,
+            f"Recordings identified into {identified.database}: windows found, stored by this run (not stored "
+            "before), rejected",
+        ),
+        Table(
+            ["recording", "rpm", "h_min [µm]", "min lambda", "alarms"],
+            found,
+            f"Identified films: mean speed, mean h_min at {names}, lowest film parameter lambda, lambda alarms "
+            f"(below {identified.lambda_threshold:g} for {identified.alarm_duration:g} s or more)",
+        ),
+    ]
 
 
 def _identified_blocks(identified: Identified, levels: tuple[float, float], layout: ProbeLayout) -> list[Block]:
     from shaftline.monitor import figures
 
-    blocks: list[Block] = [*_masked_warnings(identified), *_runout_blocks(identified), _identified_table(identified)]
+    blocks: list[Block] = [*_masked_warnings(identified), *_runout_blocks(identified), *_identified_tables(identified)]
     for index, item in enumerate(identified.recordings):
         if not item.trends:
             continue
@@ -679,6 +685,20 @@ def _identified_blocks(identified: Identified, levels: tuple[float, float], layo
     return blocks
 
 
+#: ``--strict`` of ``monitor identify``: what FilmMonitor.findings judges of recordings.
+IdentifyStrict = Annotated[
+    bool,
+    typer.Option(
+        "--strict",
+        help=strict_help(
+            "a lambda alarm is raised (the film parameter below [monitor.identify] lambda_threshold for "
+            "alarm_duration or longer)",
+            "a window that could not be identified (rejected)",
+        ),
+    ),
+]
+
+
 def identify_command(
     case_file: Annotated[Path, typer.Argument(help="Case file (TOML) with the [monitor] probes.")],
     recordings: Annotated[
@@ -711,7 +731,7 @@ def identify_command(
     ] = False,
     json_path: JsonOption = None,
     out: OutOption = None,
-    strict: StrictOption = False,
+    strict: IdentifyStrict = False,
 ) -> None:
     """Identify probe recordings window by window (orbits, film, regimes) into the trend database;
     Ctrl-C keeps every window stored and the same command resumes."""

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from shaftline.commandline import strict_help
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Details, Figure, Heading, Paragraph, Table, fmt
 
@@ -198,11 +199,20 @@ def _film_notes(coupled: CoupledResult) -> Paragraph | None:
     """The film results the table has no columns for, where a film has them: rough surfaces
     (film ratio, asperity share), an elastic liner (its largest deformation), turbulence on or
     auto (largest local Reynolds number and whether the coefficients applied). A film that fell
-    back to contact is said to be at its last journal line, not at an equilibrium."""
+    back to contact is said to be at its last journal line, not at an equilibrium, and its
+    relative slope there is told apart from the alignment table's (the line solved with the
+    bearing in contact); converged, the two are the same chord."""
     parts = []
     for f in coupled.films:
         state = f.state
         notes = []
+        if f.contact:
+            solved = coupled.condition.bearing(f.name).relative_slope
+            notes.append(
+                f"relative slope {f.relative_slope * 1e3:.4g} mrad at that line (the film table's); "
+                f"{solved * 1e3:.4g} mrad with the bearing in contact at the bore (the alignment table's and "
+                "the comparison's)"
+            )
         if math.isfinite(state.min_film_ratio):
             notes.append(
                 f"λ = h_min/σ {state.min_film_ratio:.3g}, asperities carry {state.asperity_load_share * 100:.3g} % "
@@ -279,7 +289,18 @@ def _narrowed(headers: list[str], rows: list[list[str]], title: str, keep: tuple
 class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "AlignmentResult"]):
     key = "alignment"
     title = "Shaft alignment"
-    verbs = (Verb(("align",), "Shaft alignment: elastic line, reactions, slopes, influence matrix and rule checks."),)
+    verbs = (
+        Verb(
+            ("align",),
+            "Shaft alignment: elastic line, reactions, slopes, influence matrix and rule checks.",
+            # what ShaftAlignment.findings judges, with and without ``criterion``
+            strict=strict_help(
+                "a class-rule check fails (also with the optimised offsets), the offset optimisation sits on its "
+                "bound, or a film bearing is below its film limit at the operating speed (minimum speed)",
+                "a film-supported alignment that does not converge or a film at its floor (solved as contact)",
+            ),
+        ),
+    )
     moved_tables = {
         "shaft": "alignment.shaft",
         "bearings": "alignment.bearings",

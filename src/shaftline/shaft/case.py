@@ -934,10 +934,11 @@ def _film_support(
 ) -> tuple[FilmSupport, tuple[Lubricant, float | None]]:
     """The film of ``bearings[k]`` as a domain object (errors placed under its table), with its
     lubricant and film temperature (None for a viscosity given as such). ``notes``: where the
-    film's turbulence notes go (as for ``[bearing.solver]``)."""
+    film's notes go (the layer liner's resolution and the turbulence notes, as for [bearing])."""
     from shaftline.film.case import (
         _bore,
         checked_surface,
+        layer_note,
         liner_of,
         lubricant_properties,
         solver_options,
@@ -993,5 +994,8 @@ def _film_support(
     if notes is not None:
         # a shared [alignment.film] table gives its note once, not once per bearing
         fresh = turbulence_notes(film.solver, options, geometry, operating, f"alignment.{where}.solver")
+        # The layer liner's under-resolution note, as [bearing.liner] gives it (film/case.py).
+        layer = layer_note(geometry, options.axial_nodes, f"alignment.{where}.")
+        fresh = ([] if layer is None else [layer]) + fresh
         notes.extend(note for note in fresh if note not in notes)
     return FilmSupport(bearing.name, problem, film.elements), (lubricant, film.lubricant.temperature)

@@ -33,8 +33,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from shaftline.errors import InputError, require_positive
-from shaftline.film.bearing import BearingState, FilmLoad, JournalBearing
+from shaftline.errors import InputError, SolverFailure, require_positive
+from shaftline.film.bearing import BearingState, FilmLoad, JournalBearing, LinerConvergenceError
 from shaftline.film.problem import BearingProblem
 from shaftline.shaft.alignment import AlignmentModel, ConditionResult
 from shaftline.shaft.model import Condition, ShaftLine
@@ -55,6 +55,18 @@ __all__ = [
 #: above the converged solutions' 1e-6 and far below the 1.6-31 (160-3100 %) of the films
 #: that ground in the tests and examples (docs/theory.md Sect. 10.1, "Contact fall-back").
 GROUNDED_FORCE_MISMATCH = 1e-2
+
+
+def _liner_trials_note(failed: int) -> str:
+    """The message's note on line-search trials rejected because an elastic liner did not settle."""
+    if not failed:
+        return ""
+    trials = f"{failed} line-search trial{'s' * (failed != 1)}"
+    were = "were" if failed != 1 else "was"
+    return (
+        f"; {trials} asked more of the elastic liner than it holds (its film-liner iteration did not "
+        f"settle) and {were} rejected as a film cutting the bore"
+    )
 
 
 @dataclass(frozen=True)
@@ -609,13 +621,13 @@ class CoupledAlignment:
             s = self._start(condition, points)
         if self._min_film_share(s, condition) <= 0.0:
             s = self._pulled_inside(s, condition)
-        current = self._evaluate(s, condition)
-        solutions = 1
+        current, solutions = self._first_iterate(s, condition)
         history = [current.norm]
         iterations = 0
         converged = False
         force_residual = math.inf
         message = ""
+        failed_trials = 0
         options = self.options
         while True:
             jacobian, stiffness = self._jacobian(current)
@@ -643,9 +655,15 @@ class CoupledAlignment:
             while alpha > 1e-6 and self._min_film_share(current.s + alpha * step, condition) < 0.2 * room:
                 alpha *= 0.5
             while alpha > 1e-6:
-                trial = self._evaluate(current.s + alpha * step, condition)
+                try:
+                    trial: _Iterate | None = self._evaluate(current.s + alpha * step, condition)
+                except LinerConvergenceError:
+                    # The trial asks more of an elastic liner than it holds (its film-liner
+                    # iteration does not settle): rejected like a film cutting the bore.
+                    trial = None
+                    failed_trials += 1
                 solutions += 1
-                if trial.norm < (1.0 - 1e-4 * alpha) * current.norm:
+                if trial is not None and trial.norm < (1.0 - 1e-4 * alpha) * current.norm:
                     accepted = trial
                     break
                 alpha *= 0.5
@@ -654,10 +672,12 @@ class CoupledAlignment:
                 grounded = self._grounded(current.s, step, mismatches, condition)
                 if grounded:
                     spent = (iterations, solutions * len(self._films))
-                    return self._fall_back(grounded, current, points, condition, progress, spent, mismatches)
+                    return self._fall_back(
+                        grounded, current, points, condition, progress, spent, mismatches, failed_trials
+                    )
                 message = (
                     f"the coupled iteration stalled at a film mismatch of {current.norm:.3g} of the clearance, "
-                    f"force mismatch {force_residual:.3g}"
+                    f"force mismatch {force_residual:.3g}" + _liner_trials_note(failed_trials)
                 )
                 break
             current = accepted
@@ -707,13 +727,16 @@ class CoupledAlignment:
         progress: Callable[[int, float], None] | None,
         spent: tuple[int, int] = (0, 0),
         mismatches: list[float] | None = None,
+        failed_trials: int = 0,
     ) -> CoupledResult:
         """Solve again with the grounded films as contact at their bore: a multi-point support
         along the bore bottom with the top of the bore as a second contact (edge loading).
 
         ``spent``: the Newton iterations and film solutions before the films grounded, counted
         in the result's with those of the solution after it; ``mismatches``: each film's force
-        mismatch at the stall (:meth:`_film_force_mismatches`), quoted in the message."""
+        mismatch at the stall (:meth:`_film_force_mismatches`), quoted in the message;
+        ``failed_trials``: line-search trials whose film-liner iteration did not settle (said in
+        the message: the liner could not hold what those trials asked)."""
         line = self.line
         bearings = list(line.bearings)
         for k in grounded:
@@ -758,7 +781,7 @@ class CoupledAlignment:
             f"film at its floor in {names}: the film cannot carry its share there{shortfall}, so the bearing was "
             "solved as contact at the bore (edge loading); the film results are those at the last journal line "
             "reached, at the floor (not an equilibrium)"
-        )
+        ) + _liner_trials_note(failed_trials)
         return CoupledResult(
             condition=result_condition,
             films=films,
@@ -771,9 +794,34 @@ class CoupledAlignment:
             message=message,
         )
 
-    def _pulled_inside(self, s: np.ndarray, condition: Condition) -> np.ndarray:
-        """Move each journal line towards its bore centre until every film is open."""
-        centre = np.zeros_like(s)
+    def _first_iterate(self, s: np.ndarray, condition: Condition) -> tuple[_Iterate, int]:
+        """The iterate at the starting lines, and the film solutions it took.
+
+        A start whose elastic liner does not settle (its film-liner iteration fails, as for a
+        film cutting the bore) is moved towards the bore centres as :meth:`_pulled_inside`
+        does, a fifth of the way at a time, until it settles.
+
+        Raises
+        ------
+        SolverFailure
+            When no start within 20 such moves settles (naming the liners).
+        """
+        centre = self._bore_centres(condition)
+        for attempt in range(1, 21):
+            try:
+                return self._evaluate(s, condition), attempt
+            except LinerConvergenceError:
+                s = centre + 0.8 * (s - centre)
+        names = ", ".join(f.support.bearing for f in self._films if f.support.problem.geometry.liner is not None)
+        raise SolverFailure(
+            f"film-supported alignment: the elastic liner of {names} does not settle at any starting line "
+            "(its film-liner iteration fails); try a stiffer or thinner liner, or a finer film grid"
+        )
+
+    def _bore_centres(self, condition: Condition) -> np.ndarray:
+        """Nodal dofs of every film bearing's journal on its bore centre line (the film open
+        all round: eccentricity zero)."""
+        centre = np.zeros((2, int(self._offsets[0][-1])))
         for film, part in zip(self._films, self._slices(), strict=True):
             bearing = self.line.bearings[film.index]
             c = film.support.problem.geometry.radial_clearance
@@ -783,6 +831,11 @@ class CoupledAlignment:
             )
             centre[0, part][1::2] = bearing.slope
             centre[1, part][0::2] = bearing.offset_z + condition.offsets_z.get(bearing.name, 0.0)
+        return centre
+
+    def _pulled_inside(self, s: np.ndarray, condition: Condition) -> np.ndarray:
+        """Move each journal line towards its bore centre until every film is open."""
+        centre = self._bore_centres(condition)
         for _ in range(60):
             if self._min_film_share(s, condition) > 0.05:
                 return s

@@ -161,21 +161,39 @@ def journal_in_bore(film: FilmBearingResult, *, ax: Any) -> Any:
     return ax
 
 
+def _grounded(coupled: CoupledResult, name: str) -> bool:
+    """True for a film bearing of ``coupled`` that fell back to contact at its bore."""
+    return any(f.name == name and f.contact for f in coupled.films)
+
+
 @figure_function(layout=(1, 2), size=(12, 4.2))
 def point_vs_film(coupled: CoupledResult, *, ax: Any) -> Any:
     """Point supports (the bearings as declared) against film supports: vertical reactions (left)
-    and the relative slope of the shaft across each bearing (right); ``ax`` is two axes."""
+    and the relative slope of the shaft across each bearing (right); ``ax`` is two axes. A film
+    bearing that fell back to contact is drawn apart (hatched, "film at its floor: contact at
+    the bore"): its bar is the contact solution's, not a film's."""
     left, right = ax
     names = [plain(b.name) for b in coupled.condition.bearings]
     positions = np.arange(len(names))
+    grounded = np.array([_grounded(coupled, b.name) for b in coupled.condition.bearings], dtype=bool)
     for axes, key, scale, label in (
         (left, "reaction_y", 1e-3, "reaction [kN]"),
         (right, "relative_slope", 1e3, "relative slope [mrad]"),
     ):
         point = [getattr(b, key) * scale for b in coupled.point_supports.bearings]
-        film = [getattr(b, key) * scale for b in coupled.condition.bearings]
+        film = np.array([getattr(b, key) * scale for b in coupled.condition.bearings])
         axes.bar(positions - 0.2, point, 0.4, label="point supports", color="0.6")
-        axes.bar(positions + 0.2, film, 0.4, label="film supports", color="C0")
+        if not grounded.all():
+            axes.bar(positions[~grounded] + 0.2, film[~grounded], 0.4, label="film supports", color="C0")
+        if grounded.any():
+            axes.bar(
+                positions[grounded] + 0.2,
+                film[grounded],
+                0.4,
+                label="film at its floor: contact at the bore",
+                color="C3",
+                hatch="//",
+            )
         axes.axhline(0, color="k", lw=0.8)
         axes.set_xticks(positions, names, rotation=20, ha="right", fontsize=8)
         axes.set_ylabel(label)
