@@ -37,6 +37,7 @@ from __future__ import annotations
 import multiprocessing
 import os
 import signal
+import sys
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_EXCEPTION, Future, ProcessPoolExecutor, wait
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -104,8 +105,17 @@ def _context(function: Callable[[Any], Any]) -> Any:
         return multiprocessing.get_context("spawn")
     context = multiprocessing.get_context("forkserver")
     module = getattr(getattr(function, "func", function), "__module__", None)
-    if module and module != "__main__":
-        context.set_forkserver_preload([module])
+    # Every worker runs the caller's script again (as "__mp_main__": the fork server of Python
+    # 3.11 does not preload it, its "main_path" is never passed), and that script imports what
+    # it imported here: 0.2 s a worker a pool for a script that loads the case reader. So the
+    # fork server preloads this process's shaftline modules too, and the workers find them.
+    loaded = sorted(
+        name
+        for name in sys.modules
+        if (name == "shaftline" or name.startswith("shaftline.")) and not name.endswith(".__main__")
+    )
+    preload = ([module] if module and module not in ("__main__", "__mp_main__") else []) + loaded
+    context.set_forkserver_preload(list(dict.fromkeys(preload)))
     from multiprocessing import forkserver
 
     saved = {name: os.environ.get(name) for name in SINGLE_THREADED}
