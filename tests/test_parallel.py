@@ -8,6 +8,7 @@ and their exceptions cross process boundaries and come back in order.
 
 from __future__ import annotations
 
+import json
 import os
 import signal
 import subprocess
@@ -399,31 +400,64 @@ def _thread_settings(_: int) -> dict[str, str | None]:
     return {name: os.environ.get(name) for name in parallel.SINGLE_THREADED}
 
 
-def test_work_here_shares_the_jobs_and_keeps_their_order():
-    """``work_here``: this process solves jobs from the end of the list while the workers start
-    (the last job always, so its pid is among them), the workers the rest; the results are the
-    serial ones in input order."""
-    items = list(range(40))
-    serial = parallel.map(slow_square, items, backend="serial")
-    shared = parallel.map(slow_square, items, workers=2, work_here=True)
-    assert [r for r, _ in shared] == [r for r, _ in serial]
-    pids = [pid for _, pid in shared]
-    assert pids[-1] == os.getpid()  # the last job is this process's
-    assert any(pid != os.getpid() for pid in pids)  # and the workers took the first ones
+def _fresh_process(script: str, folder: Path) -> subprocess.CompletedProcess[str]:
+    """``script`` run as a file (its functions pickle by name) in a new interpreter on this source
+    tree: its first pool starts a fork server."""
+    path = folder / "script.py"
+    path.write_text(textwrap.dedent(script))
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src") + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    return subprocess.run([sys.executable, str(path)], cwd=ROOT, env=env, capture_output=True, text=True, timeout=120)
 
 
-def test_work_here_only_while_the_pool_starts():
-    """A kept pool's later calls find their workers running: the jobs all go to them."""
-    with parallel.Pool(workers=2) as pool:
-        first = pool.map(_pid, range(6), work_here=True)
-        second = pool.map(_pid, range(6), work_here=True)
-    assert os.getpid() in first
-    assert os.getpid() not in second
+def test_work_here_while_the_workers_start_and_not_after(tmp_path):
+    """``work_here``: in a process whose fork server is not running yet, the caller solves jobs
+    from the end of the list (the last always) while the workers start, and the workers the
+    first ones; the results are the serial ones in input order. Once the fork server runs,
+    workers start in milliseconds and the jobs all go to them."""
+    script = """
+        import json, os, time
+        from shaftline import parallel
+
+        def job(x):
+            time.sleep(0.02 * (1 + x % 3))
+            return x * x, os.getpid()
+
+        if __name__ == "__main__":
+            items = list(range(40))
+            first = parallel.map(job, items, workers=2, work_here=True)
+            second = parallel.map(job, items, workers=2, work_here=True)
+            print(json.dumps({"me": os.getpid(), "first": first, "second": second}))
+        """
+    result = _fresh_process(script, tmp_path)
+    assert result.returncode == 0, result.stderr
+    out = json.loads(result.stdout)
+    for run in ("first", "second"):
+        assert [r for r, _ in out[run]] == [x * x for x in range(40)]
+    first_pids = [pid for _, pid in out["first"]]
+    assert first_pids[-1] == out["me"]  # the last job is the caller's
+    assert any(pid != out["me"] for pid in first_pids)  # and the workers took the first ones
+    assert out["me"] not in {pid for _, pid in out["second"]}
 
 
-def test_an_error_in_a_job_solved_here_reaches_the_caller_with_its_type():
-    with pytest.raises(InputError, match=r"^load_y = 3"):
-        parallel.map(refuse, [0, 1, 2, 3], workers=2, work_here=True)  # 3, the last, is solved here
+def test_an_error_in_a_job_solved_here_reaches_the_caller_with_its_type(tmp_path):
+    script = """
+        from shaftline import parallel
+        from shaftline.errors import InputError
+
+        def refuse(x):
+            if x == 3:
+                raise InputError("load_y", float(x), "N", "anything but 3")
+            return x
+
+        if __name__ == "__main__":
+            try:
+                parallel.map(refuse, [0, 1, 2, 3], workers=2, work_here=True)  # 3, the last, solved here
+            except InputError as error:
+                print(type(error).__name__, error)
+        """
+    result = _fresh_process(script, tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("InputError load_y = 3"), result.stdout
 
 
 def test_ctrl_c_while_this_process_works_leaves_no_process():

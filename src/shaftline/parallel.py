@@ -38,6 +38,7 @@ import multiprocessing
 import os
 import signal
 import sys
+import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_EXCEPTION, Future, ProcessPoolExecutor, wait
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -93,8 +94,13 @@ def _ignore_sigint() -> None:
 SINGLE_THREADED = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
 
 
-def _context(function: Callable[[Any], Any]) -> Any:
-    """``forkserver`` where available (fast start, no inherited threads), else ``spawn``.
+#: Whether this process has started its fork server (its workers then start in milliseconds).
+_FORK_SERVER: list[bool] = []
+
+
+def _context(function: Callable[[Any], Any]) -> tuple[Any, bool]:
+    """``forkserver`` where available (fast start, no inherited threads), else ``spawn``; and
+    whether the workers start slowly (``spawn``, or the fork server started by this call).
 
     The fork server imports the module of ``function`` before it forks the first worker
     (the solver modules take about half a second to import), so each worker starts with it
@@ -102,7 +108,7 @@ def _context(function: Callable[[Any], Any]) -> Any:
     environment (and so in every worker's); later calls reuse it as it is.
     """
     if "forkserver" not in multiprocessing.get_all_start_methods():
-        return multiprocessing.get_context("spawn")
+        return multiprocessing.get_context("spawn"), True
     context = multiprocessing.get_context("forkserver")
     module = getattr(getattr(function, "func", function), "__module__", None)
     # Every worker runs the caller's script again (as "__mp_main__": the fork server of Python
@@ -128,7 +134,9 @@ def _context(function: Callable[[Any], Any]) -> Any:
                 os.environ.pop(name, None)
             else:
                 os.environ[name] = value
-    return context
+    slow = not _FORK_SERVER
+    _FORK_SERVER.append(True)
+    return context, slow
 
 
 def _stop(executor: ProcessPoolExecutor) -> None:
@@ -147,8 +155,10 @@ def _stop(executor: ProcessPoolExecutor) -> None:
             process.join(timeout=5.0)
 
 
-def _new_executor(function: Callable[[Any], Any], count: int) -> ProcessPoolExecutor:
-    return ProcessPoolExecutor(max_workers=count, mp_context=_context(function), initializer=_ignore_sigint)
+def _new_executor(function: Callable[[Any], Any], count: int) -> tuple[ProcessPoolExecutor, bool]:
+    """A pool of ``count`` workers, and whether they start slowly (:func:`_context`)."""
+    context, slow = _context(function)
+    return ProcessPoolExecutor(max_workers=count, mp_context=context, initializer=_ignore_sigint), slow
 
 
 def _gather_process(
@@ -161,58 +171,73 @@ def _gather_process(
     """Run the batches on a pool and collect them in order (the pool is the caller's to stop).
 
     With ``work_here`` the caller solves batches too, from the end of the list, until the first
-    worker delivers: a pool's workers start from the fork server, which the first pool of a
-    process must start and fill with the solver's imports first (about half a second), and
-    this process would otherwise wait through it with a core idle. The batches are handed out
-    from a thread meanwhile, because handing the first ones out waits for the fork server.
+    worker delivers: the first pool of a process waits for its fork server to start and import
+    the solver (about a second), and this process would otherwise wait through it with a core
+    idle. The batches are handed to the pool from the front by a thread meanwhile (handing out
+    the first ones waits for the fork server), so the two ends meet wherever the work does.
     """
     results: list[list[Any]] = [[] for _ in batches]
     futures: dict[Future[list[Any]], int] = {}
-    kept = len(batches) - 1 if work_here and len(batches) > 1 else len(batches)
+    lock = threading.Lock()
+    ends = [0, len(batches)]  # next batch from the front (the pool), one past the last (here)
     failure: list[BaseException] = []
-
-    import threading
-
     stop = threading.Event()
+
+    def from_front() -> int | None:
+        with lock:
+            if stop.is_set() or ends[0] >= ends[1]:
+                return None
+            ends[0] += 1
+            return ends[0] - 1
+
+    def from_back() -> int | None:
+        with lock:
+            if ends[1] <= ends[0]:
+                return None
+            ends[1] -= 1
+            return ends[1]
 
     def submit() -> None:
         try:
-            for index in range(kept):
-                if stop.is_set():
-                    return
-                futures[executor.submit(_run_batch, function, batches[index])] = index
+            while (index := from_front()) is not None:
+                future = executor.submit(_run_batch, function, batches[index])
+                with lock:
+                    futures[future] = index
         except BaseException as error:  # told to the caller's thread below
             failure.append(error)
 
-    if kept < len(batches):
+    def delivered() -> bool:
+        with lock:
+            return any(future.done() for future in futures)
+
+    if work_here and len(batches) > 1:
         handing_out = threading.Thread(target=submit, name="shaftline-pool-submit", daemon=True)
         handing_out.start()
         try:
-            results[kept] = _run_batch(function, batches[kept])
+            while not delivered():
+                index = from_back()
+                if index is None:
+                    # All handed out: take back a queued one from the end, if any is still queued.
+                    with lock:
+                        queued = sorted(futures, key=futures.__getitem__, reverse=True)
+                    taken = next((future for future in queued if future.cancel()), None)
+                    if taken is None:
+                        break
+                    with lock:
+                        index = futures.pop(taken)
+                results[index] = _run_batch(function, batches[index])
+                on_batch(index)
         except BaseException:
             # Ctrl-C or the function's error: no more workers started, and every one started is
             # in the pool's table when the caller ends them.
             stop.set()
             handing_out.join()
             raise
-        on_batch(kept)
         handing_out.join()
-        if failure:
-            raise failure[0]
-        # More from the end while no worker has delivered and some batch is still queued here.
-        order = sorted(futures, key=futures.__getitem__, reverse=True)
-        while not any(future.done() for future in order):
-            taken = next((future for future in order if future.cancel()), None)
-            if taken is None:
-                break
-            order.remove(taken)
-            index = futures.pop(taken)
-            results[index] = _run_batch(function, batches[index])
-            on_batch(index)
     else:
         submit()
-        if failure:
-            raise failure[0]
+    if failure:
+        raise failure[0]
     pending = set(futures)
     while pending:
         finished, pending = wait(pending, return_when=FIRST_EXCEPTION)
@@ -570,11 +595,13 @@ class Pool:
         if self.backend == "serial":
             results = _serial(function, batches, on_batch)
         elif self.backend == "process":
-            starting = self._executor is None
+            slow = False
             if self._executor is None:
-                self._executor = _new_executor(function, self.size)
+                self._executor, slow = _new_executor(function, self.size)
             try:
-                results = _gather_process(self._executor, function, batches, on_batch, work_here=work_here and starting)
+                # The caller works only while the workers start slowly: on running workers (a
+                # kept pool, or a fork server that runs) it would only take a core from them.
+                results = _gather_process(self._executor, function, batches, on_batch, work_here=work_here and slow)
             except BaseException:
                 _stop(self._executor)
                 self._executor = None
