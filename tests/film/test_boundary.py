@@ -203,3 +203,48 @@ def test_seed001_rigid_rig_carries_its_load_below_the_mean_plane_at_15_rpm() -> 
     assert seed.min_film_ratio == pytest.approx(0.497, abs=1e-3)
     assert slow.max_asperity_pressure > float(asperity_pressure(surface, np.zeros(1))[0])
     assert slow.asperity_load_share > seed.asperity_load_share
+
+
+def test_a_stagnating_liner_trial_is_given_up_early(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Seed 001's rig at 15 rpm as issue 13's forward model sets it up (bent journal, misalignment
+    2e-6 rad, 41 x 120), on the seed's rough pair and polymer liner: the line search tries steps
+    whose film-liner iteration stalls at a residual of 1e-3-1e-2 c. Each such trial ran its 40
+    steps (27 trials, 4472 film solutions, 15 s); the iteration now gives up when its residual has
+    not halved in LINER_STAGNATION steps (314 film solutions) with the same equilibrium. The bound
+    1000 sits between the two counts, far from both."""
+    import shaftline.film.reynolds as reynolds
+    from shaftline.film import BearingGeometry, OperatingPoint, SolverOptions
+    from shaftline.film.geometry import BentJournal
+    from shaftline.film.liner import Liner
+    from shaftline.monitor.forward import RigCase, rig_shape_for
+
+    case = RigCase()
+    layout = case.layout
+    stations, shape = rig_shape_for(case)
+    bend = case.bend_scale * shape
+    geometry = BearingGeometry(
+        length=layout.length,
+        diameter=2.0 * layout.radius,
+        radial_clearance=layout.radial_clearance,
+        bent_journal=BentJournal(stations, bend, np.zeros_like(bend)),
+        rotation=1 if layout.rotation == 1 else -1,
+        surface=SurfaceRoughness.preset("steel_polymer"),
+        liner=Liner.preset("polymer_composite"),
+    )
+    bearing = JournalBearing(
+        geometry,
+        OperatingPoint(speed=15 * math.pi / 30, viscosity=case.viscosity, density=997.0),
+        SolverOptions(axial_nodes=41, circumferential_nodes=120, min_film_floor=1e-4),
+    )
+    count = [0]
+    solve = reynolds.ReynoldsSolver.solve
+
+    def counted(self, *args, **kwargs):  # type: ignore[no-untyped-def]
+        count[0] += 1
+        return solve(self, *args, **kwargs)
+
+    monkeypatch.setattr(reynolds.ReynoldsSolver, "solve", counted)
+    result = bearing.equilibrium(load_y=-case.load, tilt_y=case.misalignment)
+    assert result.converged and not result.contact
+    assert result.state.min_film_thickness == pytest.approx(-1.94e-6, abs=0.01e-6)  # below the mean plane
+    assert count[0] < 1000
