@@ -14,8 +14,8 @@ named in :data:`BACKENDS` (the style of SciPy's ``method=`` choices):
     it (Linux), else ``spawn``, never ``fork``: numba's and OpenMP's thread pools do not
     survive a fork of a process that has started them, and a forked child would inherit
     whatever solver state the parent holds. With ``work_here`` the caller solves jobs too
-    while its workers start (their fork server imports the solver first: about half a
-    second that would leave a core idle).
+    while its workers start slowly (the first pool of a process waits about 0.7 s for its
+    fork server to import the solver, which would leave a core idle).
 ``"dask"``
     A ``dask.distributed`` cluster: the scheduler at ``scheduler`` (``"tcp://host:8786"``), the
     caller's own ``dask.distributed.Client`` given as ``scheduler``,
@@ -437,8 +437,6 @@ def _bounded(make: Callable[[], R], seconds: float, field: str, scheduler: str, 
     so one left waiting does not hold the process at exit, and a client it makes after the
     caller gave up is closed (not left registered as Dask's default client).
     """
-    import threading
-
     box: dict[str, Any] = {}
     lock = threading.Lock()
 

@@ -213,29 +213,12 @@ def test_a_stagnating_liner_trial_is_given_up_early(monkeypatch: pytest.MonkeyPa
     not halved in LINER_STAGNATION steps (314 film solutions) with the same equilibrium. The bound
     1000 sits between the two counts, far from both."""
     import shaftline.film.reynolds as reynolds
-    from shaftline.film import BearingGeometry, OperatingPoint, SolverOptions
-    from shaftline.film.geometry import BentJournal
     from shaftline.film.liner import Liner
-    from shaftline.monitor.forward import RigCase, rig_shape_for
+    from shaftline.monitor.forward import RigCase, rig_bearing
 
     case = RigCase()
-    layout = case.layout
-    stations, shape = rig_shape_for(case)
-    bend = case.bend_scale * shape
-    geometry = BearingGeometry(
-        length=layout.length,
-        diameter=2.0 * layout.radius,
-        radial_clearance=layout.radial_clearance,
-        bent_journal=BentJournal(stations, bend, np.zeros_like(bend)),
-        rotation=1 if layout.rotation == 1 else -1,
-        surface=SurfaceRoughness.preset("steel_polymer"),
-        liner=Liner.preset("polymer_composite"),
-    )
-    bearing = JournalBearing(
-        geometry,
-        OperatingPoint(speed=15 * math.pi / 30, viscosity=case.viscosity, density=997.0),
-        SolverOptions(axial_nodes=41, circumferential_nodes=120, min_film_floor=1e-4),
-    )
+    surface = SurfaceRoughness.preset("steel_polymer")
+    bearing = rig_bearing(case, 15 * math.pi / 30, surface, Liner.preset("polymer_composite"))
     count = [0]
     solve = reynolds.ReynoldsSolver.solve
 

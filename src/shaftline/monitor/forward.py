@@ -32,6 +32,9 @@ from shaftline.monitor.identification import film_between_circles
 from shaftline.monitor.probes import ProbeLayout, seed001_layout
 
 if TYPE_CHECKING:
+    from shaftline.film import JournalBearing
+    from shaftline.film.liner import Liner
+    from shaftline.film.roughness import SurfaceRoughness
     from shaftline.shaft import ShaftLine
 
 #: Counterweight (overhung mass) of the rig, kg (seed 001 Sect. 2.1).
@@ -235,8 +238,14 @@ def rig_shape_for(case: RigCase) -> tuple[np.ndarray, np.ndarray]:
     return np.asarray(z) * stretch, np.asarray(shape) * stretch
 
 
-def equilibrium_line(case: RigCase, speed: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool, float]:
-    """Static journal centre line from the bearing solver: stations, ey, ez (m), contact, h_min (m)."""
+def rig_bearing(
+    case: RigCase, speed: float, surface: SurfaceRoughness | None = None, liner: Liner | None = None
+) -> JournalBearing:
+    """The rig's stern bearing as the forward model solves it: the layout's bore and clearance
+    (plus sleeve wear), the journal bent to the case's shape, the case's water film at ``speed``
+    (rad/s), 41 x 120 nodes unless the case says; ``surface`` and ``liner``
+    (:class:`~shaftline.film.roughness.SurfaceRoughness`, :class:`~shaftline.film.liner.Liner`)
+    rough and lined it (none by default: rigid and smooth)."""
     from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
     from shaftline.film.geometry import BentJournal
 
@@ -249,14 +258,24 @@ def equilibrium_line(case: RigCase, speed: float) -> tuple[np.ndarray, np.ndarra
         radial_clearance=layout.radial_clearance + case.sleeve_wear,
         bent_journal=BentJournal(stations, bend, np.zeros_like(bend)),
         rotation=1 if layout.rotation == 1 else -1,
+        surface=surface,
+        liner=liner,
     )
-    bearing = JournalBearing(
+    return JournalBearing(
         geometry,
         OperatingPoint(speed=speed, viscosity=case.viscosity, density=997.0),
         SolverOptions(
             axial_nodes=case.axial_nodes, circumferential_nodes=case.circumferential_nodes, min_film_floor=1e-4
         ),
     )
+
+
+def equilibrium_line(case: RigCase, speed: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool, float]:
+    """Static journal centre line from the bearing solver: stations, ey, ez (m), contact, h_min (m)."""
+    layout = case.layout
+    stations, shape = rig_shape_for(case)
+    bend = case.bend_scale * shape
+    bearing = rig_bearing(case, speed)
     result = bearing.equilibrium(load_y=-case.load, tilt_y=case.misalignment)
     position = result.state.position
     arm = stations - 0.5 * layout.length
