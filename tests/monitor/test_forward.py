@@ -14,6 +14,11 @@ exceed it) plus 0.01 um of residual runout (a keyphasor mark up to one sample la
 Time-mean films are allowed 0.01 um: the quantiser's bias with noise of a third of its step is at most
 q exp(-2 pi^2 sigma^2 / q^2) / pi = 0.005 um per probe (Widrow and Kollar 2008, Ch. 5), at most 1.5 times
 that through the least squares.
+
+The rig is seed 001's as examples/monitor_rig.toml has it: rough sleeve and liner (Ra 0.8 / 1.6 um,
+asperity contact), the 20 mm polymer liner, 40 urad of misalignment (the loaded end lower), at the seed's
+speeds 15-215 rpm. The probes see the journal: the truth they are compared with is the gap to the
+undeformed bore (negative where the journal presses the liner in).
 """
 
 from __future__ import annotations
@@ -24,15 +29,17 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from shaftline.errors import InputError
+from shaftline.errors import InputError, SolverFailure
+from shaftline.film.liner import Liner
+from shaftline.film.roughness import SurfaceRoughness
 from shaftline.monitor.bending import Basis, film_map, least_squares_line, min_film_along, model_line
-from shaftline.monitor.forward import RigCase, rig_bending_shape, simulate
+from shaftline.monitor.forward import RigCase, equilibrium_line, equilibrium_lines, rig_bending_shape, simulate
 from shaftline.monitor.identification import _solver, directions, film_noise_std, probe_films, reference_points
 from shaftline.monitor.orbits import compensate_runout, revolution_marks, runout_profile, shaft_phase, whole_revolutions
 from shaftline.monitor.regimes import classify, regime_lengths, thresholds
 
 RPM = 2 * math.pi / 60
-SPEEDS = (135.0, 175.0, 215.0)  # rpm at which the rigid-bore solver carries the load on a film
+SPEEDS = (15.0, 35.0, 95.0, 175.0, 215.0)  # rpm, seed 001 Sect. 2 and Table 4
 MEAN_BOUND = 0.01e-6
 RUNOUT_RESIDUAL = 0.01e-6
 STATIONS = np.linspace(0.0, 1.2, 241)
@@ -52,22 +59,33 @@ def _identify(case: RigCase, recording, profile, correction: bool = True):
     return {"window": window, "references": references, "films": films, "orbits": orbits, "line": line}
 
 
-def _runout_profile(case: RigCase):
-    slow = simulate(case, 15 * RPM)
+def _runout_profile(case: RigCase, line=None):
+    slow = simulate(case, 15 * RPM, line)
     gaps = case.layout.gaps(slow.signals)
     marks = revolution_marks(slow.keyphasor)
     window = whole_revolutions(marks)
     return runout_profile(gaps[window], shaft_phase(gaps.shape[0], marks)[window])
 
 
+def seed_rig(**changes) -> RigCase:
+    """Seed 001's rig as the example has it (rough, lined, the loaded end lower)."""
+    seed = {
+        "surface": SurfaceRoughness.preset("steel_polymer"),
+        "liner": Liner.preset("polymer_composite"),
+        "misalignment": 40e-6,
+    }
+    return RigCase(**(seed | changes))
+
+
 @pytest.fixture(scope="module")
 def rig():
-    case = RigCase()
-    profile = _runout_profile(case)
+    case = seed_rig()
+    lines = equilibrium_lines(case, [rpm * RPM for rpm in SPEEDS], backend="serial")
+    assert all(line.status == "ok" for line in lines)  # the comparison is of journals the solver placed
+    profile = _runout_profile(case, lines[0])  # the slow roll at 15 rpm, the first speed
     runs = {}
-    for rpm in SPEEDS:
-        recording = simulate(case, rpm * RPM)
-        assert not recording.contact  # the comparison is of films the solver carries
+    for rpm, line in zip(SPEEDS, lines, strict=True):
+        recording = simulate(case, rpm * RPM, line)
         runs[rpm] = (recording, _identify(case, recording, profile))
     return case, profile, runs
 
@@ -105,11 +123,21 @@ def test_film_at_sections_without_probes(rig):
         covariance = inverse @ np.diag(_gap_std(case, section) ** 2) @ inverse.T
         variance += weights[:, j, None] ** 2 * np.einsum("ti,ij,tj->t", along, covariance, along)[None, :]
     bound = 5 * np.sqrt(variance) + RUNOUT_RESIDUAL
+    # The mean line interpolates the three section centres in the basis (1, z - L/2, shape): a section's mean
+    # centre error (< MEAN_BOUND, the test above) reaches z with the weights of that interpolation (up to 11 at
+    # the loaded end, which lies outside the sections), k's error with those of its linear interpolation (<= 1).
+    stations, shape = rig_bending_shape()
+
+    def model_basis(x):
+        return np.stack([np.ones_like(x), x - 0.5 * layout.length, np.interp(x, stations, shape)], axis=1)
+
+    reach = np.abs(model_basis(z) @ np.linalg.inv(model_basis(layout.positions))).sum(axis=1)
+    mean_bound = (reach + 1.0) * MEAN_BOUND
     for recording, result in runs.values():
         film = film_map(result["line"], layout, theta, z)
         true = recording.film(layout, theta, z)[result["window"]]
         assert np.all(np.abs(film - true) <= np.maximum(0.02 * np.abs(true), bound[None]))
-        assert np.abs((film - true).mean(axis=0)).max() < MEAN_BOUND
+        assert np.all(np.abs((film - true).mean(axis=0)) < mean_bound[:, None])
 
 
 def test_regime_lengths_match_the_truth(rig):
@@ -133,7 +161,9 @@ def test_min_film_rises_with_speed_at_each_section(rig):
     _, _, runs = rig
     identified = np.array([[orbit.min_film.mean() for orbit in runs[rpm][1]["orbits"]] for rpm in SPEEDS])
     assert np.all(np.diff(identified, axis=0) > 0)
-    assert np.all(np.array([runs[rpm][0].solver_min_film for rpm in SPEEDS])[1:] > runs[SPEEDS[0]][0].solver_min_film)
+    # the bearing's own film (liner deformed) too, and the load moves off the asperities
+    assert np.all(np.diff([runs[rpm][0].solver_min_film for rpm in SPEEDS]) > 0)
+    assert np.all(np.diff([runs[rpm][0].asperity_load_share for rpm in SPEEDS]) < 0)
 
 
 def test_loaded_end_stays_in_boundary_or_mixed_longest(rig):
@@ -149,7 +179,41 @@ def test_loaded_end_stays_in_boundary_or_mixed_longest(rig):
         lengths.append(regime_lengths(STATIONS, hmin, layout))
     boundary = [float(item.boundary[0]) for item in lengths]
     hydrodynamic = [float(item.hydrodynamic[0]) for item in lengths]
-    assert boundary[0] > boundary[1] > boundary[2] and hydrodynamic[-1] > hydrodynamic[0]
+    assert np.all(np.diff(boundary) < 0) and np.all(np.diff(hydrodynamic) > 0)
+
+
+def test_probes_see_the_journal_not_the_pressed_liner(rig):
+    """Seed 001 Sect. 5.1: at D1's bottom the identified film is negative at low speed (the journal has pressed
+    the liner in; the probes in the housing read less than their mounting distance). The bearing's own film is
+    the probes' plus the liner's compression: never thinner than theirs, and the smallest of it within the
+    compression of the probes' smallest."""
+    case, _, runs = rig
+    for rpm in SPEEDS[:2]:
+        bottom = runs[rpm][1]["films"][0][1][:, np.argmin(np.abs(np.arange(0.0, 360.0, 15.0) - 180.0))]
+        assert bottom.mean() < 0.0
+    for recording, result in runs.values():
+        ey, ez = recording.centres(STATIONS)
+        probes = (recording.clearance - np.hypot(ey, ez))[result["window"]].mean(axis=0).min()
+        assert probes < 0.0 < recording.max_liner_deformation
+        assert probes <= recording.solver_min_film <= probes + recording.max_liner_deformation
+
+
+def test_a_solver_that_cannot_start_is_one_line(monkeypatch):
+    """A solver that stops without a position (here a liner that does not settle at the first one, which a soft
+    liner under a large bend can do; made to happen so that the test does not hang on today's solver limits) stops
+    the simulation with one line naming the speed and what to change (the command line: exit 3, nothing written)."""
+    from shaftline.film.bearing import JournalBearing, LinerConvergenceError
+
+    def stalls(*args, **kwargs):
+        raise LinerConvergenceError(0.0312)
+
+    monkeypatch.setattr(JournalBearing, "equilibrium", stalls)
+    with pytest.raises(SolverFailure) as raised:
+        equilibrium_line(seed_rig(), 15 * RPM)
+    assert str(raised.value) == (
+        "monitor simulate: no journal position at 15 rpm: the bearing solver stopped (the film-liner iteration did "
+        "not settle, residual 0.0312); a smaller misalignment or bend_scale, or a stiffer liner, lets it start"
+    )
 
 
 def test_model_shape_beats_the_least_squares_curve_at_the_bearing_ends(rig):

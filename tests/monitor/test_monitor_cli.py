@@ -17,13 +17,16 @@ EXAMPLE = ROOT / "examples" / "monitor_rig.toml"
 
 @pytest.mark.slow
 def test_simulate_example_writes_recordings_figures_and_json(tmp_path):
-    """The example end to end (4 s): identified regime lengths equal the truth to the bound of
-    tests/monitor/test_forward.py (about a mm), film errors below 0.01 µm, recordings and figures written."""
+    """The example end to end (about 10 s): identified regime lengths equal the truth to the bound of
+    tests/monitor/test_forward.py (about a mm), film errors below 0.01 µm, recordings and figures written; the
+    bearing solver placed every journal (liner and asperities), the loaded end in boundary lubrication."""
     out = tmp_path / "out"
     result = invoke("monitor", "simulate", str(EXAMPLE), "--out", str(out), "--json", "-")
     assert result.exit_code == 0, result.stderr
     monitor = json.loads(result.stdout)["monitor"]
-    assert [round(p["speed"] * 30 / 3.141592653589793) for p in monitor["points"]] == [135, 175, 215]
+    assert [round(p["speed"] * 30 / 3.141592653589793) for p in monitor["points"]] == [35, 65, 95, 135, 175, 215]
+    assert all(p["truth"]["solver"]["status"] == "ok" for p in monitor["points"])
+    assert all(p["truth"]["solver"]["max_liner_deformation"] > 0 for p in monitor["points"])
     for point in monitor["points"]:
         truth = point["truth"]
         for name, value in point["regime_lengths"].items():
@@ -68,6 +71,8 @@ def test_simulate_defaults_are_the_forward_models():
         "seed",
     ):
         assert SimulateSection.model_fields[name].default == pytest.approx(getattr(RigCase(), name)), name
+    for name in ("duration", "surface", "liner"):  # none: revolutions, smooth, rigid
+        assert SimulateSection.model_fields[name].default is None and getattr(RigCase(), name) is None, name
     assert tuple(SimulateSection.model_fields["runout"].default) == pytest.approx(RigCase().runout)
 
 
@@ -103,3 +108,66 @@ def test_shaft_model_errors_are_one_line(tmp_path, old, new, message):
     result = invoke("monitor", "simulate", str(tmp_path / "monitor_rig.toml"))
     assert result.exit_code == 2
     assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1
+
+
+def _example_study(tmp_path: Path, text: str):
+    """The study of the example case with ``text`` as its file (shaft model beside it)."""
+    from shaftline.cases import load_case
+    from shaftline.monitor.capability import FilmMonitor
+
+    (tmp_path / "monitor_rig_shaft.toml").write_text((ROOT / "examples" / "monitor_rig_shaft.toml").read_text())
+    path = tmp_path / "monitor_rig.toml"
+    path.write_text(text)
+    return FilmMonitor(), load_case(path).studies["monitor"]
+
+
+def test_the_simulated_surfaces_are_the_monitor_tables(tmp_path):
+    """Beside the steel_polymer preset the solver's roughness is the [monitor] table's (Rq = rq_factor x Ra), so
+    that the solver's surfaces are those the regimes are judged on; given in the table, the table's own."""
+    text = EXAMPLE.read_text().replace('roughness_bearing = "1.6 um"', 'roughness_bearing = "2.0 um"')
+    text = text.replace("rq_factor = 1.25", "rq_factor = 1.2")
+    _, study = _example_study(tmp_path, text)
+    assert study.rig.surface.bore_rq == pytest.approx(1.2 * 2.0e-6, rel=1e-12)
+    assert study.rig.surface.journal_rq == pytest.approx(1.2 * 0.8e-6, rel=1e-12)
+    assert study.rig.liner.thickness == pytest.approx(0.020) and study.rig.liner.modulus == pytest.approx(2320e6)
+    own = text.replace('preset = "steel_polymer"', 'preset = "steel_polymer"\nbore_roughness = "1.0 um"')
+    _, study = _example_study(tmp_path, own)
+    assert study.rig.surface.bore_rq == pytest.approx(1.25 * 1.0e-6, rel=1e-12)  # the table's Ra, RA_TO_RQ
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        ('preset = "polymer_composite"', 'preset = "polymer_composite"\nthickness = "60 mm"',
+         "monitor.simulate.liner.thickness = 0.06 m"),
+        ('preset = "steel_polymer"', 'preset = "steel_polymer"\nbore_roughness = "400 um"',
+         "monitor.simulate.surface.bore_roughness = 0.0004 m"),
+    ],
+)  # fmt: skip
+def test_bad_simulated_surfaces_and_liners_are_one_line(tmp_path, old, new, message):
+    """A liner thicker than a quarter of the bore radius, a roughness beyond half the clearance: one line naming
+    the field, exit 2, before any solver runs."""
+    for name in ("monitor_rig.toml", "monitor_rig_shaft.toml"):
+        text = (ROOT / "examples" / name).read_text()
+        (tmp_path / name).write_text(text.replace(old, new) if name == "monitor_rig.toml" else text)
+    result = invoke("monitor", "simulate", str(tmp_path / "monitor_rig.toml"), "--out", str(tmp_path / "out"))
+    assert result.exit_code == 2, result.stderr
+    assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_speed_the_solver_did_not_converge_at_is_not_acceptable(tmp_path):
+    """A simulated journal the solver left short of the load is a finding that is not a rule check (exit 3
+    without --strict), naming the speed; a converged one gives none."""
+    from dataclasses import replace
+
+    text = EXAMPLE.read_text().replace(
+        'speeds = ["35 rpm", "65 rpm", "95 rpm", "135 rpm", "175 rpm", "215 rpm"]', 'speeds = ["175 rpm"]'
+    )
+    capability, study = _example_study(tmp_path, text)
+    result = capability.solve(study, task="simulate")
+    assert capability.findings(result) == []
+    (point,) = result.points
+    stalled = replace(result, points=(replace(point, recording=replace(point.recording, converged=False)),))
+    (finding,) = capability.findings(stalled)
+    assert not finding.criterion and finding.text.startswith("At 175 rpm the bearing solver did not converge")

@@ -19,7 +19,7 @@ from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph,
 
 if TYPE_CHECKING:
     from shaftline.monitor.case import MonitorSection
-    from shaftline.monitor.forward import Recording
+    from shaftline.monitor.forward import Recording, RigCase
     from shaftline.monitor.probes import ProbeLayout
     from shaftline.monitor.processing import Identified, RejectedWindow, SlowRoll
     from shaftline.monitor.study import MonitorResult, MonitorStudy, WindowResult
@@ -128,6 +128,12 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                         "film_error": point.film_error,
                         "min_film_error": point.line_error,
                         "solver_contact": point.recording.contact,
+                        "solver": {
+                            "status": point.recording.solver_status,
+                            "min_film": point.recording.solver_min_film,
+                            "max_liner_deformation": point.recording.max_liner_deformation,
+                            "asperity_load_share": point.recording.asperity_load_share,
+                        },
                     },
                 }
             )
@@ -163,7 +169,8 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
         # wider than the terminal is narrowed by rich inside the cells, a row over two lines.
         headers = ["rpm", "h_min [µm]", "B/M/H [mm]", "true B/M/H", "film err", "h_min err"]
         title = (
-            f"Synthetic recordings identified: mean h_min at {names}, lengths of the boundary, mixed and "
+            f"Synthetic recordings identified: mean h_min at {names} (journal to undeformed bore), lengths of the "
+            "boundary, mixed and "
             "hydrodynamic regions (identified and true, mm), largest error of the mean film round the sections and "
             "of h_min along the bearing (µm)"
         )
@@ -192,6 +199,14 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                         "above its floor: the synthetic journal stands where its search stopped (the film there "
                         "is not a hydrodynamic one).",
                         criterion=True,
+                    )
+                )
+            elif not point.recording.converged:
+                found.append(
+                    Finding(
+                        f"At {_rpm(point.recording.speed)} the bearing solver did not converge: the synthetic journal "
+                        "stands where its search stopped, not where the film and asperities carry the load.",
+                        criterion=False,
                     )
                 )
         return found
@@ -244,10 +259,14 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                 f"{rig.misalignment * 1e6:.1f} µrad, {rig.bend_scale:g} of the shaft model's bending, whirl "
                 f"{rig.whirl * MICRO:.2f} µm at {_rpm(rig.whirl_speed)}, runout {rig.runout[0] * MICRO:.2f}/"
                 f"{rig.runout[1] * MICRO:.2f} µm (1X/2X, removed with the slow roll at {_rpm(study.slow_roll_speed)}), "
-                f"noise {rig.noise * MICRO:.3f} µm, {rig.sample_rate:g} Hz, {rig.revolutions:g} revolutions each."
+                f"noise {rig.noise * MICRO:.3f} µm, {rig.sample_rate:g} Hz, "
+                + (f"{rig.revolutions:g} revolutions" if rig.duration is None else f"{rig.duration:g} s")
+                + " each. "
+                + _rig_surfaces_text(rig)
             )
         )
         blocks.append(self._table(result))
+        blocks.append(_solver_table(result))
         last = result.points[-1]
         window = last.window
         blocks.append(
@@ -292,6 +311,46 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
                     )
                 )
         return blocks
+
+
+def _rig_surfaces_text(rig: RigCase) -> str:
+    """What the forward model's bearing solver has of surfaces and liner, and what the probes see."""
+    surface = (
+        "smooth surfaces"
+        if rig.surface is None
+        else f"rough surfaces (Rq {rig.surface.journal_rq * MICRO:.2f} µm journal, "
+        f"{rig.surface.bore_rq * MICRO:.2f} µm bore, Greenwood-Tripp asperity contact)"
+    )
+    if rig.liner is None:
+        return f"The bearing solver has {surface} and a rigid bore."
+    liner = rig.liner
+    return (
+        f"The bearing solver has {surface} and a {liner.thickness * 1e3:g} mm liner (E {liner.modulus / 1e6:.0f} MPa, "
+        f"ν {liner.poisson:g}, {liner.model} model). The probes sit in the housing and see the journal: the film they "
+        "give (and the truth they are compared with) is the gap to the undeformed bore, negative where the journal "
+        "has pressed the liner in; the bearing's own film is that plus the liner's compression (table below)."
+    )
+
+
+def _solver_table(result: MonitorResult) -> Table:
+    """The bearing solver's state at each simulated speed: what the forward model's journal stands on."""
+    rows = [
+        [
+            f"{point.recording.speed * RPM:.0f}",
+            point.recording.solver_status,
+            f"{point.recording.solver_min_film * MICRO:.2f}",
+            f"{point.recording.max_liner_deformation * MICRO:.2f}",
+            f"{100 * point.recording.asperity_load_share:.1f}",
+        ]
+        for point in result.points
+    ]
+    return Table(
+        ["rpm", "solver", "h_min [µm]", "liner [µm]", "asperity [%]"],
+        rows,
+        "The bearing solver at each speed: its smallest film (liner deformed; rough surfaces: the separation of the "
+        "mean planes, negative in boundary lubrication), the largest compression of the liner and the share of the "
+        "load on the asperities",
+    )
 
 
 def _window_blocks(window: WindowResult, layout: ProbeLayout, prefix: str, label: str = "") -> list[Block]:

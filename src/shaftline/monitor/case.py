@@ -36,11 +36,13 @@ from shaftline.cases.types import (
     field_error,
 )
 from shaftline.errors import located
+from shaftline.film.case import LinerSection, SurfaceSection
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
     import numpy as np
 
+    from shaftline.film.roughness import SurfaceRoughness
     from shaftline.monitor.probes import ProbeLayout
     from shaftline.monitor.study import IdentifyPlan, MonitorStudy, RunoutTable
 
@@ -175,11 +177,28 @@ class SimulateSection(Section):
     ] = 2048.0
     """Samples per second."""
     revolutions: Annotated[float, Quantity("dimensionless", ge=2, le=1000)] = 8.0
-    """Length of each recording in shaft revolutions."""
+    """Length of each recording in shaft revolutions (unless duration)."""
+    duration: (
+        Annotated[
+            PositiveTime,
+            Plausible(0.1, 3600.0, "recordings of a fraction of a second to an hour (engineering judgement)"),
+        ]
+        | None
+    ) = None
+    """Length of each recording, the same at every speed (e.g. "16 s"); none: revolutions. A recording should hold
+    two revolutions or more at its speed (a slow roll's runout and every window need whole revolutions)."""
     seed: Annotated[int, Field(ge=0)] = 1
     """Seed of the random phases and noise."""
     write_recordings: StrictBool = True
     """Write each recording as CSV (time, channels in volts, keyphasor) beside the report."""
+    surface: SurfaceSection | None = None
+    """Rough journal and bore in the bearing solver ([monitor.simulate.surface], as [bearing.surface]; seed 001's:
+    preset = "steel_polymer"): asperity contact and boundary lubrication where the film is thin. Roughnesses not
+    given are the [monitor] table's. None: smooth surfaces."""
+    liner: LinerSection | None = None
+    """Elastic liner of the bore in the bearing solver ([monitor.simulate.liner], as [bearing.liner]; seed 001's:
+    preset = "polymer_composite"). The probes sit in the housing: they see the journal, not the liner's surface.
+    None: a rigid bore."""
 
 
 class RunoutSection(Section):
@@ -332,8 +351,9 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
     """The monitoring study in SI domain objects."""
     import math
 
+    from shaftline.film.case import liner_of
     from shaftline.lubricants import Lubricant
-    from shaftline.monitor.forward import RigCase
+    from shaftline.monitor.forward import RigCase, rig_geometry
     from shaftline.monitor.probes import Probe, ProbeLayout
     from shaftline.monitor.probes import Section as ProbeSectionDomain
     from shaftline.monitor.study import MonitorStudy
@@ -376,6 +396,11 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
         sim = section.simulate
         with located("simulate"):
             viscosity = float(Lubricant.preset("water").dynamic_viscosity(sim.temperature))
+            surface = None if sim.surface is None else _rig_surface(sim.surface, section)
+            liner = None
+            if sim.liner is not None:
+                with located("liner"):
+                    liner = liner_of(sim.liner)
             rig = RigCase(
                 layout=layout,
                 load=sim.load,
@@ -390,14 +415,42 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
                 sleeve_wear=sim.sleeve_wear,
                 sample_rate=sim.sample_rate,
                 revolutions=sim.revolutions,
+                duration=sim.duration,
                 seed=sim.seed,
                 shape=shape,
+                surface=surface,
+                liner=liner,
             )
+            # the bearing is made at solve time: its checks (liner against the radius...) now,
+            # before anything is written
+            rig_geometry(rig)
     speeds = tuple(section.simulate.speeds) if section.simulate is not None else ()
     slow_roll = section.simulate.slow_roll_speed if section.simulate is not None else 0.0
     write = section.simulate.write_recordings if section.simulate is not None else False
     identify = None if section.identify is None else _identify_plan(section.identify, context, layout)
     return MonitorStudy(layout, rig, speeds, slow_roll, write, shape, identify)
+
+
+def _rig_surface(surface: SurfaceSection, section: MonitorSection) -> SurfaceRoughness:
+    """The forward model's surfaces, checked against the clearance as [bearing.surface] is. Beside a
+    preset, roughnesses the table does not give are the [monitor] table's (with its Rq factor), so
+    that the solver's surfaces are those the regimes are judged on."""
+    from shaftline.film.case import checked_surface
+
+    journal, bore = surface.journal_roughness, surface.bore_roughness
+    if journal is None and bore is None:
+        update = {
+            "roughness_parameter": "Rq",
+            "journal_roughness": section.rq_factor * section.roughness_journal,
+            "bore_roughness": section.rq_factor * section.roughness_bearing,
+        }
+    else:
+        factor = section.rq_factor if surface.roughness_parameter == "Rq" else 1.0
+        update = {
+            "journal_roughness": factor * section.roughness_journal if journal is None else journal,
+            "bore_roughness": factor * section.roughness_bearing if bore is None else bore,
+        }
+    return checked_surface(surface.model_copy(update=update), section.radial_clearance)
 
 
 def _runout_table(section: IdentifySection, channels: tuple[str, ...]) -> RunoutTable | None:

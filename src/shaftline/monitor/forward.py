@@ -12,10 +12,18 @@ film can be compared with the film that made the signals.
 The rig (seed 001 Sect. 2, Tables 1-3): journal 323 mm, bearing 1200 mm (L/D 3.7),
 radial clearance 0.55 mm after break-in, water at 25 degC, 7.5 t overhung counterweight,
 75 kN on the stern bearing, 15-215 rpm. The seed gives no lengths of the rest of the
-shaft line; :func:`rig_shaft_line` assumes them (stated there). The bearing solver has a
-rigid bore: the seed's polymer liner (E = 2320 MPa) would spread the load and thicken
-the film at the loaded end, so the films here are thinner than the seed's and the
-misalignment that a rigid bore carries is small (a few urad).
+shaft line; :func:`rig_shaft_line` assumes them (stated there). With the seed's surfaces
+and liner (``RigCase(surface=..., liner=...)``: Ra 0.8 / 1.6 um, a 20 mm polymer liner of
+E = 2320 MPa) the solver carries the load at every speed of the seed, 15-215 rpm, in
+boundary lubrication at the loaded end at low speed; rigid and smooth (the default) it
+loses the film below about 135 rpm.
+
+What the probes see: they sit in the housing and read the distance to the journal, so a
+liner pressed in by the film and the asperities does not change their gaps; the film
+they identify is the gap between the journal and the undeformed bore, which goes
+negative where the journal has pressed the liner in (seed 001 Sect. 5.1 reports such
+negative films at D1's bottom). The bearing's own film (liner deformed) is reported
+beside it (:class:`RigEquilibrium`).
 """
 
 from __future__ import annotations
@@ -27,12 +35,15 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from shaftline.errors import InputError, require_finite, require_positive
+from shaftline import parallel
+from shaftline.errors import InputError, SolverFailure, require_finite, require_positive
 from shaftline.monitor.identification import film_between_circles
 from shaftline.monitor.probes import ProbeLayout, seed001_layout
 
 if TYPE_CHECKING:
-    from shaftline.film import JournalBearing
+    from collections.abc import Callable, Sequence
+
+    from shaftline.film import BearingGeometry, JournalBearing
     from shaftline.film.liner import Liner
     from shaftline.film.roughness import SurfaceRoughness
     from shaftline.shaft import ShaftLine
@@ -130,11 +141,20 @@ class RigCase:
     sample_rate : float
         Samples per second, Hz.
     revolutions : float
-        Length of a recording in shaft revolutions.
+        Length of a recording in shaft revolutions (unless ``duration``).
+    duration : float or None
+        Length of a recording, s, the same at every speed as a data acquisition records
+        (None: ``revolutions``).
     seed : int
         Seed of the random phases and noise.
     axial_nodes, circumferential_nodes : int
         Grid of the bearing solver.
+    surface : SurfaceRoughness or None
+        Rough journal and bore (asperity contact, flow factors; seed 001's:
+        ``SurfaceRoughness.preset("steel_polymer")``); None: smooth.
+    liner : Liner or None
+        Elastic liner of the bore (seed 001's: ``Liner.preset("polymer_composite")``);
+        None: rigid.
     """
 
     layout: ProbeLayout = field(default_factory=seed001_layout)
@@ -151,10 +171,13 @@ class RigCase:
     sleeve_wear: float = 0.0
     sample_rate: float = 2048.0
     revolutions: float = 8.0
+    duration: float | None = None
     seed: int = 1
     axial_nodes: int = 41
     circumferential_nodes: int = 120
     shape: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False, compare=False)
+    surface: SurfaceRoughness | None = None
+    liner: Liner | None = None
 
     def __post_init__(self) -> None:
         require_positive("load", self.load, "N")
@@ -168,6 +191,8 @@ class RigCase:
         require_positive("whirl_speed", self.whirl_speed, "rad/s")
         require_positive("sample_rate", self.sample_rate, "Hz")
         require_positive("revolutions", self.revolutions, "rev")
+        if self.duration is not None:
+            require_positive("duration", self.duration, "s")
         if len(self.runout) != 2 or not all(math.isfinite(r) and r >= 0 for r in self.runout):
             raise InputError("runout", list(self.runout), "m", "two amplitudes >= 0 (1X, 2X)")
 
@@ -198,7 +223,16 @@ class Recording:
         The bearing solver found no film that carries the load above its floor (the
         journal stands where the search stopped).
     solver_min_film : float
-        Smallest film of the solver's solution, m.
+        Smallest film of the solver's solution, m (with a liner: deformed; rough: the
+        separation of the mean planes, negative in boundary lubrication).
+    converged : bool
+        The solver's equilibrium carries the load (False: it stopped short of it; the
+        journal stands where its search stopped).
+    max_liner_deformation : float
+        Largest compression of the liner, m (0 without a liner): what the probes' film
+        lacks of the bearing's there.
+    asperity_load_share : float
+        Share of the load the asperities carry (0 smooth).
     """
 
     signals: np.ndarray = field(repr=False)
@@ -213,6 +247,14 @@ class Recording:
     clearance: float
     contact: bool
     solver_min_film: float
+    converged: bool = True
+    max_liner_deformation: float = 0.0
+    asperity_load_share: float = 0.0
+
+    @property
+    def solver_status(self) -> str:
+        """``"ok"``, ``"contact"`` or ``"not converged"``: how the bearing solver placed the journal."""
+        return "contact" if self.contact else ("ok" if self.converged else "not converged")
 
     def centres(self, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """True journal centre at stations ``z`` (m) and every sample, each (N, nz), m."""
@@ -238,31 +280,45 @@ def rig_shape_for(case: RigCase) -> tuple[np.ndarray, np.ndarray]:
     return np.asarray(z) * stretch, np.asarray(shape) * stretch
 
 
-def rig_bearing(
-    case: RigCase, speed: float, surface: SurfaceRoughness | None = None, liner: Liner | None = None
-) -> JournalBearing:
-    """The rig's stern bearing as the forward model solves it: the layout's bore and clearance
-    (plus sleeve wear), the journal bent to the case's shape, the case's water film at ``speed``
-    (rad/s), 41 x 120 nodes unless the case says; ``surface`` and ``liner``
-    (:class:`~shaftline.film.roughness.SurfaceRoughness`, :class:`~shaftline.film.liner.Liner`)
-    rough and lined it (none by default: rigid and smooth)."""
-    from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
+def rig_geometry(case: RigCase, surface: SurfaceRoughness | None = None, liner: Liner | None = None) -> BearingGeometry:
+    """The rig's stern bearing geometry: the layout's bore and clearance (plus sleeve wear), the
+    journal bent to the case's shape, the case's surface and liner (``surface`` / ``liner``
+    replace them where given).
+
+    Raises
+    ------
+    InputError
+        A surface or liner the bearing cannot take (roughness against the clearance, liner
+        thickness against the radius), named by its field.
+    """
+    from shaftline.film import BearingGeometry
     from shaftline.film.geometry import BentJournal
 
     layout = case.layout
     stations, shape = rig_shape_for(case)
     bend = case.bend_scale * shape
-    geometry = BearingGeometry(
+    return BearingGeometry(
         length=layout.length,
         diameter=2.0 * layout.radius,
         radial_clearance=layout.radial_clearance + case.sleeve_wear,
         bent_journal=BentJournal(stations, bend, np.zeros_like(bend)),
         rotation=1 if layout.rotation == 1 else -1,
-        surface=surface,
-        liner=liner,
+        surface=case.surface if surface is None else surface,
+        liner=case.liner if liner is None else liner,
     )
+
+
+def rig_bearing(
+    case: RigCase, speed: float, surface: SurfaceRoughness | None = None, liner: Liner | None = None
+) -> JournalBearing:
+    """The rig's stern bearing as the forward model solves it (:func:`rig_geometry`): the
+    case's water film at ``speed`` (rad/s), 41 x 120 nodes unless the case says; ``surface``
+    and ``liner`` (:class:`~shaftline.film.roughness.SurfaceRoughness`,
+    :class:`~shaftline.film.liner.Liner`) replace the case's where given."""
+    from shaftline.film import JournalBearing, OperatingPoint, SolverOptions
+
     return JournalBearing(
-        geometry,
+        rig_geometry(case, surface, liner),
         OperatingPoint(speed=speed, viscosity=case.viscosity, density=997.0),
         SolverOptions(
             axial_nodes=case.axial_nodes, circumferential_nodes=case.circumferential_nodes, min_film_floor=1e-4
@@ -270,22 +326,111 @@ def rig_bearing(
     )
 
 
-def equilibrium_line(case: RigCase, speed: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool, float]:
-    """Static journal centre line from the bearing solver: stations, ey, ez (m), contact, h_min (m)."""
+@dataclass(frozen=True, eq=False)
+class RigEquilibrium:
+    """The journal's static centre line from the bearing solver at one speed.
+
+    Attributes
+    ----------
+    speed : float
+        Shaft speed, rad/s.
+    stations : ndarray (s,)
+        Axial stations from the loaded end, m.
+    ey, ez : ndarray (s,)
+        Journal centre at the stations (vertical, horizontal), m.
+    status : str
+        ``"ok"``, ``"contact"`` (no film carries the load above the solver's floor) or
+        ``"not converged"`` (the search stopped short of the load); in the last two the
+        journal stands where the search stopped.
+    residual : float
+        Share of the load the film and asperities do not carry at the end.
+    min_film : float
+        Smallest film of the solution, m (liner deformed; rough: mean-plane separation).
+    max_liner_deformation : float
+        Largest compression of the liner, m.
+    asperity_load_share : float
+        Share of the load on the asperities.
+    """
+
+    speed: float
+    stations: np.ndarray = field(repr=False)
+    ey: np.ndarray = field(repr=False)
+    ez: np.ndarray = field(repr=False)
+    status: str
+    residual: float
+    min_film: float
+    max_liner_deformation: float
+    asperity_load_share: float
+
+
+def equilibrium_line(case: RigCase, speed: float) -> RigEquilibrium:
+    """Static journal centre line from the bearing solver at ``speed`` (rad/s): the
+    equilibrium under the case's load with the misalignment as a journal tilt and the
+    bending as a bent journal.
+
+    Raises
+    ------
+    SolverFailure
+        The solver could not start (a liner that does not settle at the first position):
+        one line naming the speed and what to change.
+    """
     layout = case.layout
     stations, shape = rig_shape_for(case)
     bend = case.bend_scale * shape
-    bearing = rig_bearing(case, speed)
-    result = bearing.equilibrium(load_y=-case.load, tilt_y=case.misalignment)
-    position = result.state.position
+    try:
+        result = rig_bearing(case, speed).equilibrium(load_y=-case.load, tilt_y=case.misalignment)
+    except SolverFailure as failure:
+        from shaftline.film.bearing import LinerConvergenceError
+
+        why = (
+            f"the film-liner iteration did not settle, residual {failure}"
+            if isinstance(failure, LinerConvergenceError)
+            else str(failure)
+        )
+        raise SolverFailure(
+            f"monitor simulate: no journal position at {speed * 30 / math.pi:.0f} rpm: the bearing solver stopped "
+            f"({why}); a smaller misalignment or bend_scale, or a stiffer liner, lets it start"
+        ) from failure
+    state = result.state
+    position = state.position
     arm = stations - 0.5 * layout.length
-    ey = position.ey + case.misalignment * arm + bend
-    ez = position.ez + position.tilt_z * arm
-    return stations, ey, ez, bool(result.contact), float(result.state.min_film_thickness)
+    status = "contact" if result.contact else ("ok" if result.converged else "not converged")
+    return RigEquilibrium(
+        speed,
+        stations,
+        position.ey + case.misalignment * arm + bend,
+        position.ez + position.tilt_z * arm,
+        status,
+        float(result.residual) / case.load,
+        float(state.min_film_thickness),
+        float(state.max_liner_deformation),
+        float(state.asperity_load_share),
+    )
 
 
-def simulate(case: RigCase, speed: float) -> Recording:
-    """Probe signals of the rig at shaft speed ``speed`` (rad/s).
+def equilibrium_lines(
+    case: RigCase,
+    speeds: Sequence[float],
+    *,
+    backend: str | None = None,
+    workers: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> list[RigEquilibrium]:
+    """:func:`equilibrium_line` at each speed (rad/s), spread over cores with
+    :func:`shaftline.parallel.map` (``backend``, ``workers`` as there)."""
+    return parallel.map(
+        functools.partial(equilibrium_line, case),
+        list(speeds),
+        backend=backend,
+        workers=workers,
+        progress=progress,
+        work_here=True,
+    )
+
+
+def simulate(case: RigCase, speed: float, equilibrium: RigEquilibrium | None = None) -> Recording:
+    """Probe signals of the rig at shaft speed ``speed`` (rad/s); ``equilibrium``: the
+    journal's static centre line there if already solved (:func:`equilibrium_lines`).
 
     Raises
     ------
@@ -298,10 +443,14 @@ def simulate(case: RigCase, speed: float) -> Recording:
     # measures it); the whirl phase and the noise to the recording.
     runout_phases = np.random.default_rng([case.seed, 0]).uniform(0, 2 * math.pi, (len(layout.channels), 2))
     rng = np.random.default_rng([case.seed, 1, int(round(speed * 1e6))])
-    samples = int(round(case.revolutions * 2 * math.pi / speed * case.sample_rate))
+    length = case.revolutions * 2 * math.pi / speed if case.duration is None else case.duration
+    samples = int(round(length * case.sample_rate))
     time = np.arange(samples) / case.sample_rate
     phase = speed * time + 0.5  # the first keyphasor mark a little after the start
-    stations, ey, ez, contact, h_min = equilibrium_line(case, speed)
+    if equilibrium is None:
+        equilibrium = equilibrium_line(case, speed)
+    elif equilibrium.speed != speed:
+        raise InputError("equilibrium.speed", equilibrium.speed, "rad/s", f"the recording's speed {speed:.6g}")
     amplitude = case.whirl * (speed / case.whirl_speed) ** 2
     lag = rng.uniform(0, 2 * math.pi)
     whirl_ey = amplitude * np.cos(phase - lag)
@@ -311,14 +460,17 @@ def simulate(case: RigCase, speed: float) -> Recording:
         np.empty(0),
         case.sample_rate,
         speed,
-        stations,
-        ey,
-        ez,
+        equilibrium.stations,
+        equilibrium.ey,
+        equilibrium.ez,
         whirl_ey,
         whirl_ez,
         layout.radial_clearance + case.sleeve_wear,
-        contact,
-        h_min,
+        equilibrium.status == "contact",
+        equilibrium.min_film,
+        equilibrium.status == "ok",
+        equilibrium.max_liner_deformation,
+        equilibrium.asperity_load_share,
     )
     columns = []
     r1, r2 = case.runout

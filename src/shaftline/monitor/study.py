@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from shaftline.monitor.bending import CentreLine, least_squares_line, min_film_along, model_line
-from shaftline.monitor.forward import Recording, RigCase, rig_shape_for, simulate
+from shaftline.monitor.forward import Recording, RigCase, equilibrium_lines, rig_shape_for, simulate
 from shaftline.monitor.identification import SectionOrbit, SectionReference, probe_films, reference_points
 from shaftline.monitor.orbits import (
     Ellipse,
@@ -361,19 +361,23 @@ def solve_monitor(
     if study.rig is None or not simulate_rig:
         return MonitorResult(study, (), None)
     rig, layout = study.rig, study.layout
+    # The journal's equilibria (the costly part, 0.2-3 s each) over the cores at once; the
+    # recordings and their identification after.
+    told = None if progress is None else (lambda done, total: progress(f"bearing solver: {done} of {total} speeds"))
+    lines = equilibrium_lines(rig, (study.slow_roll_speed, *study.speeds), progress=told)
     if progress is not None:
         progress(f"slow roll at {study.slow_roll_speed * 30 / math.pi:.0f} rpm")
-    slow = simulate(rig, study.slow_roll_speed)
+    slow = simulate(rig, study.slow_roll_speed, lines[0])
     gaps = layout.gaps(slow.signals)
     marks = revolution_marks(slow.keyphasor)
     window = whole_revolutions(marks)
     runout = runout_profile(gaps[window], shaft_phase(gaps.shape[0], marks)[window])
     shape = study.shape if study.shape is not None else rig_shape_for(rig)
     points = []
-    for speed in study.speeds:
+    for speed, line in zip(study.speeds, lines[1:], strict=True):
         if progress is not None:
             progress(f"recording at {speed * 30 / math.pi:.0f} rpm")
-        recording = simulate(rig, speed)
+        recording = simulate(rig, speed, line)
         result = identify_window(layout, recording.signals, recording.keyphasor, rig.sample_rate, runout, shape)
         kept = whole_revolutions(revolution_marks(recording.keyphasor))
         ey, ez = recording.centres(result.stations)
