@@ -40,6 +40,23 @@ def test_film_map_contours_are_the_regime_thresholds():
     assert list(contour.levels) == pytest.approx([t * 1e6 for t in thresholds(layout)])
 
 
+def test_negative_films_are_marked_not_hidden():
+    """The probes' film is negative where the journal has pressed the liner in (docs/theory.md Sect. 18): the map
+    hatches it and draws h = 0, the polar plot says where it put it; a positive film gets neither."""
+    layout = seed001_layout()
+    theta = np.radians(np.arange(0, 360, 10.0))
+    z = np.linspace(0, 1.2, 13)
+    pressed = (-5e-6 + 20e-6 * z[:, None]) + 5e-4 * (1 + np.cos(theta))[None, :]
+    for film, marked in ((pressed, True), (pressed + 10e-6, False)):
+        ax = Figure().subplots()
+        figures.film_map(theta, z, film, layout, ax=ax)
+        levels = [list(c.levels) for c in ax.collections if hasattr(c, "levels")]
+        assert ([0.0] in levels) is marked
+        polar = Figure().subplots()
+        figures.film_polar(theta, film[0], layout, ax=polar)
+        assert ("journal stands in the liner" in polar.get_xlabel()) is marked
+
+
 def test_min_film_along_has_the_regime_bands():
     layout = seed001_layout()
     z = np.linspace(0, 1.2, 25)

@@ -101,7 +101,11 @@ def film_polar(theta: np.ndarray, film: np.ndarray, layout: ProbeLayout, *, labe
     ax.set_aspect("equal")
     ax.set_xticks([])
     ax.set_yticks([])
-    ax.set_xlabel("film round the section (0 deg at the top, clockwise; radius log10(1 + h / 1 µm))")
+    label_text = "film round the section (0 deg at the top, clockwise; radius log10(1 + h / 1 µm))"
+    if np.any(film <= 0.0):
+        # probes in the housing read a negative film where the journal has pressed the liner in
+        label_text += "\nfilms ≤ 0 at the centre: the journal stands in the liner (negative film)"
+    ax.set_xlabel(label_text)
     ax.legend(fontsize=8, loc="lower right")
     return ax
 
@@ -123,6 +127,11 @@ def film_map(theta: np.ndarray, z: np.ndarray, film: np.ndarray, layout: ProbeLa
     levels = [level * MICRO for level in thresholds(layout)]
     contours = ax.contour(degrees, np.asarray(z) * 1e3, film, levels=levels, colors=["w", "k"], linewidths=1.0)
     ax.clabel(contours, fmt={levels[0]: "λ = 1", levels[1]: "λ = 3"}, fontsize=8)
+    if film.min() < 0.0 < film.max():
+        # the log scale cannot show a negative film (the journal pressed into the liner): hatch it
+        ax.contourf(degrees, np.asarray(z) * 1e3, film, levels=[film.min(), 0.0], colors="none", hatches=["///"])
+        zero = ax.contour(degrees, np.asarray(z) * 1e3, film, levels=[0.0], colors="r", linewidths=1.0)
+        ax.clabel(zero, fmt={0.0: "h = 0"}, fontsize=8)
     for position in layout.positions:
         ax.axhline(position * 1e3, color="w", lw=0.5, ls="--")
     ax.set_xlabel("bearing angle [deg] (0 = top, in the direction of rotation)")
