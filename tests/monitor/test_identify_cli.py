@@ -116,8 +116,8 @@ def test_simulate_then_identify_the_example(tmp_path):
     simulated = invoke("monitor", "simulate", str(EXAMPLE), "--out", str(tmp_path / "sim"))
     assert simulated.exit_code == 0, simulated.stderr
     speeds = [35, 65, 95, 135, 175, 215]
-    files = [tmp_path / "sim" / "data" / f"recording_{rpm}rpm.csv" for rpm in speeds]
-    assert sorted((tmp_path / "sim" / "data").glob("recording_*rpm.csv")) == sorted(files)
+    files = sorted((tmp_path / "sim" / "data").glob("recording_*rpm.csv"))  # zero-padded: in speed order
+    assert [f.name for f in files] == [f"recording_{rpm:03d}rpm.csv" for rpm in speeds]
     result = invoke("monitor", "identify", str(EXAMPLE), *map(str, files), "--db", str(tmp_path / "m.sqlite"),
                     "--slow-roll", str(tmp_path / "sim" / "data" / "slow_roll_15rpm.csv"), "--json", "-")  # fmt: skip
     assert result.exit_code == 0, result.stderr

@@ -296,7 +296,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             for point in result.points:
                 blocks.append(
                     DataFile(
-                        f"recording_{point.recording.speed * RPM:.0f}rpm.csv",
+                        f"recording_{point.recording.speed * RPM:03.0f}rpm.csv",  # 035 before 135: globs sort by speed
                         _recording_writer(point.recording, layout.channels),
                         f"synthetic recording at {_rpm(point.recording.speed)} (time, probe outputs in V, keyphasor)",
                     )
