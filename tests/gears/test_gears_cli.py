@@ -258,7 +258,7 @@ def test_the_report_shows_every_speed_of_the_study():
 def test_the_summary_rates_many_speeds_in_one_compact_matrix(tmp_path, speeds):
     # Several pinion speeds: the summary gives SP and ISO's S_B as one load-step x speed matrix,
     # each cell "SP/S_B" of that step and speed (two decimals below 10, one below 100), marked
-    # where SP > 1 or S_B < 1, instead of two tables per speed (the seed's five speeds took 170
+    # where SP > 1 or S_B < 1, instead of two tables per speed (the seed's five speeds took 173
     # lines). Each table fits 80 columns a line a row; twelve speeds do not fit one table, so they
     # are split over several, each speed once and in the study's order.
     from rich.console import Console

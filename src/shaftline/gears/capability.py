@@ -266,7 +266,7 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
         """Seed 002's SP and ISO's S_B (``[gears.iso]``) as one compact matrix, torque steps (FZG
         load stages) by pinion speed, each cell ``SP/S_B``, marked where either says scuffing;
         the speeds split over as many tables as it takes to fit :data:`TERMINAL_WIDTH` columns
-        (the per-speed tables of :meth:`_tables` took a screen each: five speeds, 170 lines)."""
+        (the per-speed tables of :meth:`_tables` took a screen each: five speeds, 173 lines)."""
         from shaftline.gears.scuffing import NO_SCUFFING, SCUFFING
 
         study, iso = result.study, result.iso
