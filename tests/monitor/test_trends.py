@@ -179,10 +179,16 @@ def test_same_named_recordings_in_two_folders_keep_their_own_gaps(tmp_path):
 def test_same_named_recordings_keep_their_own_gaps_in_postgresql(postgres_url):
     import sqlalchemy as sa
 
-    engine = sa.create_engine(postgres_url)
-    with engine.begin() as connection:  # a fresh store on the module's server
-        for table in ("window_values", "windows", "recording_settings", "recordings"):
-            connection.execute(sa.text(f"DROP TABLE IF EXISTS {table} CASCADE"))
-    engine.dispose()
-    with TrendStore(postgres_url) as store:
-        _check_same_named(*_same_named_in_two_folders(store))
+    def drop() -> None:
+        engine = sa.create_engine(postgres_url)
+        with engine.begin() as connection:
+            for table in ("window_values", "windows", "recording_settings", "recordings"):
+                connection.execute(sa.text(f"DROP TABLE IF EXISTS {table} CASCADE"))
+        engine.dispose()
+
+    drop()  # a fresh store on the module's server (the round trip's rows are there), dropped after
+    try:
+        with TrendStore(postgres_url) as store:
+            _check_same_named(*_same_named_in_two_folders(store))
+    finally:
+        drop()
