@@ -28,7 +28,13 @@ from shaftline.film.bearing import LINER_TOLERANCE
 from shaftline.film.elastic import CoupledOrderings, LinerSystem, film_operator, film_residual_jacobian
 from shaftline.film.liner import LINER_PRESETS, Liner
 from shaftline.film.reynolds import ReynoldsSolver, apply_operator, build_stencil, stencil_derivative
-from shaftline.film.roughness import BOUNDARY_LIMIT, RoughFilm, SurfaceRoughness, asperity_pressure
+from shaftline.film.roughness import (
+    BOUNDARY_LIMIT,
+    RoughFilm,
+    SurfaceRoughness,
+    asperity_pressure,
+    asperity_pressure_derivative,
+)
 from tests.conftest import invoke
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -191,6 +197,56 @@ def test_film_liner_jacobian_matches_central_differences(ntua, rough: bool) -> N
     numeric = np.column_stack(columns)
     scale = np.abs(numeric).max()
     assert np.abs(jacobian - numeric).max() <= 5e-3 * scale
+
+
+@pytest.mark.parametrize("model", ["column", "layer"])
+def test_either_liner_system_gives_the_film_change_of_the_linearised_coupled_equations(
+    ntua,  # noqa: ANN001
+    model: str,
+) -> None:
+    # The bearing asks the same of both liner models' Newton systems (elastic.CoupledLiner):
+    # the film change dH = dH_r + dD (film_change) with the pressure change dP (response, along
+    # film_direction) of a rigid film change dH_r must solve the linearised coupled equations,
+    # checked here with matrices built independently of the systems: the film's
+    # A dP + B dH = 0 on the free nodes (film_operator, film_residual_jacobian: tested above) and
+    # the liner's M dD = K dP + (1 - M) dH_r (column, M = 1 - k p_a') or
+    # dD = C (p_ref dP + p_a' c dH) / c (layer, C its operator applied by FFT). Tolerances: 1e-9
+    # of the equation's largest term (column: a direct LU solve, round-off ~1e-12 at a condition
+    # number ~1e3; layer: GMRES to a relative residual of 1e-10, LAYER_RESPONSE_RTOL).
+    surface = SurfaceRoughness.preset("turned_steel_white_metal")
+    liner = Liner.preset("polymer_composite", model=model)
+    operating = replace(ntua.operating, speed=np.pi / 30)  # 1 rpm: asperity contact, M != 1
+    bearing = JournalBearing(replace(ntua.geometry, surface=surface, liner=liner), operating, ntua.options)
+    position = bearing.equilibrium(ntua.load_y, ntua.load_z).state.position
+    evaluation = bearing._evaluate(position, warm=False)
+    system = bearing._liner_system(evaluation)
+    c = ntua.geometry.radial_clearance
+    d_ey, _ = bearing._offset_directions(evaluation)
+    _, d_pressure = bearing._pressure_derivatives(evaluation, [(d_ey, None)])
+    d_film = system.film_change(d_ey, d_pressure[0])
+    d_deformation = system.deformation_change(d_ey, d_pressure[0])
+    np.testing.assert_allclose(d_film, d_ey + d_deformation, rtol=0, atol=1e-12 * np.abs(d_film).max())
+    # The film equation on the free nodes.
+    cache = bearing._solver_state()
+    free = ~(cache.reynolds.fixed | evaluation.solution.cavitated).ravel()
+    film_nd = evaluation.film / c
+    rough = bearing._rough_film()
+    jacobian = film_residual_jacobian(film_nd, evaluation.relative_pressure, cache.d_theta, cache.d_z, rough, None)
+    operator_part = film_operator(evaluation.stencil) @ d_pressure[0].ravel()
+    film_part = jacobian @ d_film.ravel()
+    scale = max(np.abs(operator_part[free]).max(), np.abs(film_part[free]).max())
+    assert np.abs((operator_part + film_part)[free]).max() <= 1e-9 * scale
+    # The liner equation on every node.
+    slope = asperity_pressure_derivative(surface, evaluation.film)
+    load = bearing.pressure_scale * d_pressure[0] + c * slope * d_film
+    if model == "column":
+        compliance = liner.compliance
+        expected = compliance * (bearing.pressure_scale * d_pressure[0] + c * slope * d_ey) / c
+        expected = expected / (1.0 - compliance * slope)
+    else:
+        expected = bearing._layer().apply(load) / c
+    assert np.abs(d_deformation - expected).max() <= 1e-9 * np.abs(expected).max()
+    assert liner.compliance * np.abs(slope).max() > 1e-3  # 1 - M: the asperities' share is tested
 
 
 def test_fixed_nodes_settled_node_by_node_save_film_solutions(ntua, monkeypatch) -> None:  # noqa: ANN001

@@ -212,9 +212,12 @@ def test_the_terminal_tables_fit_80_columns_a_line_a_row(example):
     result = run_case(load_case(example))
     capability, value = next(result.capabilities())
     tables = [b for b in capability.summary(value) if isinstance(b, Table)]
-    # a pair per pinion speed (the seed's five speeds showed only the first)
-    assert len(tables) == 2 * len(value.study.speeds)
-    assert all(table.headers[-2:] == ["S_B", "S_intS"] for table in tables[1::2])
+    if len(value.study.speeds) == 1:
+        # one speed (FZG): seed 002's table and ISO's
+        assert len(tables) == 2 and tables[1].headers[-2:] == ["S_B", "S_intS"]
+    else:
+        # several (the seed's five): the SP/S_B matrix, all five speeds in one table
+        assert len(tables) == 1 and len(tables[0].headers) == 1 + len(value.study.speeds)
     for table in tables:
         console = Console(record=True, width=80)
         print_blocks(console, [table])
@@ -224,18 +227,20 @@ def test_the_terminal_tables_fit_80_columns_a_line_a_row(example):
         assert sum(line.startswith("│") for line in lines) == len(table.rows), lines
 
 
-def test_the_summary_shows_every_speed_of_the_study():
-    # The seed example rates five pinion speeds (10 000, 2 000, 6 000, 14 000, 18 000 rpm): the
-    # summary has seed 002's SP table and ISO's table for each in the study's order, each titled
-    # with its speed and holding that speed's SP and S_B (formatted as the table does). The
-    # summary showed the first speed's only.
+def test_the_report_shows_every_speed_of_the_study():
+    # The seed example rates five pinion speeds (10 000, 2 000, 6 000, 14 000, 18 000 rpm): after
+    # the SP/S_B matrix of all speeds, the report has seed 002's SP table and ISO's table for each
+    # in the study's order, each titled with its speed and holding that speed's SP and S_B
+    # (formatted as the table does). The summary showed the first speed's only (it now has the
+    # matrix, tested below).
     from shaftline.cases import load_case
     from shaftline.pipeline import run_case
     from shaftline.report.blocks import Table
 
     result = run_case(load_case(SEED))
     capability, value = next(result.capabilities())
-    tables = [b for b in capability.summary(value) if isinstance(b, Table)]
+    matrix, *tables = [b for b in capability.report(value) if isinstance(b, Table)]
+    assert matrix.title.startswith("SP/S_B by torque step and pinion speed")
     rpm = [10000, 2000, 6000, 14000, 18000]
     assert len(tables) == 2 * len(rpm)
     for j, (sp_table, iso_table) in enumerate(zip(tables[0::2], tables[1::2], strict=True)):
@@ -247,3 +252,59 @@ def test_the_summary_shows_every_speed_of_the_study():
         assert [row[column] for row in iso_table.rows] == [f"{v:.2f}" for v in value.iso.safety[:, j]]
     # the speeds differ in SP: the tables are not one table repeated
     assert len({tuple(row[-2] for row in t.rows) for t in tables[0::2]}) == len(rpm)
+
+
+@pytest.mark.parametrize("speeds", [5, 12])
+def test_the_summary_rates_many_speeds_in_one_compact_matrix(tmp_path, speeds):
+    # Several pinion speeds: the summary gives SP and ISO's S_B as one load-step x speed matrix,
+    # each cell "SP/S_B" of that step and speed (two decimals below 10, one below 100), marked
+    # where SP > 1 or S_B < 1, instead of two tables per speed (the seed's five speeds took 173
+    # lines). Each table fits 80 columns a line a row; twelve speeds do not fit one table, so they
+    # are split over several, each speed once and in the study's order.
+    from rich.console import Console
+
+    from shaftline.cases import load_case
+    from shaftline.pipeline import run_case
+    from shaftline.report.blocks import Paragraph, Table
+    from shaftline.report.terminal import print_blocks
+
+    rpm = [10000, 2000, 6000, 14000, 18000] if speeds == 5 else [1000 * (k + 1) for k in range(12)]
+    text = SEED.read_text().replace(
+        'speeds = ["10000 rpm", "2000 rpm", "6000 rpm", "14000 rpm", "18000 rpm"]',
+        "speeds = [" + ", ".join(f'"{r} rpm"' for r in rpm) + "]",
+    )
+    shutil.copy(SEED.parent / "gears_scuffing_test.csv", tmp_path)
+    case = tmp_path / "speeds.toml"
+    case.write_text(text)
+    result = run_case(load_case(case))
+    capability, value = next(result.capabilities())
+    summary = capability.summary(value)
+    tables = [b for b in summary if isinstance(b, Table)]
+    assert (len(tables) == 1) == (speeds == 5) and len(tables) <= 3
+    seen = []
+    lines_total = 0
+    for table in tables:
+        assert table.headers[0] == "T [N m]"
+        assert [row[0] for row in table.rows] == [f"{t:g}" for t in value.study.torques]
+        for header in table.headers[1:]:
+            j = len(seen)
+            seen.append(header)
+            column = table.headers.index(header)
+            expected = []
+            for k in range(len(value.study.torques)):
+                sp, sb = float(value.sp[k, j]), float(value.iso.safety[k, j])
+                short = [f"{v:.2f}" if v < 10 else f"{v:.1f}" for v in (sp, sb)]
+                expected.append("/".join(short))
+                assert table.marks[k][column] == ("fail" if sp > 1.0 or sb < 1.0 else "")
+            assert [row[column] for row in table.rows] == expected
+        console = Console(record=True, width=80)
+        print_blocks(console, [table])
+        lines = console.export_text().splitlines()
+        lines_total += len(lines)
+        assert max(len(line) for line in lines) <= 80
+        assert sum(line.startswith("┃") for line in lines) == 1, lines
+        assert sum(line.startswith("│") for line in lines) == len(table.rows), lines
+    assert seen == [f"{r} rpm" for r in rpm]
+    assert any("fail" in row for table in tables for row in table.marks)  # the heavy fast steps scuff
+    assert lines_total <= 20 * len(tables)
+    assert any(isinstance(b, Paragraph) and b.text.startswith("SP > 1 scuffing") for b in summary)

@@ -658,6 +658,34 @@ def test_the_identify_tables_fit_80_columns_a_line_a_row(truth, tmp_path):
     assert "mean h_min at D1/D2/D3" in found.title
 
 
+def test_long_recording_names_are_cut_in_the_middle_in_the_terminal_only(truth, tmp_path):
+    # A recording name of 49 characters was folded by rich over three lines of each of the two
+    # tables at COLUMNS=80: now cut in the middle to 24 characters (its start and its end, the
+    # speed and the suffix, kept), each row on one line, with a note; the report's tables and
+    # results.json keep the full name.
+    from shaftline.cases import load_case
+    from shaftline.monitor.capability import NAME_WIDTH
+    from shaftline.pipeline import dumps, results_document, run_case
+    from shaftline.report.blocks import Paragraph, Table
+
+    name = "aft_stern_tube_probes_2026-11-02T06-00-00_120rpm.csv"
+    path = write_csv(tmp_path / name, truth)
+    overrides = {"monitor.identify.recordings": [str(path)], "monitor.identify.database": str(tmp_path / "m.sqlite")}
+    case = load_case(case_file(tmp_path), overrides=overrides)
+    result = run_case(case, options={"monitor": {"task": "identify"}})
+    capability, value = next(result.capabilities())
+    summary = capability.summary(value)
+    work, found = _fits_80_columns(summary)
+    short = work.rows[0][0]
+    assert short == found.rows[0][0] and len(short) == NAME_WIDTH == 24
+    assert short == name[:11] + "…" + name[-12:] and short.endswith("_120rpm.csv")
+    assert any(isinstance(b, Paragraph) and "cut in the middle" in b.text for b in summary)
+    report = [b for b in capability.report(value) if isinstance(b, Table) and b.headers[0] == "recording"]
+    assert [t.rows[0][0] for t in report] == [name, name]
+    document = json.loads(dumps(results_document(result)))
+    assert name in json.dumps(document) and short not in json.dumps(document)
+
+
 @pytest.mark.slow
 def test_the_simulate_table_fits_80_columns_a_line_a_row():
     # `monitor simulate`'s table of the example (then 3 speeds) wrapped each row over two lines at

@@ -138,3 +138,57 @@ def test_time_not_recorded_ends_a_lambda_stretch(tmp_path, gap, spans):
                 store.add_window(recording, k, begin + dt.timedelta(minutes=5 * k), values, speed=12.0)
         (trend,) = section_trends(store, 1.0, dt.timedelta(minutes=10))
     assert [a.duration / dt.timedelta(minutes=1) for a in trend.alarms] == spans
+
+
+def _same_named_in_two_folders(store: TrendStore) -> tuple:
+    """Two recordings both named run.csv (two folders: the name is the file's, its folder is not
+    kept), told apart by their bytes' hash: the first of six 1-min windows, the second a day later
+    of three 10-min windows (another window setting), lambda 0.8 throughout."""
+    from shaftline.monitor.trends import section_trends
+
+    later = START + dt.timedelta(days=1)
+    for content, begin, windows, minutes in (("c", START, 6, 1), ("d", later, 3, 10)):
+        recording = store.recording(content * 64, "run.csv", windows * minutes * 60 * 100, 100.0, begin)
+        for k in range(windows):
+            values = {("bearing", "min_film_thickness"): 1.6e-6, ("bearing", "film_parameter"): 0.8}
+            store.add_window(recording, k, begin + dt.timedelta(minutes=minutes * k), values, speed=12.0)
+    (trend,) = section_trends(store, 1.0, dt.timedelta(minutes=4))
+    return trend, later
+
+
+def _check_same_named(trend, later) -> None:
+    # Each recording's windows give its own window length (1 and 10 min): the day between them
+    # ends the stretch, and the second's windows are back to back, so two alarms, 5 min and 20 min.
+    # Grouped by name, the two recordings' windows were taken as one recording's, whose window
+    # length came out as the first's 1 min: the second's windows, 10 min apart, were each followed
+    # by 9 min "not recorded", which broke its stretch at every window (no alarm).
+    assert [(a.start, a.end) for a in trend.alarms] == [
+        (START, START + dt.timedelta(minutes=5)),
+        (later, later + dt.timedelta(minutes=20)),
+    ]
+    assert len(trend.times) == 9
+
+
+def test_same_named_recordings_in_two_folders_keep_their_own_gaps(tmp_path):
+    with TrendStore(tmp_path / "m.sqlite") as store:
+        _check_same_named(*_same_named_in_two_folders(store))
+        series = store.series("film_parameter", "bearing")
+        assert set(series["recording"]) == {"run.csv"} and series["recording_id"].nunique() == 2
+
+
+def test_same_named_recordings_keep_their_own_gaps_in_postgresql(postgres_url):
+    import sqlalchemy as sa
+
+    def drop() -> None:
+        engine = sa.create_engine(postgres_url)
+        with engine.begin() as connection:
+            for table in ("window_values", "windows", "recording_settings", "recordings"):
+                connection.execute(sa.text(f"DROP TABLE IF EXISTS {table} CASCADE"))
+        engine.dispose()
+
+    drop()  # a fresh store on the module's server (the round trip's rows are there), dropped after
+    try:
+        with TrendStore(postgres_url) as store:
+            _check_same_named(*_same_named_in_two_folders(store))
+    finally:
+        drop()

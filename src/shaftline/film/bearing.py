@@ -24,7 +24,7 @@ import numpy as np
 
 from shaftline.errors import InputError, SolverFailure, require_finite
 from shaftline.film.analytic import eccentricity_guess
-from shaftline.film.elastic import CoupledOrderings, LayerSystem, LinerSystem
+from shaftline.film.elastic import CoupledLiner, CoupledOrderings, LayerSystem, LinerSystem
 from shaftline.film.extremes import local_extreme
 from shaftline.film.geometry import (
     BearingGeometry,
@@ -477,10 +477,10 @@ class _Evaluation:
     rate: np.ndarray | None = None  # (2/omega) dH/dt of a moving journal
     contact: np.ndarray | None = None  # asperity pressure, Pa (rough surfaces only)
     deformation: np.ndarray | None = None  # liner deformation, m (elastic liner only)
-    liner_system: LinerSystem | LayerSystem | None = None  # coupled Newton matrix at this film (built on demand)
+    liner_system: CoupledLiner | None = None  # coupled Newton matrix at this film (built on demand)
     liner_iterations: int = 0
     liner_residual: float = 0.0  # max |R| of the liner equation left, of the clearance
-    nearby_system: LinerSystem | LayerSystem | None = None  # the last matrix factorised in its liner iteration
+    nearby_system: CoupledLiner | None = None  # the last matrix factorised in its liner iteration
 
 
 class _SolverState:
@@ -718,7 +718,7 @@ class JournalBearing:
         tilt_rates: tuple[float, float] = (0.0, 0.0),
         start_pressure: np.ndarray | None = None,
         deformation: np.ndarray | None = None,
-        chord: LinerSystem | LayerSystem | None = None,
+        chord: CoupledLiner | None = None,
         liner_tolerance: float = LINER_TOLERANCE,
     ) -> _Evaluation:
         """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
@@ -790,7 +790,7 @@ class JournalBearing:
         start: np.ndarray | None,
         deformation: np.ndarray,
         geometry: BearingGeometry,
-        chord: LinerSystem | LayerSystem | None = None,
+        chord: CoupledLiner | None = None,
         tolerance: float = LINER_TOLERANCE,
     ) -> _Evaluation:
         """The film and the column-model liner solved together by Newton's method on the coupled
@@ -960,7 +960,7 @@ class JournalBearing:
             )
         return cache.layer
 
-    def _liner_system(self, evaluation: _Evaluation) -> LinerSystem | LayerSystem:
+    def _liner_system(self, evaluation: _Evaluation) -> CoupledLiner:
         """The coupled film-liner Newton matrix at ``evaluation``'s film (kept on it)."""
         if evaluation.liner_system is None:
             cache = self._solver_state()
@@ -1080,17 +1080,10 @@ class JournalBearing:
             return [None] * len(films)
         slope = asperity_pressure_derivative(surface, evaluation.film) * self.geometry.radial_clearance
         system = evaluation.liner_system
-        if isinstance(system, LayerSystem):
-            # The film with the layer following: dH_r + dD of the linearised liner equation.
+        if system is not None:
+            # The film with the liner following: dH_r + dD of the linearised liner equation.
             assert d_pressure is not None
-            films = [
-                d_film + system.deformation_change(d_film, dp) for d_film, dp in zip(films, d_pressure, strict=True)
-            ]
-        elif system is not None:
-            # The film with the liner following: (dH_r + K dP) / M (film/elastic.py).
-            assert d_pressure is not None
-            diagonal = system.diagonal.reshape(evaluation.film.shape)
-            films = [(d_film + system.coupling * dp) / diagonal for d_film, dp in zip(films, d_pressure, strict=True)]
+            films = [system.film_change(d_film, dp) for d_film, dp in zip(films, d_pressure, strict=True)]
         return [slope * d_film for d_film in films]
 
     def _evaluate_inside(self, position: JournalPosition, warm: bool, start: np.ndarray | None = None) -> _Evaluation:
@@ -1164,14 +1157,12 @@ class JournalBearing:
         changes = []
         lined = evaluation.deformation is not None
         system = self._liner_system(evaluation) if lined else None
-        # The column model scales the rigid film change by 1/M first (its asperity load's
-        # deformation); the layer model takes that share in its own solve (LayerSystem.response).
-        diagonal = system.diagonal.reshape(evaluation.film.shape) if isinstance(system, LinerSystem) else None
         for d_film, d_rate in directions:
-            if diagonal is not None:
-                # The asperity load of the rigid film change deforms the liner too: the film
-                # changes by dH_r / M before the pressure change's share (film/elastic.py).
-                d_film = d_film / diagonal
+            if system is not None:
+                # The asperity load of the rigid film change deforms the liner too: the column
+                # model's film changes by dH_r / M before the pressure change's share; the layer
+                # model takes that share in its own solve (film/elastic.py, CoupledLiner).
+                d_film = system.film_direction(d_film)
             dc_theta, dc_z, d_couette = stencil_derivative(
                 evaluation.film / self.geometry.radial_clearance,
                 d_film,
@@ -1191,13 +1182,11 @@ class JournalBearing:
                 d_residual = d_residual + void_transport(d_face, solution.void)
             changes.append(d_residual)
         d_residual = np.array(changes)
-        if isinstance(system, LayerSystem):
-            # Elastic layer: the film follows the pressure change (docs/theory.md, "Elastic layer").
+        if system is not None:
+            # Elastic liner: the film follows the pressure change (docs/theory.md, "Elastic liner"
+            # and "Elastic layer").
             rigid = np.array([np.broadcast_to(d_film, evaluation.film.shape) for d_film, _ in directions])
             d_pressure, _ = system.response(d_residual, rigid)
-        elif system is not None:
-            # Elastic liner: the film follows the pressure change (docs/theory.md, "Elastic liner").
-            d_pressure, _ = system.response(d_residual)
         elif isinstance(solution, JfoSolution):
             d_pressure = solution.pressure_response(d_residual)
         else:
@@ -1822,12 +1811,8 @@ class JournalBearing:
         d_pressure = np.tensordot(step, response[1], axes=1)
         d_ey, d_ez = self._offset_directions(evaluation)
         rigid = step[0] * d_ey + step[1] * d_ez
-        if isinstance(system, LayerSystem):
-            change = system.deformation_change(np.broadcast_to(rigid, d_pressure.shape), d_pressure)
-            return evaluation.deformation + self.geometry.radial_clearance * change
-        # dD = (K dP + (1 - M) dH_r) / M: the linearised liner equation (film/elastic.py).
-        diagonal = system.diagonal.reshape(d_pressure.shape)
-        change = (system.coupling * d_pressure + (1.0 - diagonal) * rigid) / diagonal
+        # The linearised liner equation's dD (film/elastic.py, CoupledLiner.deformation_change).
+        change = system.deformation_change(np.broadcast_to(rigid, d_pressure.shape), d_pressure)
         return evaluation.deformation + self.geometry.radial_clearance * change
 
     def _limit_step(self, step: np.ndarray, c: float) -> np.ndarray:

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
+from typing import Protocol
 
 import numpy as np
 import scipy.sparse as sp
@@ -38,7 +39,14 @@ from shaftline.film.layer import ElasticLayer
 from shaftline.film.reynolds import Stencil
 from shaftline.film.roughness import FilmFlow
 
-__all__ = ["CoupledOrderings", "LayerSystem", "LinerSystem", "film_operator", "film_residual_jacobian"]
+__all__ = [
+    "CoupledLiner",
+    "CoupledOrderings",
+    "LayerSystem",
+    "LinerSystem",
+    "film_operator",
+    "film_residual_jacobian",
+]
 
 
 @lru_cache(maxsize=8)
@@ -185,6 +193,38 @@ def _restriction(pattern: _FacePattern, nodes: np.ndarray) -> tuple[np.ndarray, 
     sub = slots.tocsr()[nodes][:, nodes].tocsc()
     sub.sort_indices()
     return sub.data.astype(np.intp) - 1, sub.indices, sub.indptr
+
+
+class CoupledLiner(Protocol):
+    """The coupled film-liner Newton system at one film as the bearing uses it, whichever the
+    liner model: :class:`LinerSystem` (column) or :class:`LayerSystem` (layer).
+
+    Arrays of the film's shape are (nz, nt) or flat (n) as each method says; ``dH_r`` is a change
+    of the rigid film, ``dP`` of the relative pressure, ``dD`` of the deformation, all over the
+    clearance (docs/theory.md Sect. 17, "Elastic liner" and "Elastic layer")."""
+
+    def step(self, liner_residual: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Newton step ``(dP, dD)`` (flat, n) for the liner residual ``R`` (film residual zero)."""
+        ...
+
+    def film_direction(self, rigid_change: np.ndarray) -> np.ndarray:
+        """The film change along which the film residual's change ``dr`` handed to
+        :meth:`response` is taken for a rigid film change ``dH_r`` (nz, nt)."""
+        ...
+
+    def response(self, residual_changes: np.ndarray, rigid_changes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Pressure changes ``dP`` (k, nz, nt) and the deformation changes the solve gives with
+        them (the column model: the pressure's share only) for film-residual changes ``dr``
+        (k, nz, nt) of the rigid film changes ``dH_r`` (k, nz, nt), the liner following."""
+        ...
+
+    def deformation_change(self, rigid_change: np.ndarray, d_pressure: np.ndarray) -> np.ndarray:
+        """``dD`` (shape of ``d_pressure``) of the linearised liner equation for ``dH_r`` and ``dP``."""
+        ...
+
+    def film_change(self, rigid_change: np.ndarray, d_pressure: np.ndarray) -> np.ndarray:
+        """``dH = dH_r + dD`` (shape of ``d_pressure``), the film following ``dH_r`` and ``dP``."""
+        ...
 
 
 #: SuperLU's panel width and supernode relaxation for the coupled matrix (film/elastic.py).
@@ -350,10 +390,18 @@ class LinerSystem:
         d_pressure[self.nodes] = self.factor.solve(rhs[self.nodes])
         return d_pressure, (self.coupling * d_pressure - r) / self.diagonal
 
-    def response(self, residual_changes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def film_direction(self, rigid_change: np.ndarray) -> np.ndarray:
+        """``dH_r / M`` (nz, nt): the asperity load of a rigid film change deforms the liner node
+        by node, so the film residual's change for :meth:`response` is taken along it."""
+        return rigid_change / self.diagonal.reshape(rigid_change.shape)
+
+    def response(
+        self, residual_changes: np.ndarray, rigid_changes: np.ndarray | None = None
+    ) -> tuple[np.ndarray, np.ndarray]:
         """Pressure changes ``dP`` and their share ``K dP / M`` of the deformation change
         (k, nz, nt) for film-residual changes ``dr`` (k, nz, nt), the liner following; ``dr`` of a
-        rigid film change ``dH_r`` is that of ``dH_r / M``."""
+        rigid film change ``dH_r`` is that of ``dH_r / M`` (:meth:`film_direction`), which holds
+        the rigid change's share, so ``rigid_changes`` is not needed (:class:`CoupledLiner`)."""
         shape = residual_changes.shape
         flat = residual_changes.reshape(shape[0], -1)
         d_pressure = np.zeros_like(flat)
@@ -361,6 +409,16 @@ class LinerSystem:
             d_pressure[:, self.nodes] = self.factor.solve(np.ascontiguousarray(-flat[:, self.nodes].T)).T
         d_deformation = self.coupling * d_pressure / self.diagonal[None, :]
         return d_pressure.reshape(shape), d_deformation.reshape(shape)
+
+    def deformation_change(self, rigid_change: np.ndarray, d_pressure: np.ndarray) -> np.ndarray:
+        """``dD = (K dP + (1 - M) dH_r) / M`` (shape of ``d_pressure``), the linearised liner
+        equation ``M dD = K dP + k p_a' c dH_r / c`` with ``k p_a' = 1 - M``."""
+        diagonal = self.diagonal.reshape(d_pressure.shape)
+        return (self.coupling * d_pressure + (1.0 - diagonal) * rigid_change) / diagonal
+
+    def film_change(self, rigid_change: np.ndarray, d_pressure: np.ndarray) -> np.ndarray:
+        """``dH = dH_r + dD = (dH_r + K dP) / M`` (shape of ``d_pressure``)."""
+        return (rigid_change + self.coupling * d_pressure) / self.diagonal.reshape(d_pressure.shape)
 
 
 #: Relative residual of the Krylov solve of a layer-model Newton step: an inexact Newton step
@@ -525,6 +583,10 @@ class LayerSystem:
         r = liner_residual.ravel()
         return self.solve(np.zeros(int(self.free.sum())), -r, LAYER_STEP_RTOL)
 
+    def film_direction(self, rigid_change: np.ndarray) -> np.ndarray:
+        """``dH_r`` itself: the layer's solve (:meth:`response`) takes the asperity load's share."""
+        return rigid_change
+
     def response(self, residual_changes: np.ndarray, rigid_changes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Pressure and deformation changes ``dP``, ``dD`` (k, nz, nt) for film-residual changes
         ``dr`` (k, nz, nt) of rigid film changes ``dH_r`` (k, nz, nt), the liner following:
@@ -559,3 +621,7 @@ class LayerSystem:
                 matrix, rhs, rtol=LAYER_RESPONSE_RTOL, atol=0.0, restart=LAYER_RESTART, maxiter=LAYER_CYCLES
             )
         return (w / diagonal).reshape(shape)
+
+    def film_change(self, rigid_change: np.ndarray, d_pressure: np.ndarray) -> np.ndarray:
+        """``dH = dH_r + dD`` (shape of ``d_pressure``), ``dD`` of :meth:`deformation_change`."""
+        return rigid_change + self.deformation_change(rigid_change, d_pressure)

@@ -44,6 +44,24 @@ def _flash_form(result: GearResult) -> str:
     return {"iso_cylindrical": "its form for cylindrical gears, Eq. A.5", "iso_general": "its general Eq. 5"}[method]
 
 
+#: Width of the terminal the summary's tables must fit, characters.
+TERMINAL_WIDTH = 80
+
+
+def _short(value: float) -> str:
+    """A rating in at most four characters (two decimals below 10, one below 100); "-" when missing."""
+    if not math.isfinite(value):
+        return "-"
+    magnitude = abs(value)
+    return f"{value:.2f}" if magnitude < 10 else f"{value:.1f}" if magnitude < 100 else f"{value:.0f}"
+
+
+def _table_width(columns: Sequence[Sequence[str]]) -> int:
+    """Characters the terminal's table (rich, one space of padding each side, a rule between
+    columns and at both edges) takes for ``columns`` (each its header then its cells)."""
+    return sum(max(len(cell) for cell in column) + 3 for column in columns) + 1
+
+
 def _verdict(sp: float) -> str:
     from shaftline.gears.scuffing import NO_SCUFFING, SCUFFING
 
@@ -244,6 +262,74 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
             )
         return tables
 
+    def _matrix(self, result: GearResult) -> list[Block]:
+        """Seed 002's SP and ISO's S_B (``[gears.iso]``) as one compact matrix, torque steps (FZG
+        load stages) by pinion speed, each cell ``SP/S_B``, marked where either says scuffing;
+        the speeds split over as many tables as it takes to fit :data:`TERMINAL_WIDTH` columns
+        (the per-speed tables of :meth:`_tables` took a screen each: five speeds, 173 lines)."""
+        from shaftline.gears.scuffing import NO_SCUFFING, SCUFFING
+
+        study, iso = result.study, result.iso
+        stages = study.fzg_load_stages
+        first = ["stage"] if stages else []
+        leading = [[*first, "T [N m]"]] + [
+            ([str(stages[k])] if stages else []) + [f"{torque:g}"] for k, torque in enumerate(study.torques)
+        ]
+        lead_columns = [list(column) for column in zip(*leading, strict=True)]
+
+        def column(j: int) -> list[str]:
+            header = f"{float(study.speeds[j]) * 30.0 / math.pi:.0f} rpm"
+            cells = [
+                _short(float(result.sp[k, j])) + ("" if iso is None else "/" + _short(float(iso.safety[k, j])))
+                for k in range(len(study.torques))
+            ]
+            return [header, *cells]
+
+        def mark(k: int, j: int) -> str:
+            scuffing = result.sp[k, j] > SCUFFING or (iso is not None and iso.safety[k, j] < 1.0)
+            return "fail" if scuffing else ""
+
+        # Greedy chunks of speeds, each as wide as fits (at least one speed per table).
+        chunks: list[list[int]] = [[]]
+        for j in range(len(study.speeds)):
+            trial = [*chunks[-1], j]
+            if chunks[-1] and _table_width(lead_columns + [column(i) for i in trial]) > TERMINAL_WIDTH:
+                chunks.append([j])
+            else:
+                chunks[-1] = trial
+        what = "SP" if iso is None else "SP/S_B"
+        rated = f"seed 002's SP (C = {result.coefficient:.4g} W/(m K), T_cr = {study.critical_temperature:g} °C)" + (
+            "" if iso is None else " / ISO/TS 6336-20's S_B"
+        )
+        by = "FZG load stage" if stages else "torque step"
+        blocks: list[Block] = []
+        for n, chunk in enumerate(chunks, start=1):
+            columns = [column(j) for j in chunk]
+            part = f" ({n} of {len(chunks)})" if len(chunks) > 1 else ""
+            blocks.append(
+                Table(
+                    [*(c[0] for c in lead_columns), *(c[0] for c in columns)],
+                    [
+                        [*(lead[k + 1] for lead in lead_columns), *(c[k + 1] for c in columns)]
+                        for k in range(len(study.torques))
+                    ],
+                    f"{what} by {by} and pinion speed{part}: {rated}; {study.mesh.model.lubricant.name} at "
+                    f"{study.oil_temperature:g} °C",
+                    marks=[[""] * len(lead_columns) + [mark(k, j) for j in chunk] for k in range(len(study.torques))],
+                )
+            )
+        iso_rule = "" if iso is None else "; S_B < 1 scuffing risk (ISO)"
+        blocks.append(
+            Paragraph(
+                f"SP > {SCUFFING:g} scuffing, < {NO_SCUFFING:g} safe, uncertain between (seed 002){iso_rule}; "
+                "marked where either says scuffing. Per speed, p_H, Λ, f"
+                + ("" if iso is None else ", θ_B,max" + (" and S_intS" if result.integral is not None else ""))
+                + ": the report and results.json.",
+                "note",
+            )
+        )
+        return blocks
+
     def _notes(self, result: GearResult) -> list[Block]:
         blocks: list[Block] = [Paragraph(f"Extrapolated: {text}", "warn") for text in result.warnings]
         if result.calibrated_at is not None and result.study.calibration is not None:
@@ -288,13 +374,19 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
         return found
 
     def summary(self, result: GearResult) -> list[Block]:
+        """One speed: its two tables (SP with p_H, Λ, f; ISO's ratings); several: the compact
+        SP/S_B matrix of every speed (:meth:`_matrix`), the per-speed tables in the report."""
+        if len(result.study.speeds) > 1:
+            return [*self._notes(result), *self._matrix(result)]
         return [*self._notes(result), *self._tables(result)]
 
     def report(self, result: GearResult) -> list[Block]:
         from shaftline.gears import figures
 
+        overview = self._matrix(result) if len(result.study.speeds) > 1 else []
         return [
             *self._notes(result),
+            *overview,
             *self._tables(result),
             Paragraph(f"Lubricant data: {result.study.mesh.model.lubricant.source}", "note"),
             Paragraph(

@@ -128,7 +128,8 @@ class StepsSection(Section):
     speeds: Annotated[
         list[Annotated[float, Quantity("speed", gt=0), PINION_SPEED]], Field(min_length=1, max_length=200)
     ]
-    """Pinion speeds; the first is the test speed of the SP-against-torque figure (the tables show each)."""
+    """Pinion speeds; the first is the test speed of the SP-against-torque figure (several: the
+    summary gives SP/S_B as one torque-step x speed matrix, the report each speed's tables too)."""
 
     @model_validator(mode="after")
     def _one_load(self) -> StepsSection:

@@ -217,7 +217,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             blocks += [
                 *_masked_warnings(result.identified),
                 *_runout_blocks(result.identified),
-                *_identified_tables(result.identified),
+                *_identified_tables(result.identified, short_names=True),
             ]
         if result.points:
             blocks.append(self._table(result))
@@ -650,17 +650,42 @@ def _masked_warnings(identified: Identified) -> list[Block]:
     return blocks
 
 
-def _identified_tables(identified: Identified) -> list[Table]:
+#: Longest recording name in the terminal's tables of ``monitor identify``: the widest that
+#: leaves the first table (its start time, three counts) within 80 columns.
+NAME_WIDTH = 24
+
+
+def shortened(name: str, width: int = NAME_WIDTH) -> str:
+    """``name`` in at most ``width`` characters, cut in the middle (an ellipsis there) so that its
+    start and its end, where a recording's date, speed or number and its suffix usually are, stay.
+
+    >>> shortened("stern_tube_aft_2026-11-02T06-00-00_120rpm.csv")
+    'stern_tube_…0_120rpm.csv'
+    >>> shortened("run1.tdms")
+    'run1.tdms'
+    """
+    if len(name) <= width:
+        return name
+    head = (width - 1) // 2
+    return name[:head] + "…" + name[len(name) - (width - 1 - head) :]
+
+
+def _identified_tables(identified: Identified, short_names: bool = False) -> list[Block]:
     """What ``monitor identify`` did with each recording (windows, stored, rejected) and what it
     found (speed, mean h_min per section, lowest lambda, alarms): two tables, each row on one line
     of an 80-column terminal (one table of nine columns folded every row over five lines and its
-    headers inside words, "window s")."""
+    headers inside words, "window s"). With ``short_names`` (the terminal) names longer than
+    :data:`NAME_WIDTH` are cut in the middle (:func:`shortened`; rich folded them over lines), with
+    a note that the report and results.json have them in full."""
     import numpy as np
 
     work, found = [], []
+    cut = False
     for item in identified.recordings:
         done = item.processed
         name = item.plan.recording.path.name
+        if short_names and len(name) > NAME_WIDTH:
+            name, cut = shortened(name), True
         by_name = {trend.section: trend for trend in item.trends}
         # no spaces in a cell that must stay on one line (wrapped at them otherwise)
         films = "/".join(
@@ -688,6 +713,15 @@ def _identified_tables(identified: Identified) -> list[Table]:
     )
     # Headers no wider than their cells where they can be: a table wider than the terminal is
     # narrowed by rich inside the cells (the recording names folded).
+    note: list[Block] = []
+    if cut:
+        note = [
+            Paragraph(
+                f"Recording names longer than {NAME_WIDTH} characters are cut in the middle (…) here; the report "
+                "and results.json give them in full.",
+                "note",
+            )
+        ]
     return [
         Table(
             ["recording", "start (UTC)", "windows", "stored", "rejected"],
@@ -701,6 +735,7 @@ def _identified_tables(identified: Identified) -> list[Table]:
             f"Identified films: mean speed, mean h_min at {names}, lowest film parameter lambda, lambda alarms "
             f"(below {identified.lambda_threshold:g} for {identified.alarm_duration:g} s or more)",
         ),
+        *note,
     ]
 
 

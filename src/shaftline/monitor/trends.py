@@ -389,9 +389,11 @@ class TrendStore:
 
     # -- series ------------------------------------------------------------------------
     def series(self, quantity: str, section: str | None = None, recording: StoredRecording | None = None) -> Any:
-        """A quantity over time as a pandas DataFrame (``time``, ``recording``, ``window``,
-        ``section``, ``speed``, ``value``), oldest first; one section or all, of one
-        recording or all."""
+        """A quantity over time as a pandas DataFrame (``time``, ``recording``, ``recording_id``,
+        ``window``, ``section``, ``speed``, ``value``), oldest first; one section or all, of one
+        recording or all. ``recording`` is the recording's file name, for people; ``recording_id``
+        its stored identity (one per content hash), which tells apart two recordings of one name
+        (files of one name in two folders)."""
         import pandas as pd
         import sqlalchemy as sa
 
@@ -400,6 +402,7 @@ class TrendStore:
             sa.select(
                 w.c.time,
                 r.c.name.label("recording"),
+                w.c.recording_id,
                 w.c.window,
                 v.c.section,
                 w.c.speed,
@@ -417,7 +420,7 @@ class TrendStore:
         with self._engine.connect() as connection:
             frame = pd.DataFrame(connection.execute(query).mappings().all())
         if frame.empty:
-            return pd.DataFrame(columns=["time", "recording", "window", "section", "speed", "value"])
+            return pd.DataFrame(columns=["time", "recording", "recording_id", "window", "section", "speed", "value"])
         frame["time"] = pd.to_datetime(frame["time"], utc=True)
         return frame
 
@@ -605,10 +608,12 @@ def section_trends(
     flags = store.series("rejected", "bearing", recording=recording)
     flags = flags[flags["value"].fillna(0.0) != 0.0]
     gaps = [t.to_pydatetime() for t in flags["time"]]
-    gap_names = list(flags["recording"])
+    # recordings by their stored identity, not their names: two files of one name (two folders)
+    # are two recordings, each with its own window length
+    gap_ids = [int(i) for i in flags["recording_id"]]
     windows = pd.concat([films, flags]) if not flags.empty else films
-    lengths = _window_lengths(windows, {r.name: r.duration for r in store.recordings()})
-    key = ["time", "window", "recording", "section"]
+    lengths = _window_lengths(windows, {r.id: r.duration for r in store.recordings()})
+    key = ["time", "window", "recording_id", "section"]
     joined = films.merge(ratios[[*key, "value"]], on=key, how="left", suffixes=("", "_lambda"))
     if limit is None:
         sigma = (joined["value"] / joined["value_lambda"]).replace([np.inf, -np.inf], np.nan).median()
@@ -625,7 +630,7 @@ def section_trends(
         stamps, values = _with_breaks(
             times + gaps,
             np.concatenate([parameter, np.full(len(gaps), math.nan)]),
-            list(rows["recording"]) + gap_names,
+            [int(i) for i in rows["recording_id"]] + gap_ids,
             lengths,
         )
         alarms = lambda_alarms(stamps, values, threshold, min_duration, section)
@@ -639,21 +644,22 @@ def section_trends(
     return tuple(trends)
 
 
-def _window_lengths(frame: Any, durations: Mapping[str, float]) -> dict[str, float]:
-    """Length of a window of each recording, s: the time from one window to the next of the
-    stored ones (a recording's windows are back to back), or the recording's length when it has
-    one window only."""
+def _window_lengths(frame: Any, durations: Mapping[int, float]) -> dict[int, float]:
+    """Length of a window of each recording (by its stored id), s: the time from one window to the
+    next of the stored ones (a recording's windows are back to back), or the recording's length
+    when it has one window only."""
     import pandas as pd
 
-    lengths: dict[str, float] = {}
-    for name, rows in frame.drop_duplicates(["recording", "window"]).groupby("recording"):
+    lengths: dict[int, float] = {}
+    for identity, rows in frame.drop_duplicates(["recording_id", "window"]).groupby("recording_id"):
         number = rows["window"].to_numpy(float)
         stamps = pd.to_datetime(rows["time"], utc=True)
         seconds = (stamps - stamps.min()).dt.total_seconds().to_numpy(float)
         order = np.argsort(number)
         steps, spans = np.diff(number[order]), np.diff(seconds[order])
         each = spans[steps > 0] / steps[steps > 0]
-        lengths[str(name)] = float(np.median(each)) if each.size else float(durations.get(str(name), math.nan))
+        number_id = int(identity)
+        lengths[number_id] = float(np.median(each)) if each.size else float(durations.get(number_id, math.nan))
     return lengths
 
 
@@ -663,7 +669,7 @@ MAX_GAP_WINDOWS = 0.5
 
 
 def _with_breaks(
-    times: list[dt.datetime], values: np.ndarray, recordings: list[str], lengths: Mapping[str, float]
+    times: list[dt.datetime], values: np.ndarray, recordings: list[int], lengths: Mapping[int, float]
 ) -> tuple[list[dt.datetime], np.ndarray]:
     """The series in time order with a missing value (NaN, which ends a lambda stretch) wherever
     the next window starts more than :data:`MAX_GAP_WINDOWS` of a window after the end of the
@@ -717,7 +723,7 @@ def centre_lines(
     attitude = store.series("attitude_angle", recording=recording)
     if ratio.empty or attitude.empty:
         return ()
-    key = ["time", "window", "recording", "section"]
+    key = ["time", "window", "recording_id", "section"]
     joined = ratio.merge(attitude[[*key, "value"]], on=key, suffixes=("", "_attitude")).dropna(
         subset=["speed", "value", "value_attitude"]
     )

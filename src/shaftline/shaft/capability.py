@@ -82,6 +82,7 @@ FILM_UNITS = {
     "line_load": "N/m",
     "stiffness": "rows F_y, F_z [N], M_y, M_z [N m]; columns y, z [m], tilt_y, tilt_z [rad]",
     "damping": "rows F_y, F_z [N], M_y, M_z [N m]; columns vy, vz [m/s], tilt rates [rad/s]",
+    "coefficients_note": "empty, or why stiffness and damping are null (not available)",
     "asperity_load_share": "share of the film force carried by asperity contact (rough surfaces; 0 smooth)",
     "min_film_ratio": "h_min over the composite roughness (rough surfaces; null smooth)",
     "max_liner_deformation": "m (elastic liner; 0 without)",
@@ -140,8 +141,10 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                     "bore_z": f.bore_z.tolist(),
                 },
                 "line_load": {"y": f.line_load[0].tolist(), "z": f.line_load[1].tolist()},
-                "stiffness": f.stiffness.tolist(),
-                "damping": f.damping.tolist(),
+                # null when not available (an elastic liner that does not settle there): NaN is not JSON.
+                "stiffness": f.stiffness.tolist() if np.isfinite(f.stiffness).all() else None,
+                "damping": f.damping.tolist() if np.isfinite(f.damping).all() else None,
+                "coefficients_note": f.coefficients_note,
             }
             for f in coupled.films
         ],
@@ -213,6 +216,8 @@ def _film_notes(coupled: CoupledResult) -> Paragraph | None:
                 f"{solved * 1e3:.4g} mrad with the bearing in contact at the bore (the alignment table's and "
                 "the comparison's)"
             )
+        if f.coefficients_note:
+            notes.append(f.coefficients_note)
         if math.isfinite(state.min_film_ratio):
             notes.append(
                 f"λ = h_min/σ {state.min_film_ratio:.3g}, asperities carry {state.asperity_load_share * 100:.3g} % "
@@ -627,8 +632,11 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             blocks += [self._coefficients(film, name) for film in coupled.films]
         return blocks
 
-    def _coefficients(self, film: FilmBearingResult, condition: str) -> Table:
-        """The 4 x 4 film stiffness and damping, in units a rotor-dynamics model takes."""
+    def _coefficients(self, film: FilmBearingResult, condition: str) -> Table | Paragraph:
+        """The 4 x 4 film stiffness and damping, in units a rotor-dynamics model takes (a note
+        when they are not available)."""
+        if film.coefficients_note:
+            return Paragraph(f"Film stiffness and damping, {film.name}, {condition}: {film.coefficients_note}.", "warn")
         labels = ["y", "z", "tilt_y", "tilt_z"]
         scales = np.array([1e-6, 1e-6, 1e-6, 1e-6])  # MN/m, MN/rad, MN m/m, MN m/rad
         rows = []

@@ -158,6 +158,11 @@ class FilmBearingResult:
         Film stiffness ``-dF/dq`` and damping ``-dF/dv`` at the coupled journal line
         (:func:`film_coefficients`): rows ``(F_y, F_z, M_y, M_z)``, columns
         ``(y, z, tilt_y, tilt_z)``; N/m, N/rad, N m/m, N m/rad (and N s/m ... for damping).
+        NaN when they are not available (:attr:`coefficients_note`).
+    coefficients_note : str
+        Empty when the stiffness and damping were computed; otherwise why they are not
+        available (an elastic liner whose film-liner iteration does not settle at the coupled
+        journal line when the coefficients are taken there).
     """
 
     name: str
@@ -175,6 +180,7 @@ class FilmBearingResult:
     contact: bool
     stiffness: np.ndarray = field(repr=False, default_factory=lambda: np.full((4, 4), np.nan))
     damping: np.ndarray = field(repr=False, default_factory=lambda: np.full((4, 4), np.nan))
+    coefficients_note: str = ""
 
 
 @dataclass(frozen=True, eq=False)
@@ -908,7 +914,18 @@ class CoupledAlignment:
             weights[[0, -1]] *= 0.5
             fy, fz = (float(v) for v in load.row_force.sum(axis=1))
             contact = bool(state.contact)
-            stiffness, damping = film_coefficients(film.bearing, cy, cz)
+            coefficients_note = ""
+            try:
+                stiffness, damping = film_coefficients(film.bearing, cy, cz)
+            except LinerConvergenceError as exc:
+                # The coefficients' film-liner solve at the converged line (from its own start)
+                # does not settle on a soft liner: the alignment stands without them.
+                stiffness, damping = np.full((4, 4), np.nan), np.full((4, 4), np.nan)
+                coefficients_note = (
+                    "stiffness and damping not available: the elastic liner's film-liner iteration "
+                    f"does not settle at the converged journal line (liner residual {float(exc.args[0]):.3g} "
+                    "of the clearance); try a stiffer or thinner liner, or a finer film grid"
+                )
             bore_chord = float(bore_y[-1] - bore_y[0]) / geometry.length
             bore_relative = float((cy[-1] - cy[0]) / geometry.length) - bore_chord
             films.append(
@@ -928,6 +945,7 @@ class CoupledAlignment:
                     contact=contact,
                     stiffness=stiffness,
                     damping=damping,
+                    coefficients_note=coefficients_note,
                 )
             )
             old = bearings[film.index]
