@@ -345,7 +345,8 @@ class Equilibrium:
         the position reached at the floor).
     iterations : int
         Newton iterations used (on the bearing's grid; on a grid started from the
-        equilibrium of a coarser one, those after that start).
+        equilibrium of a coarser one, those after that start), with the settling steps of
+        a rigid rough bore whose Newton stalled (at most ``max_iterations`` more).
     residual : float
         Magnitude of ``force + load`` at the end, N.
     """
