@@ -197,6 +197,35 @@ def test_equilibrium_jacobian_is_exact_with_turbulence(surface: SurfaceRoughness
     assert np.abs(np.column_stack(columns) - jacobian).max() < 1e-5 * np.abs(jacobian).max()
 
 
+def test_a_rough_film_past_the_mean_plane_has_a_laminar_reynolds_number_not_a_negative_one() -> None:
+    """A rough film whose mean planes overlap (h < 0, boundary lubrication) has no positive gap on
+    which Re_h = Re_c h / c could be taken: the reported map is Re_c max(H, 0) (0 there, never
+    negative), and the film equation's coefficients there are laminar (12 / k = 1, zero slope),
+    continuous with h -> 0+ where Re_h -> 0. Elsewhere Re_h is Re_c H as before. (On the mean gap
+    the rough flow uses, h_T <= 0.4 sigma, Re_h would be at most 6 here: laminar either way.)"""
+    surface = SurfaceRoughness.preset("steel_polymer")
+    bearing = _rig(350, replace(RIG, surface=surface), turbulence="on")
+    c = RIG.radial_clearance
+    # The journal 0.5 sigma past the mean plane at the bottom of the bore (lambda_min = -0.5).
+    position = JournalPosition(ey=-(c + 0.5 * surface.sigma), ez=0.0)
+    state = bearing.solve_at(position, warm_start=False)
+    film = state.film
+    assert film.min() < 0.0 and state.reynolds_number is not None
+    assert state.reynolds_number.min() == 0.0
+    np.testing.assert_array_equal(state.reynolds_number[film <= 0.0], 0.0)
+    above = film > 0.0
+    np.testing.assert_allclose(state.reynolds_number[above], bearing.reynolds_number * film[above] / c, rtol=1e-12)
+    flow = bearing._rough_film()
+    assert flow is not None
+    closed = np.array([-0.5, -0.01]) * surface.sigma / c
+    rough_flow = replace(RIG, surface=surface)
+    laminar = _rig(350, rough_flow)._rough_film()
+    assert laminar is not None
+    np.testing.assert_array_equal(flow.conductance(closed), laminar.conductance(closed))
+    np.testing.assert_array_equal(flow.conductance_derivative(closed), laminar.conductance_derivative(closed))
+    assert np.all(np.isfinite(state.pressure)) and state.max_reynolds_number > 0.0
+
+
 def test_water_stern_tube_at_high_speed_is_turbulent_and_lifts_the_journal() -> None:
     """Seed 001's rig with water at 350 rpm: Re_c = 3650, local Re_h up to 7200, far above
     the Taylor onset 41.3 sqrt(R/c) = 708 (Lv et al. 2018-19, cited by seed 001, report local

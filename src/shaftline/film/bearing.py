@@ -96,13 +96,29 @@ CONTINUATION_TOLERANCE = 1e-5
 #: residual, after which a rigid rough bore's equilibrium is given up: as contact when its film
 #: is at the boundary limit (the asperities there cannot carry the rest of the load), as not
 #: converged above it (seed 001's rig at 15 rpm: the residual stalls at 11 % of the load with
-#: the film at lambda 0.1, the fluid spike of a contact zone one or two cells wide). Smooth films
-#: keep their rule (no descent left).
+#: the film at lambda 0.1, the fluid spike of a contact zone one or two cells wide) unless the
+#: grid resolves the contact zone (:data:`SETTLE_ZONE_NODES`), where the equilibrium is settled
+#: (:meth:`JournalBearing._settle`). Smooth films keep their rule (no descent left).
 STALLED_ITERATIONS = 4
 STALLED_REDUCTION = 0.99
 #: A rough film within this many sigma above the boundary limit (``BOUNDARY_LIMIT * sigma``) is
 #: at its floor: its asperities at the limit of the model cannot carry the rest of the load.
 FLOOR_MARGIN = 0.05
+#: Pseudo-transient settling of a stalled rigid rough bore (:meth:`JournalBearing._settle`): its
+#: first step moves the journal about this many sigma along the net force, no step moves it more
+#: than ``SETTLE_MAX_MOVE`` sigma (the film changes by at most that much), and a step that raises
+#: the residual more than ``SETTLE_GROWTH`` times is taken again with a quarter of the pseudo-time.
+SETTLE_FIRST_MOVE = 0.1
+SETTLE_MAX_MOVE = 0.5
+SETTLE_GROWTH = 2.0
+#: Circumferential nodes the film must have within one sigma of its minimum (on the row of the
+#: minimum) for the settling to run. On fewer the film pressure of the contact zone is a spike on
+#: a node or two whose size jumps as the minimum moves between nodes, the discrete force is not a
+#: function a root-finder can follow, and the equilibrium is reported not converged at once, as
+#: before. Seed 001's rigid rig (docs/validation.md, "Rigid rough bore at low speed"): 3-4 nodes on
+#: 120 (Newton stalls at 5 of 5 speeds below 21 rpm), 7 on 240 (the settling ran its 60 steps
+#: without converging at 3 of 3 stalled speeds), 14 on 480 (it converged at 3 of 3).
+SETTLE_ZONE_NODES = 10
 #: Liner deformation converged when the column model's residual is below this share of the
 #: radial clearance everywhere (0.55 pm on seed 001's rig): tight enough that the force it
 #: leaves uncertain is below the equilibrium's tolerance (1e-8 of the load); Newton's quadratic
@@ -329,7 +345,8 @@ class Equilibrium:
         the position reached at the floor).
     iterations : int
         Newton iterations used (on the bearing's grid; on a grid started from the
-        equilibrium of a coarser one, those after that start).
+        equilibrium of a coarser one, those after that start), with the settling steps of
+        a rigid rough bore whose Newton stalled (at most ``max_iterations`` more).
     residual : float
         Magnitude of ``force + load`` at the end, N.
     """
@@ -1609,6 +1626,9 @@ class JournalBearing:
             if accepted is None:
                 hmin = float(evaluation.film.min()) if evaluation.deformation is not None else self.min_film(position)
                 contact = self._at_floor(hmin)
+                if rough and not contact and self.contact_zone_nodes(evaluation.film) >= SETTLE_ZONE_NODES:
+                    evaluation, iterations, contact = self._settle(evaluation, load, tolerance, iterations, progress)
+                    residual = evaluation.force + load
                 break
             evaluation = accepted
             position = evaluation.position
@@ -1619,10 +1639,17 @@ class JournalBearing:
                 # A rigid rough bore whose steps only crawl: stop after a few such steps instead of
                 # spending max_iterations. It is contact only at the boundary limit, where the
                 # asperities at the model's end cannot carry the rest of the load; above it the
-                # equilibrium is reported as not converged (docs/theory.md, "Boundary lubrication").
+                # journal is settled along its net force where the grid resolves the contact zone
+                # (:meth:`_settle`), else reported as not converged (docs/theory.md, "Boundary
+                # lubrication", "Rigid rough bore at low speed").
                 stalled = stalled + 1 if np.hypot(*residual) > STALLED_REDUCTION * norm else 0
                 if stalled >= STALLED_ITERATIONS:
                     contact = self._at_floor(self.min_film(position))
+                    if not contact and self.contact_zone_nodes(evaluation.film) >= SETTLE_ZONE_NODES:
+                        evaluation, iterations, contact = self._settle(
+                            evaluation, load, tolerance, iterations, progress
+                        )
+                        residual = evaluation.force + load
                     break
         if evaluation.liner_system is evaluation.nearby_system:
             evaluation.liner_system = None  # the state's derivatives are the exact ones
@@ -1634,6 +1661,139 @@ class JournalBearing:
         if contact:
             state = replace(state, contact=True)
         return Equilibrium(state, load_y, load_z, converged, contact, iterations, residual_norm)
+
+    def _settle(
+        self,
+        evaluation: _Evaluation,
+        load: np.ndarray,
+        tolerance: float,
+        iterations: int,
+        progress: Callable[[int, float], None] | None,
+    ) -> tuple[_Evaluation, int, bool]:
+        """Pseudo-transient continuation of a rigid rough bore's equilibrium where Newton stalls:
+        the journal moves with the net force, ``dx/dt = force + load``, by implicit Euler steps
+        ``(I/delta - J) dx = force + load`` whose pseudo-time step ``delta`` grows as the residual
+        falls (switched evolution relaxation), so the iteration becomes Newton's near the
+        equilibrium (Kelley & Keyes, SIAM J. Numer. Anal. 35 (1998) 508-523). Newton's line search
+        asks the residual to fall; the film force of a contact zone one or two cells wide is not
+        monotone in the journal's position (it peaks near the mean plane and dips below it), so
+        Newton stops at a local minimum of the residual on the wrong side of the peak, where the
+        force rises as the journal lifts. The net force there still pushes the journal down, and
+        following it passes the peak, as the journal itself would (docs/theory.md, "Boundary
+        lubrication", "Settling").
+
+        Returns the last evaluation, the iterations counted on, and whether it ended in contact
+        (the film at the boundary limit with the force still pressing it down)."""
+        surface = self.geometry.surface
+        assert surface is not None
+        sigma = surface.sigma
+        floor = self._film_floor()
+        residual = evaluation.force + load
+        norm = float(np.hypot(*residual))
+        magnitude = float(np.hypot(*load))
+        delta = SETTLE_FIRST_MOVE * sigma / norm
+        used = 0
+        while used < self.options.max_iterations:
+            if norm <= tolerance:
+                return evaluation, iterations, False
+            jacobian, d_residual, d_pressure = self._position_response(evaluation)
+            newton = self._newton_trial(evaluation, jacobian, (d_residual, d_pressure), load, norm)
+            if newton is not None:
+                # Near the equilibrium a full Newton step that halves the residual is taken: the
+                # settling's own steps converge only linearly along the soft (attitude) direction.
+                used += 1
+                evaluation = newton
+                residual = evaluation.force + load
+                norm = float(np.hypot(*residual))
+                iterations += 1
+                if progress is not None:
+                    progress(iterations, norm / magnitude)
+                continue
+            try:
+                step = np.linalg.solve(np.eye(2) / delta - jacobian, residual)
+            except np.linalg.LinAlgError:
+                used += 1
+                delta *= 0.25
+                continue
+            length = float(np.hypot(*step))
+            if length > SETTLE_MAX_MOVE * sigma:
+                step *= SETTLE_MAX_MOVE * sigma / length
+            position = evaluation.position
+            hmin_now = self.min_film(position)
+            moved = self._moved(position, step)
+            hmin_next = self.min_film(moved)
+            if hmin_next < floor + FLOOR_MARGIN * sigma:
+                if hmin_now <= floor + FLOOR_MARGIN * sigma:
+                    return evaluation, iterations, True  # at the limit and pressed further down
+                # Stop at the limit: the share of the step that leaves the margin above it.
+                share = (hmin_now - floor - FLOOR_MARGIN * sigma) / max(hmin_now - hmin_next, 1e-300)
+                step = step * max(min(share, 1.0), 0.0)
+                moved = self._moved(position, step)
+            used += 1
+            try:
+                start, guess = self._predicted_cavitation(evaluation, (d_residual, d_pressure), step)
+                trial = self._evaluate(moved, start=start, start_pressure=guess)
+            except (_NegativeFilm, ReynoldsConvergenceError):
+                delta *= 0.25
+                continue
+            new_residual = trial.force + load
+            new_norm = float(np.hypot(*new_residual))
+            if new_norm > SETTLE_GROWTH * norm:
+                delta *= 0.25  # a step too long for the local force: shorter pseudo-time
+                continue
+            # Switched evolution relaxation: the pseudo-time step grows as the residual falls.
+            # At least doubled after a step that lowers it: a journal sliding slowly along a valley
+            # of the residual (its force nearly carrying the load) must not crawl.
+            ratio = norm / new_norm if new_norm > 0.0 else 10.0
+            delta *= min(max(ratio, 2.0), 10.0) if ratio > 1.0 else max(ratio, 0.1)
+            evaluation, residual, norm = trial, new_residual, new_norm
+            iterations += 1
+            if progress is not None:
+                progress(iterations, norm / magnitude)
+        return evaluation, iterations, self._at_floor(self.min_film(evaluation.position))
+
+    def contact_zone_nodes(self, film: np.ndarray) -> int:
+        """Circumferential nodes of the row of the thinnest film whose film is within one composite
+        roughness sigma of that row's minimum: how many nodes resolve a rough contact zone (0 for
+        smooth surfaces). ``film`` in m on :meth:`grid`, shape (nz, nt).
+
+        Near its minimum a journal's film is ``h_min + c eps theta^2 / 2``, so the zone is
+        ``2 sqrt(2 sigma / (c eps))`` wide: 10 degrees on seed 001's rig (3.4 nodes on its 3 degree
+        grid, 14 on a 0.75 degree one)."""
+        surface = self.geometry.surface
+        if surface is None:
+            return 0
+        row = film[int(np.argmin(film.min(axis=1)))]
+        return int(np.count_nonzero(row <= row.min() + surface.sigma))
+
+    def _newton_trial(
+        self,
+        evaluation: _Evaluation,
+        jacobian: np.ndarray,
+        response: tuple[np.ndarray, np.ndarray],
+        load: np.ndarray,
+        norm: float,
+    ) -> _Evaluation | None:
+        """The full Newton step from ``evaluation`` if it stays above the film limit and halves the
+        force residual (:meth:`_settle`), else None."""
+        residual = evaluation.force + load
+        try:
+            step = np.linalg.solve(jacobian, -residual)
+        except np.linalg.LinAlgError:
+            return None
+        surface = self.geometry.surface
+        assert surface is not None
+        if float(np.hypot(*step)) > SETTLE_MAX_MOVE * surface.sigma:
+            return None
+        moved = self._moved(evaluation.position, step)
+        if self.min_film(moved) < self._film_floor():
+            return None
+        try:
+            start, guess = self._predicted_cavitation(evaluation, response, step)
+            trial = self._evaluate(moved, start=start, start_pressure=guess)
+        except (_NegativeFilm, ReynoldsConvergenceError):
+            return None
+        return trial if np.hypot(*(trial.force + load)) < 0.5 * norm else None
 
     # -- helpers -------------------------------------------------------------------------
     def _start_set(self, initial_cavitated: np.ndarray | None) -> np.ndarray | None:
@@ -1878,7 +2038,11 @@ class JournalBearing:
         shearing = fraction if self.options.cavitated_shear == "film_fraction" else np.ones_like(fraction)
         surface = g.surface
         turbulent = self.turbulent
-        local_reynolds = self.reynolds_number * film / g.radial_clearance
+        # Re_h on the nominal film, 0 where a rough film is past the mean plane (h <= 0): the
+        # coefficients of the film equation take Re_h = Re_c max(H, 0) there (turbulence.py), and
+        # a film a fraction of sigma thin is laminar on any gap (on the mean gap h_T <= 0.4 sigma,
+        # Re_h <= 6 on seed 001's rig at 350 rpm, against the Taylor onset 708).
+        local_reynolds = self.reynolds_number * np.maximum(film, 0.0) / g.radial_clearance
         # Turbulent films: the Couette shear times C_f(Re_h); the Poiseuille part as laminar
         # (the linearised theory, docs/theory.md Sect. 17 "Turbulent films").
         couette = couette_shear_factor(local_reynolds) if turbulent else 1.0

@@ -190,7 +190,9 @@ class TurbulentFilm:
 
     def _factor(self, film: np.ndarray, axial: bool) -> tuple[np.ndarray, np.ndarray]:
         """``12 / k`` at films ``H`` and its derivative in ``H``."""
-        kx, kz, dkx, dkz = _coefficients(self.reynolds * film, self.model)
+        # Re_h = Re_c max(H, 0): a rough film past the mean plane (H <= 0) flows laminar (docs/theory.md,
+        # "Turbulent films"); _coefficients clamps likewise, with a zero slope there.
+        kx, kz, dkx, dkz = _coefficients(self.reynolds * np.maximum(film, 0.0), self.model)
         k, dk = (kz, dkz) if axial else (kx, dkx)
         factor = 12.0 / k
         return factor, -factor / k * dk * self.reynolds
