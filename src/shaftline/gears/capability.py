@@ -289,9 +289,10 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
             scuffing = result.sp[k, j] > SCUFFING or (iso is not None and iso.safety[k, j] < 1.0)
             return "fail" if scuffing else ""
 
-        # Greedy chunks of speeds, each as wide as fits (at least one speed per table).
+        # Greedy chunks of speeds in rising order (a case may list its test speed first), each as
+        # wide as fits (at least one speed per table).
         chunks: list[list[int]] = [[]]
-        for j in range(len(study.speeds)):
+        for j in sorted(range(len(study.speeds)), key=lambda i: float(study.speeds[i])):
             trial = [*chunks[-1], j]
             if chunks[-1] and _table_width(lead_columns + [column(i) for i in trial]) > TERMINAL_WIDTH:
                 chunks.append([j])
