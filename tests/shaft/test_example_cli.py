@@ -130,3 +130,38 @@ def test_a_load_spread_without_weight_at_a_bearing_is_one_line(tmp_path):
     assert result.exit_code == 2
     assert result.stderr.startswith("error: alignment.optimise.objective = 'load_spread': allowed aft_slope here")
     assert "Traceback" not in result.stderr and not out.exists()
+
+
+def test_the_failed_rule_checks_fit_80_columns_a_line_a_row():
+    """The summary's failed class-rule checks (the straight engine line unloads main bearing 2 in all three
+    conditions): one row per rule and bearing with its worst value and how many conditions fail, each row on one line
+    of an 80-column terminal; the eight-column table of every check, with each rule's source and confidence, folded
+    every row over three lines ("reactions-positive" as "reaction|s-positi|ve") and is the report's."""
+    from rich.console import Console
+
+    from shaftline.cases import load_case
+    from shaftline.pipeline import run_case
+    from shaftline.report.blocks import Details, Table
+    from shaftline.report.terminal import print_blocks
+    from shaftline.shaft.capability import RULE_HEADERS, SUMMARY_RULE_HEADERS
+
+    result = run_case(load_case(EXAMPLE))
+    capability, value = next(result.capabilities())
+    (table,) = [b for b in capability.summary(value) if isinstance(b, Table) and b.title.startswith("Failed")]
+    assert table.headers == SUMMARY_RULE_HEADERS
+    failed = [c for c in value.checks if not c.passed]
+    for rule_id, bearing, worst, limit, fails in table.rows:
+        mine = [c for c in failed if (c.rule.id, c.bearing) == (rule_id, bearing)]
+        assert fails == f"{len(mine)} of {len(value.conditions)}"
+        values = [c.value for c in mine]
+        assert float(worst.split()[0]) == pytest.approx(min(values) if limit.startswith(">") else max(values), rel=1e-3)
+    assert sum(int(row[-1].split()[0]) for row in table.rows) == len(failed)
+    console = Console(record=True, width=80)
+    print_blocks(console, [table])
+    lines = console.export_text().splitlines()
+    assert max(len(line) for line in lines) <= 80
+    assert sum(line.startswith("┃") for line in lines) == 1, lines
+    assert sum(line.startswith("│") for line in lines) == len(table.rows), lines
+    # the table of every check, with source and confidence, stays in the report (folded away in a Details block)
+    details = [b for b in capability.report(value) if isinstance(b, Details)]
+    assert any(isinstance(t, Table) and t.headers == RULE_HEADERS for d in details for t in d.blocks)

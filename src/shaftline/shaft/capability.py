@@ -26,6 +26,9 @@ RULE_UNITS = {
     "relative_slope": ("mrad", 1e3),
 }
 RULE_HEADERS = ["result", "rule", "condition", "bearing", "value", "limit", "source", "confidence"]
+#: The summary's table of failed checks, one row per rule and bearing: its worst value over the
+#: conditions and how many conditions fail (the report lists each check with source and confidence).
+SUMMARY_RULE_HEADERS = ["rule", "bearing", "worst", "limit", "fails in"]
 
 
 def _check_json(check: RuleCheck) -> dict[str, Any]:
@@ -41,6 +44,33 @@ def _check_json(check: RuleCheck) -> dict[str, Any]:
         "limit": check.rule.limit,
         "passed": check.passed,
     }
+
+
+def failed_rule_rows(checks: list[RuleCheck], conditions: int) -> list[list[str]]:
+    """The summary's rows of the failed checks (:data:`SUMMARY_RULE_HEADERS`): one per rule and bearing,
+    in the order first failed, its value furthest past the limit and the failing conditions out of
+    ``conditions``."""
+    groups: dict[tuple[str, str], list[RuleCheck]] = {}
+    for c in checks:
+        if not c.passed:
+            groups.setdefault((c.rule.id, c.bearing), []).append(c)
+    rows = []
+    for (rule_id, bearing), failed in groups.items():
+        rule = failed[0].rule
+        # a lower limit (">", ">=") is failed worst by the smallest value, an upper one by the largest
+        pick = min if rule.comparison.startswith(">") else max
+        worst = pick(c.value for c in failed)
+        unit, scale = RULE_UNITS[rule.quantity]
+        rows.append(
+            [
+                rule_id,
+                bearing,
+                f"{worst * scale:.4g} {unit}".rstrip(),
+                f"{rule.comparison} {rule.limit * scale:.4g} {unit}".rstrip(),
+                f"{len(failed)} of {conditions}",
+            ]
+        )
+    return rows
 
 
 def rule_check_rows(checks: list[RuleCheck]) -> list[list[str]]:
@@ -661,7 +691,18 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             blocks.append(self._lift_off_text(result))
         failed = [c for c in result.checks if not c.passed]
         if failed:
-            blocks.append(Table(RULE_HEADERS, rule_check_rows(failed), "Failed class-rule checks"))
+            # One row per rule and bearing: the table of every check with each rule's source and
+            # confidence folded every row over three lines at 80 columns; it is the report's.
+            rows = failed_rule_rows(failed, len(result.conditions))
+            blocks.append(
+                Table(
+                    SUMMARY_RULE_HEADERS,
+                    rows,
+                    "Failed class-rule checks: the worst value over the conditions and how many fail (each "
+                    "check, with the rule's source and confidence: the report)",
+                    marks=[["fail"] * len(SUMMARY_RULE_HEADERS) for _ in rows],
+                )
+            )
         return blocks
 
     def report(self, result: AlignmentResult) -> list[Block]:
