@@ -16,6 +16,7 @@ import shaftline.film.bearing as bearing_module
 from shaftline.cases import load_case
 from shaftline.film import JournalBearing
 from shaftline.film.geometry import JournalPosition
+from shaftline.film.study import BearingCase
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -103,3 +104,39 @@ def test_an_unresolved_contact_zone_is_not_settled(monkeypatch: pytest.MonkeyPat
     assert bearing.contact_zone_nodes(eq.state.film) < bearing_module.SETTLE_ZONE_NODES
     assert eq.state.min_film_ratio > -1.0
     assert np.isfinite(eq.residual)
+
+
+def _ntua_rough(index: int) -> tuple[JournalBearing, BearingCase]:
+    """benchmarks/bench_mixed.py's NTUA Stribeck curve: examples/ntua_stern_tube.toml (100 x 60,
+    psi 0.3) with the turned-steel / white-metal roughness, rigid, at the curve's speed ``index``."""
+    from shaftline.film.roughness import SurfaceRoughness
+
+    study = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"]
+    case = study.cases[0]
+    geometry = replace(case.geometry, surface=SurfaceRoughness.preset("turned_steel_white_metal"))
+    operating = replace(case.operating, speed=study.stribeck_speeds[index])
+    return JournalBearing(geometry, operating, case.options), case
+
+
+def test_a_crawling_newton_iteration_stops_with_the_status_it_ends_with_anyway(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The NTUA rigid rough bore at 12.36 rpm (the curve's third speed) from a cold start: below
+    the mean plane with one node in its contact zone, the line search cuts every Newton step to
+    1/16 or 1/8 and the residual falls 1-3 % an iteration, above the 1 % of the stall rule. The
+    crawl rule (CRAWL_ITERATIONS such steps in a row, each leaving over CRAWL_REDUCTION of the
+    residual) stops it after 22 iterations; without it the iteration spends all 60 and ends
+    with the same status: not converged, not in contact."""
+    bearing, case = _ntua_rough(2)
+    assert bearing.operating.speed * 30 / math.pi == pytest.approx(12.364, abs=1e-3)
+
+    def solve(b: JournalBearing) -> bearing_module.Equilibrium:
+        return b.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
+
+    stopped = solve(bearing)
+    assert not stopped.converged and not stopped.contact
+    assert stopped.iterations <= 2 * bearing_module.CRAWL_ITERATIONS + 2
+    monkeypatch.setattr(bearing_module, "CRAWL_ITERATIONS", 10**6)
+    spent = solve(JournalBearing(bearing.geometry, bearing.operating, bearing.options))
+    assert spent.iterations == bearing.options.max_iterations
+    assert not spent.converged and not spent.contact
