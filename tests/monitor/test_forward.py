@@ -199,9 +199,9 @@ def test_probes_see_the_journal_not_the_pressed_liner(rig):
 
 
 def test_a_solver_that_cannot_start_is_one_line(monkeypatch):
-    """A solver that stops without a position (here a liner that does not settle at the first one, which a soft
-    liner under a large bend can do; made to happen so that the test does not hang on today's solver limits) stops
-    the simulation with one line naming the speed and what to change (the command line: exit 3, nothing written)."""
+    """A solver that stops without a position (forced here: a lined equilibrium now starts nearer the bore centre
+    where its liner does not settle, film/bearing.py) stops the simulation with one line naming the speed, why and
+    what to change (the command line: exit 3, nothing written)."""
     from shaftline.film.bearing import JournalBearing, LinerConvergenceError
 
     def stalls(*args, **kwargs):
@@ -212,7 +212,8 @@ def test_a_solver_that_cannot_start_is_one_line(monkeypatch):
         equilibrium_line(seed_rig(), 15 * RPM)
     assert str(raised.value) == (
         "monitor simulate: no journal position at 15 rpm: the bearing solver stopped (the film-liner iteration did "
-        "not settle, residual 0.0312); a smaller misalignment or bend_scale, or a stiffer liner, lets it start"
+        "not settle (liner residual 0.0312 of the clearance)); a smaller misalignment or bend_scale, or a stiffer "
+        "liner, lets it start"
     )
 
 

@@ -167,12 +167,17 @@ FIXED_TOLERANCE = 0.1
 class LinerConvergenceError(SolverFailure):
     """The film-liner Newton iteration did not settle (treated like a film that cuts the bore).
 
-    ``residual`` (the message) is the liner residual left, of the clearance; ``evaluation`` the
-    iteration's last iterate where the solver raised it (None where it was raised elsewhere)."""
+    ``residual`` (also ``args[0]``) is the liner residual left, of the clearance; ``evaluation``
+    the iteration's last iterate where the solver raised it (None where it was raised elsewhere).
+    Its message is a sentence (the command line printed the bare number: "not solved: 0.0079")."""
 
     def __init__(self, residual: float, evaluation: _Evaluation | None = None) -> None:
         super().__init__(residual)
+        self.residual = float(residual)
         self.evaluation = evaluation
+
+    def __str__(self) -> str:
+        return f"the film-liner iteration did not settle (liner residual {self.residual:.3g} of the clearance)"
 
 
 @dataclass(frozen=True, eq=False)

@@ -371,8 +371,10 @@ def equilibrium_line(case: RigCase, speed: float) -> RigEquilibrium:
     Raises
     ------
     SolverFailure
-        The solver could not start (a liner that does not settle at the first position):
-        one line naming the speed and what to change.
+        The solver stopped without a position (a failure it raises rather than reports, e.g.
+        a Reynolds iteration that does not converge): one line naming the speed and what to
+        change. A lined equilibrium whose liner does not settle at its first position starts
+        nearer the bore centre instead (film/bearing.py) and is reported, not raised.
     """
     layout = case.layout
     stations, shape = rig_shape_for(case)
@@ -380,16 +382,9 @@ def equilibrium_line(case: RigCase, speed: float) -> RigEquilibrium:
     try:
         result = rig_bearing(case, speed).equilibrium(load_y=-case.load, tilt_y=case.misalignment)
     except SolverFailure as failure:
-        from shaftline.film.bearing import LinerConvergenceError
-
-        why = (
-            f"the film-liner iteration did not settle, residual {failure}"
-            if isinstance(failure, LinerConvergenceError)
-            else str(failure)
-        )
         raise SolverFailure(
             f"monitor simulate: no journal position at {speed * 30 / math.pi:.0f} rpm: the bearing solver stopped "
-            f"({why}); a smaller misalignment or bend_scale, or a stiffer liner, lets it start"
+            f"({failure}); a smaller misalignment or bend_scale, or a stiffer liner, lets it start"
         ) from failure
     state = result.state
     position = state.position
