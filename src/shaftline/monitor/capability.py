@@ -363,10 +363,13 @@ def _window_blocks(window: WindowResult, layout: ProbeLayout, prefix: str, label
 
     from shaftline.monitor import figures
     from shaftline.monitor.bending import film_map
-    from shaftline.monitor.study import FILM_ANGLES
+    from shaftline.monitor.identification import section_film
 
     blocks: list[Block] = []
-    theta = FILM_ANGLES
+    # The polar film on a 1 deg grid from each sample's centre: the stored films' 15 deg grid missed the
+    # smallest film (the example's journal sits at 188 deg: +2 um drawn where the orbit gives -1.7 um).
+    # Reduced to the mean and the smallest at once, so the report holds two curves, not every sample.
+    polar = np.radians(np.arange(0.0, 360.0, 1.0))
     stations = window.stations
     where = label or _rpm(window.speed)
     # The map of the time-mean centre line on a 0.5 deg grid (every sample on it would not fit in memory).
@@ -389,15 +392,17 @@ def _window_blocks(window: WindowResult, layout: ProbeLayout, prefix: str, label
         blocks.append(
             Figure(f"{prefix}_orbit_{index}.png", figures.orbit, (orbit,), caption="orbit in the clearance circle")
         )
+        samples = section_film(orbit, polar, layout)
         blocks.append(
             Figure(
                 f"{prefix}_film_polar_{index}.png",
                 figures.film_polar,
-                (theta, window.films[index], layout),
-                {"label": orbit.name},
+                (polar, samples.mean(axis=0), layout),
+                {"label": orbit.name, "smallest": samples.min(axis=0)},
                 caption="film round the section",
             )
         )
+        del samples
     return blocks
 
 
