@@ -727,6 +727,17 @@ def _identified_tables(identified: Identified, short_names: bool = False) -> lis
                 "note",
             )
         ]
+    films = [t.min_film for item in identified.recordings for t in item.trends if len(t.min_film)]
+    if any(np.nanmin(np.asarray(f)) < 0.0 for f in films):
+        # `monitor simulate` says this of its rig; a user's own recordings with negative films need it as much
+        note.append(
+            Paragraph(
+                "A negative film (and lambda) is the journal nearer the probes than the undeformed bore: the probes "
+                "sit in the housing, so where the journal has pressed the liner in (or the liner has worn) the gap "
+                "they give is negative (docs/theory.md Sect. 18).",
+                "note",
+            )
+        )
     return [
         Table(
             ["recording", "start (UTC)", "windows", "stored", "rejected"],
