@@ -727,8 +727,8 @@ def _identified_tables(identified: Identified, short_names: bool = False) -> lis
                 "note",
             )
         ]
-    films = [t.min_film for item in identified.recordings for t in item.trends if len(t.min_film)]
-    if any(np.nanmin(np.asarray(f)) < 0.0 for f in films):
+    section_films = [t.min_film for item in identified.recordings for t in item.trends if len(t.min_film)]
+    if any(np.nanmin(np.asarray(f)) < 0.0 for f in section_films):
         # `monitor simulate` says this of its rig; a user's own recordings with negative films need it as much
         note.append(
             Paragraph(
