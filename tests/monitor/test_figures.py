@@ -124,3 +124,24 @@ def test_trend_time_axis_reads_as_clock_times(step, pattern, offset):
     labels = [label.get_text() for label in ax.get_xticklabels() if label.get_text()]
     assert len(labels) >= 3 and all(re.fullmatch(pattern, label) for label in labels), labels
     assert ax.xaxis.get_major_formatter().get_offset() == offset
+
+
+def test_the_trend_shows_negative_films():
+    """The example's loaded section (D1) and the bearing's smallest film are negative at every speed (the journal
+    pressed into the liner): the trend's axis stopped at 0 and hid both, leaving D3 and the top of D2. Every point
+    drawn now lies inside the axis, with the h = 0 line."""
+    import datetime as dt
+
+    from shaftline.monitor.trends import SectionTrend
+
+    start = dt.datetime(2026, 11, 2, 6, 0, tzinfo=dt.UTC)
+    times = [start + dt.timedelta(seconds=8.0 * k) for k in range(4)]
+    films = {"D1": np.array([-9.7, -7.9, -3.1, -1.7]) * 1e-6, "bearing": np.array([-24.3, -22.0, -17.0, -16.0]) * 1e-6}
+    trends = [
+        SectionTrend(name, times, film, film / 2.24e-6, np.ones(4), (), 2.24e-6, None) for name, film in films.items()
+    ]
+    ax = Figure().subplots()
+    figures.trend(trends, (2.24e-6, 6.71e-6), ax=ax)
+    low, high = ax.get_ylim()
+    assert low < -24.3 and high > 6.71
+    assert any(np.all(np.asarray(line.get_ydata()) == 0.0) for line in ax.lines)

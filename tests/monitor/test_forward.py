@@ -267,8 +267,9 @@ def test_journal_moves_up_and_to_the_left_with_speed(rig):
         up = [float(o.ey.mean()) for o in orbits]
         right = [float(case.layout.rotation * o.ez.mean()) for o in orbits]
         eccentricity = [float(o.eccentricity.mean()) for o in orbits]
-        assert up[0] < up[1] < up[2] and right[0] > right[1] > right[2]
-        assert eccentricity[0] > eccentricity[1] > eccentricity[2]
+        # every speed (the first three only were compared, from when the fixture had three speeds)
+        assert np.all(np.diff(up) > 0) and np.all(np.diff(right) < 0)
+        assert np.all(np.diff(eccentricity) < 0)
 
 
 def test_chunks_with_a_fixed_reference_give_the_whole_windows_orbits(rig):
@@ -296,3 +297,26 @@ def test_chunks_with_a_fixed_reference_give_the_whole_windows_orbits(rig):
         for piece, full in zip(part.orbits, whole.orbits, strict=True):
             assert piece.ey == pytest.approx(full.ey[begin : begin + piece.ey.size], abs=1e-15)
             assert piece.ez == pytest.approx(full.ez[begin : begin + piece.ez.size], abs=1e-15)
+
+
+def test_the_reports_polar_film_reaches_the_orbits_smallest_film(rig):
+    """The report's film round a section was drawn on the stored films' 15 deg grid, which the example's journal
+    (smallest film near 188 deg) falls between: at D1 and 215 rpm it drew +2 um where the orbit gives -1.7 um and
+    so said nothing of the pressed-in liner. Drawn on a 1 deg grid, its curves reach the orbit's films to the
+    chord of half a degree, c (1 - cos 0.5 deg) = 0.021 um."""
+    from shaftline.monitor.capability import _window_blocks
+    from shaftline.monitor.study import identify_window
+    from shaftline.report.blocks import Figure as Block
+
+    case, profile, runs = rig
+    layout = case.layout
+    recording = runs[215.0][0]
+    window = identify_window(layout, recording.signals, recording.keyphasor, case.sample_rate, profile)
+    polars = [b for b in _window_blocks(window, layout, "t") if isinstance(b, Block) and "polar" in b.file]
+    chord = layout.radial_clearance * (1.0 - math.cos(math.radians(0.5))) + 1e-12
+    for orbit, block in zip(window.orbits, polars, strict=True):
+        mean, smallest = block.args[1], block.kwargs["smallest"]
+        assert mean.min() == pytest.approx(orbit.min_film.mean(), abs=chord)
+        assert smallest.min() == pytest.approx(orbit.min_film.min(), abs=chord)
+    # the stored 15 deg grid's miss at the loaded section is far beyond that
+    assert window.films[0].mean(axis=0).min() - window.orbits[0].min_film.mean() > 1e-6

@@ -119,9 +119,12 @@ def test_simulate_then_identify_the_example(tmp_path):
     files = sorted((tmp_path / "sim" / "data").glob("recording_*rpm.csv"))  # zero-padded: in speed order
     assert [f.name for f in files] == [f"recording_{rpm:03d}rpm.csv" for rpm in speeds]
     result = invoke("monitor", "identify", str(EXAMPLE), *map(str, files), "--db", str(tmp_path / "m.sqlite"),
-                    "--slow-roll", str(tmp_path / "sim" / "data" / "slow_roll_15rpm.csv"), "--json", "-")  # fmt: skip
+                    "--slow-roll", str(tmp_path / "sim" / "data" / "slow_roll_15rpm.csv"),
+                    "--json", str(tmp_path / "r.json"))  # fmt: skip
     assert result.exit_code == 0, result.stderr
-    recordings = json.loads(result.stdout)["monitor"]["identify"]["recordings"]
+    # D1 and the loaded end are negative (the journal pressed into the liner): the terminal says what that means
+    assert "A negative film (and lambda) is the journal nearer the probes" in " ".join(result.stdout.split())
+    recordings = json.loads((tmp_path / "r.json").read_text())["monitor"]["identify"]["recordings"]
     assert [r["windows"] for r in recordings] == [2] * len(speeds)
     # back to back from the case's start
     starts = [(START + dt.timedelta(seconds=16 * k)).strftime("%Y-%m-%dT%H:%M:%S") for k in range(len(speeds))]

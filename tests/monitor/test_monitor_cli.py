@@ -142,11 +142,13 @@ def test_the_simulated_surfaces_are_the_monitor_tables(tmp_path):
          "monitor.simulate.liner.thickness = 0.06 m"),
         ('preset = "steel_polymer"', 'preset = "steel_polymer"\nbore_roughness = "400 um"',
          "monitor.simulate.surface.bore_roughness = 0.0004 m"),
+        ('duration = "16 s"', 'duration = "6 s"',  # 1.5 turns at the slow roll: stopped on 'monitor.marks = 1'
+         "monitor.simulate.duration = 6 s: allowed >= 8 s: two revolutions at the slowest speed (15 rpm)"),
     ],
 )  # fmt: skip
 def test_bad_simulated_surfaces_and_liners_are_one_line(tmp_path, old, new, message):
-    """A liner thicker than a quarter of the bore radius, a roughness beyond half the clearance: one line naming
-    the field, exit 2, before any solver runs."""
+    """A liner thicker than a quarter of the bore radius, a roughness beyond half the clearance, recordings shorter
+    than two turns at the slowest speed: one line naming the field, exit 2, before any solver runs."""
     for name in ("monitor_rig.toml", "monitor_rig_shaft.toml"):
         text = (ROOT / "examples" / name).read_text()
         (tmp_path / name).write_text(text.replace(old, new) if name == "monitor_rig.toml" else text)

@@ -18,8 +18,11 @@ from shaftline.registry import BuildContext, Capability, Command, Finding, Progr
 from shaftline.report.blocks import Block, DataFile, Figure, Heading, Paragraph, Table
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from shaftline.monitor.case import MonitorSection
     from shaftline.monitor.forward import Recording, RigCase
+    from shaftline.monitor.identification import SectionOrbit
     from shaftline.monitor.probes import ProbeLayout
     from shaftline.monitor.processing import Identified, RejectedWindow, SlowRoll
     from shaftline.monitor.study import MonitorResult, MonitorStudy, WindowResult
@@ -353,6 +356,27 @@ def _solver_table(result: MonitorResult) -> Table:
     )
 
 
+def _polar_mean_and_smallest(
+    orbit: SectionOrbit, theta: np.ndarray, layout: ProbeLayout, block: int = 4096
+) -> tuple[np.ndarray, np.ndarray]:
+    """Time-mean and smallest film round a section at ``theta`` from the orbit's samples, m, in
+    blocks of samples: a window of 2 s at 10 kHz on a 1 deg grid is 58 MB a film array, and the
+    exact form makes several (the 1 GiB of a long recording's run)."""
+    import numpy as np
+
+    from shaftline.monitor.identification import film_between_circles
+
+    total = np.zeros(theta.size)
+    smallest = np.full(theta.size, np.inf)
+    for start in range(0, orbit.ey.size, block):
+        part = film_between_circles(
+            orbit.ey[start : start + block], orbit.ez[start : start + block], theta, layout, orbit.correction
+        )
+        total += part.sum(axis=0)
+        smallest = np.minimum(smallest, part.min(axis=0))
+    return total / max(orbit.ey.size, 1), smallest
+
+
 def _window_blocks(window: WindowResult, layout: ProbeLayout, prefix: str, label: str = "") -> list[Block]:
     """The unwrapped film map of a window's mean centre line, and the orbit and the film round
     each section, as figures named ``prefix``_film_map.png, ``prefix``_orbit_<i>.png and
@@ -363,10 +387,12 @@ def _window_blocks(window: WindowResult, layout: ProbeLayout, prefix: str, label
 
     from shaftline.monitor import figures
     from shaftline.monitor.bending import film_map
-    from shaftline.monitor.study import FILM_ANGLES
 
     blocks: list[Block] = []
-    theta = FILM_ANGLES
+    # The polar film on a 1 deg grid from each sample's centre: the stored films' 15 deg grid missed the
+    # smallest film (the example's journal sits at 188 deg: +2 um drawn where the orbit gives -1.7 um).
+    # Reduced to the mean and the smallest at once, so the report holds two curves, not every sample.
+    polar = np.radians(np.arange(0.0, 360.0, 1.0))
     stations = window.stations
     where = label or _rpm(window.speed)
     # The map of the time-mean centre line on a 0.5 deg grid (every sample on it would not fit in memory).
@@ -389,12 +415,13 @@ def _window_blocks(window: WindowResult, layout: ProbeLayout, prefix: str, label
         blocks.append(
             Figure(f"{prefix}_orbit_{index}.png", figures.orbit, (orbit,), caption="orbit in the clearance circle")
         )
+        mean, smallest = _polar_mean_and_smallest(orbit, polar, layout)
         blocks.append(
             Figure(
                 f"{prefix}_film_polar_{index}.png",
                 figures.film_polar,
-                (theta, window.films[index], layout),
-                {"label": orbit.name},
+                (polar, mean, layout),
+                {"label": orbit.name, "smallest": smallest},
                 caption="film round the section",
             )
         )
@@ -722,6 +749,17 @@ def _identified_tables(identified: Identified, short_names: bool = False) -> lis
                 "note",
             )
         ]
+    section_films = [t.min_film for item in identified.recordings for t in item.trends if len(t.min_film)]
+    if any(np.nanmin(np.asarray(f)) < 0.0 for f in section_films):
+        # `monitor simulate` says this of its rig; a user's own recordings with negative films need it as much
+        note.append(
+            Paragraph(
+                "A negative film (and lambda) is the journal nearer the probes than the undeformed bore: the probes "
+                "sit in the housing, so where the journal has pressed the liner in (or the liner has worn) the gap "
+                "they give is negative (docs/theory.md Sect. 18).",
+                "note",
+            )
+        )
     return [
         Table(
             ["recording", "start (UTC)", "windows", "stored", "rejected"],

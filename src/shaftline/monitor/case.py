@@ -35,7 +35,7 @@ from shaftline.cases.types import (
     Temperature,
     field_error,
 )
-from shaftline.errors import located
+from shaftline.errors import InputError, located
 from shaftline.film.case import LinerSection, SurfaceSection
 from shaftline.registry import BuildContext
 
@@ -424,6 +424,18 @@ def build_study(section: MonitorSection, context: BuildContext) -> MonitorStudy:
             # the bearing is made at solve time: its checks (liner against the radius...) now,
             # before anything is written
             rig_geometry(rig)
+            if sim.duration is not None:
+                # every recording (the slow roll's too) needs two keyphasor marks, one whole revolution
+                # between them; without this check the simulation stopped on an internal field name
+                slowest = min((*sim.speeds, sim.slow_roll_speed))
+                needed = 2 * (2 * math.pi / slowest)
+                if sim.duration < needed * (1.0 - 1e-9):
+                    raise InputError(
+                        "duration",
+                        sim.duration,
+                        "s",
+                        f">= {needed:.4g} s: two revolutions at the slowest speed ({slowest * 30 / math.pi:.4g} rpm)",
+                    )
     speeds = tuple(section.simulate.speeds) if section.simulate is not None else ()
     slow_roll = section.simulate.slow_roll_speed if section.simulate is not None else 0.0
     write = section.simulate.write_recordings if section.simulate is not None else False

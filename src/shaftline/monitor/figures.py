@@ -75,12 +75,22 @@ def _polar_radius(film_um: np.ndarray) -> np.ndarray:
 
 
 @figure_function(size=(6, 6))
-def film_polar(theta: np.ndarray, film: np.ndarray, layout: ProbeLayout, *, label: str = "", ax: Any) -> Any:
+def film_polar(
+    theta: np.ndarray,
+    film: np.ndarray,
+    layout: ProbeLayout,
+    *,
+    label: str = "",
+    smallest: np.ndarray | None = None,
+    ax: Any,
+) -> Any:
     """Film round a section as a polar curve (0 deg at the top, clockwise; radius
     log10(1 + h / 1 µm) with rings at 1, 10, 100, 1000 µm), with the circles of the regime
-    thresholds. ``film`` is (m,) or (N, m): drawn as its mean and, for samples, its smallest."""
+    thresholds. ``film`` is (m,) or (N, m): drawn as its mean and, for samples, its smallest;
+    ``smallest`` (m,): the smallest film over the samples where ``film`` is already their mean."""
     theta = np.asarray(theta, dtype=float)
     film = np.atleast_2d(np.asarray(film, dtype=float)) * MICRO
+    low = None if smallest is None else np.asarray(smallest, dtype=float) * MICRO
     closed = np.append(theta, theta[0] + 2 * np.pi)
 
     def curve(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -89,8 +99,10 @@ def film_polar(theta: np.ndarray, film: np.ndarray, layout: ProbeLayout, *, labe
 
     angle = np.linspace(0, 2 * np.pi, 361)
     ax.plot(*curve(film.mean(axis=0)), "C0", label=plain(label) or "mean film")
-    if film.shape[0] > 1:
-        ax.plot(*curve(film.min(axis=0)), "C0", lw=0.5, ls=":", label="smallest")
+    if low is None and film.shape[0] > 1:
+        low = film.min(axis=0)
+    if low is not None:
+        ax.plot(*curve(low), "C0", lw=0.5, ls=":", label="smallest")
     for level, name, colour in zip(thresholds(layout), ("λ = 1", "λ = 3"), REGIME_COLOURS, strict=False):
         radius = _polar_radius(np.array(level * MICRO))
         ax.plot(radius * np.sin(angle), radius * np.cos(angle), color=colour, lw=0.8, label=name)
@@ -102,7 +114,7 @@ def film_polar(theta: np.ndarray, film: np.ndarray, layout: ProbeLayout, *, labe
     ax.set_xticks([])
     ax.set_yticks([])
     label_text = "film round the section (0 deg at the top, clockwise; radius log10(1 + h / 1 µm))"
-    if np.any(film <= 0.0):
+    if np.any(film <= 0.0) or (low is not None and np.any(low <= 0.0)):
         # probes in the housing read a negative film where the journal has pressed the liner in
         label_text += "\nfilms ≤ 0 at the centre: the journal stands in the liner (negative film)"
     ax.set_xlabel(label_text)
@@ -197,6 +209,7 @@ def trend(
     (the projected crossing date marked; not with ``fit`` False), and the regime thresholds where
     known."""
     top = 0.0
+    bottom = 0.0
     marked = False
     for k, item in enumerate(trends):
         film = np.asarray(item.min_film) * MICRO
@@ -211,6 +224,7 @@ def trend(
             label=plain("smallest along the bearing" if item.section == "bearing" else item.section),
         )
         top = max(top, float(np.nanmax(film)) if np.isfinite(film).any() else 0.0)
+        bottom = min(bottom, float(np.nanmin(film)) if np.isfinite(film).any() else 0.0)
         for alarm in item.alarms:
             ax.axvspan(alarm.start, alarm.end, color="C3", alpha=0.2, label=None if marked else "lambda alarm")
             marked = True
@@ -234,7 +248,11 @@ def trend(
         ax.axhline(low, color=REGIME_COLOURS[0], lw=0.6, ls="-.", label=f"boundary below {low:.2f} µm")
         ax.axhline(high, color=REGIME_COLOURS[2], lw=0.6, ls="-.", label=f"hydrodynamic above {high:.2f} µm")
         top = max(top, high)
-    ax.set_ylim(bottom=0.0, top=max(1.1 * top, 1.0))
+    if bottom < 0.0:
+        # probes in the housing read a negative film where the journal has pressed the liner in: the axis
+        # goes below zero (it stopped at 0, which hid a loaded end in boundary lubrication)
+        ax.axhline(0.0, color="k", lw=0.5)
+    ax.set_ylim(bottom=1.1 * bottom, top=max(1.1 * top, 1.0))
     ax.set_ylabel("h_min [µm]")
     ax.set_xlabel("time (UTC)" + ("; shaded: lambda alarms" if marked else ""))
     ax.xaxis.set_major_formatter(_time_axis(ax.xaxis.get_major_locator()))
