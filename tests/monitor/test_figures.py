@@ -145,3 +145,26 @@ def test_the_trend_shows_negative_films():
     low, high = ax.get_ylim()
     assert low < -24.3 and high > 6.71
     assert any(np.all(np.asarray(line.get_ydata()) == 0.0) for line in ax.lines)
+
+
+def test_a_journal_in_the_liner_is_said_on_the_orbit_and_the_film_along():
+    """e/c > 1 and h_min < 0 (the probes see the journal past the undeformed bore where the liner is pressed in)
+    read as impossible unless said: the orbit's title says it and h_min along the bearing draws h = 0; an orbit
+    inside the clearance and positive films get neither. The centre line names its section."""
+    layout = seed001_layout()
+    phi = np.linspace(0, 2 * math.pi, 100)
+    inside = _orbit()
+    beyond = SectionOrbit("D1", 0.292, -5.7e-4 + 1e-6 * np.cos(phi), 1e-6 * np.sin(phi), 1e-5, 0.55e-3, 1)
+    for orbit, said in ((inside, False), (beyond, True)):
+        axes = Figure().subplots(1, 2)
+        figures.orbit(orbit, ax=axes)
+        assert ("journal stands in the liner" in axes[0].get_title()) is said
+    z = np.linspace(0, 1.2, 25)
+    for films, drawn in (({"35 rpm": 1e-6 + 8e-6 * z}, False), ({"35 rpm": -9e-6 + 20e-6 * z}, True)):
+        ax = Figure().subplots()
+        figures.min_film_along(z, films, layout, ax=ax)
+        assert any(line.get_label() == "h = 0" for line in ax.get_lines()) is drawn
+    points = shaft_centre_line(np.array([1.0, 2.0]), [np.full(3, -5e-4), np.full(3, -4e-4)], [np.zeros(3)] * 2)
+    axes = Figure().subplots(1, 2)
+    figures.centre_line_vs_speed(points, 0.55e-3, 1, "D2", ax=axes)
+    assert axes[1].get_title().endswith("section D2") and axes[1].get_ylabel() == "vertical [µm]"

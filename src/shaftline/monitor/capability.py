@@ -291,7 +291,7 @@ class FilmMonitor(Capability["MonitorSection", "MonitorStudy", "MonitorResult"])
             Figure(
                 "monitor_centre_line.png",
                 figures.centre_line_vs_speed,
-                (points, layout.radial_clearance, layout.rotation),
+                (points, layout.radial_clearance, layout.rotation, window.orbits[middle].name),
                 caption=f"averaged shaft centre line of section {window.orbits[middle].name} against speed",
             )
         )

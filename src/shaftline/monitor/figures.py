@@ -54,7 +54,11 @@ def orbit(section: SectionOrbit, *, ax: Any) -> Any:
     full.set_xlabel("horizontal [µm] (towards rising bearing angle)")
     full.set_ylabel("vertical [µm]")
     full.legend(fontsize=8, loc="upper right")
-    full.set_title(f"{plain(section.name)}: e/c = {section.eccentricity_ratio.mean():.3f}")
+    ratio = float(section.eccentricity_ratio.mean())
+    # e/c > 1 reads as impossible unless said: the probes see the journal, which a pressed-in (or
+    # worn) liner lets pass the undeformed bore (docs/theory.md Sect. 18)
+    beyond = "\n(> 1: the journal stands in the liner)" if ratio > 1.0 else ""
+    full.set_title(f"{plain(section.name)}: e/c = {ratio:.3f}{beyond}")
     zoom.plot(x, y, "C0", lw=0.8)
     zoom.plot(*mean, "C3+")
     zoom.set_aspect("equal", adjustable="datalim")
@@ -169,6 +173,9 @@ def min_film_along(z: np.ndarray, min_films: dict[str, np.ndarray], layout: Prob
         ax.plot(z_mm, curve, f"C{k % 10}", label=plain(label))
     for position in layout.positions:
         ax.axvline(position * 1e3, color="k", lw=0.5, ls="--")
+    if bottom < 0.0:
+        # below it the journal stands in the liner (the probes' film, docs/theory.md Sect. 18)
+        ax.axhline(0.0, color="r", lw=0.8, label="h = 0")
     ax.set_xlim(z_mm[0], z_mm[-1])
     ax.set_ylim(bottom, top)
     ax.set_xlabel("from the loaded end [mm] (dashed: probe sections)")
@@ -178,9 +185,11 @@ def min_film_along(z: np.ndarray, min_films: dict[str, np.ndarray], layout: Prob
 
 
 @figure_function(layout=(1, 2), size=(10, 4.8))
-def centre_line_vs_speed(points: CentreLinePoints, clearance: float, rotation: int = 1, *, ax: Any) -> Any:
+def centre_line_vs_speed(
+    points: CentreLinePoints, clearance: float, rotation: int = 1, section: str = "", *, ax: Any
+) -> Any:
     """Averaged shaft centre line: the mean journal centre at each speed in the clearance circle
-    (left) and enlarged (right), µm."""
+    (left) and enlarged (right), µm; ``section`` names the measurement section in the titles."""
     full, zoom = ax
     x, y = _page(points.ey, points.ez, rotation)
     angle = np.linspace(0, 2 * np.pi, 361)
@@ -196,7 +205,10 @@ def centre_line_vs_speed(points: CentreLinePoints, clearance: float, rotation: i
     full.legend(fontsize=8)
     zoom.set_aspect("equal", adjustable="datalim")
     zoom.xaxis.set_major_locator(_few_ticks())  # an equal-aspect zoom widens the x range: labels overlap
-    zoom.set_title("averaged shaft centre line")
+    zoom.set_ylabel("vertical [µm]")
+    where = f", section {plain(section)}" if section else ""
+    full.set_title(f"clearance circle{where}")
+    zoom.set_title(f"averaged shaft centre line{where}")
     return ax
 
 
