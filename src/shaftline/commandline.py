@@ -95,11 +95,15 @@ def interruptible() -> Iterator[None]:
     :class:`~shaftline.errors.Interrupted`: where a search keeps what it evaluated), a solver
     that fails on accepted inputs with 3 and one line; outputs are written all at once at the
     end (:mod:`shaftline.outputs`), so nothing half-written is left."""
-    from shaftline.errors import SolverFailure
+    from shaftline.errors import SolverFailure, interrupted_by_user
 
     try:
         yield
-    except KeyboardInterrupt as stop:
+    except (KeyboardInterrupt, SystemError) as stop:
+        # Ctrl-C inside a compiled (numba) call arrives as a SystemError caused by it; any other
+        # SystemError is a defect and keeps its traceback
+        if not interrupted_by_user(stop):
+            raise
         # an Interrupted run kept something elsewhere (a search's store): its note says where
         text = f"interrupted: no results were written; {stop.note}" if isinstance(stop, Interrupted) else ""
         error_console.print(text or "interrupted: nothing was written", markup=False, highlight=False, soft_wrap=True)

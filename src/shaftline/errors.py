@@ -102,6 +102,19 @@ class Interrupted(KeyboardInterrupt):
         self.note = note
 
 
+def interrupted_by_user(error: BaseException | None) -> bool:
+    """True when ``error`` is Ctrl-C's ``KeyboardInterrupt`` or was caused by one: inside a compiled
+    (numba) call it surfaces as a ``SystemError`` ("returned a result with an exception set") whose
+    cause chain holds the ``KeyboardInterrupt``."""
+    seen: set[int] = set()
+    while error is not None and id(error) not in seen:
+        if isinstance(error, KeyboardInterrupt):
+            return True
+        seen.add(id(error))
+        error = error.__cause__ or error.__context__
+    return False
+
+
 class SolverFailure(RuntimeError):
     """A numerical method did not reach a solution for inputs it accepted (the command line
     reports it in one line with exit status 3: nothing to show, nothing written)."""

@@ -751,7 +751,7 @@ def identify_recordings(
     """
     from datetime import timedelta
 
-    from shaftline.errors import Interrupted
+    from shaftline.errors import Interrupted, interrupted_by_user
     from shaftline.monitor.trends import _hide_password, section_trends
 
     if not plan.recordings:
@@ -913,7 +913,10 @@ def identify_recordings(
                     recording=processed.recording,
                 )
                 done.append(IdentifiedRecording(checked, processed, trends, runout, replaced[number - 1]))
-        except KeyboardInterrupt:
+        except (KeyboardInterrupt, SystemError) as stop:
+            # Ctrl-C inside the compiled orbit kernel arrives as a SystemError caused by it
+            if not interrupted_by_user(stop):
+                raise
             raise Interrupted(
                 f"every window identified so far is kept in {shown}: run the same command again to resume"
             ) from None
