@@ -15,7 +15,7 @@ from shaftline.design.problem import SlopeDesignProblem, film_state
 from shaftline.design.robustness import RobustnessResult, Scenario, robustness
 from shaftline.design.search import SearchProgress, SearchResult, search
 from shaftline.design.sweep import DEFAULT_RATIOS, SweepResult, misalignment_sweep
-from shaftline.errors import Interrupted, located
+from shaftline.errors import Interrupted, interrupted_by_user, located
 from shaftline.film.bearing import BearingState
 from shaftline.film.geometry import BentJournal, BoreSegment
 from shaftline.lubricants import Lubricant
@@ -203,8 +203,9 @@ def solve_design(
     searches = task in ("all", "slopes", "sweep") or (task == "robustness" and study.robust_designs != "named")
     try:
         return _solve(study, progress, task, workers, scheduler)
-    except KeyboardInterrupt as stop:
-        if isinstance(stop, Interrupted) or not searches:
+    except (KeyboardInterrupt, SystemError) as stop:
+        # Ctrl-C inside a compiled (numba) call arrives as a SystemError caused by it
+        if isinstance(stop, Interrupted) or not searches or not interrupted_by_user(stop):
             raise
         if study.store is not None:
             note = (
