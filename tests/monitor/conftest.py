@@ -51,3 +51,15 @@ def postgres_url():
     finally:
         subprocess.run([*prefix, pg_ctl, "-D", str(data), "-m", "immediate", "stop"], capture_output=True, timeout=120)
         shutil.rmtree(folder, ignore_errors=True)
+
+
+@pytest.fixture(scope="session")
+def simulated_example(tmp_path_factory):
+    """``shaftline monitor simulate examples/monitor_rig.toml --out DIR --json -`` run once for the tests that
+    read its output (about 15 s: six lined equilibria and the slow roll): the command's result and DIR."""
+    from tests.conftest import invoke
+
+    example = Path(__file__).resolve().parents[2] / "examples" / "monitor_rig.toml"
+    out = tmp_path_factory.mktemp("monitor_example") / "out"
+    result = invoke("monitor", "simulate", str(example), "--out", str(out), "--json", "-")
+    return result, out

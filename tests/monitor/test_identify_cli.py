@@ -109,17 +109,17 @@ def test_identify_stores_the_windows_once_and_reports_them(truth, tmp_path):
 
 
 @pytest.mark.slow
-def test_simulate_then_identify_the_example(tmp_path):
+def test_simulate_then_identify_the_example(simulated_example, tmp_path):
     """The README's commands in a row on examples/monitor_rig.toml: the simulated recordings (16 s each) are
     read back in two windows of 8 s, the runout from the slow roll subtracted, and their mean h_min rises with
     speed at each section (seed 001 Fig. 10)."""
-    simulated = invoke("monitor", "simulate", str(EXAMPLE), "--out", str(tmp_path / "sim"))
+    simulated, sim = simulated_example  # the example's run, shared with test_monitor_cli's
     assert simulated.exit_code == 0, simulated.stderr
     speeds = [35, 65, 95, 135, 175, 215]
-    files = sorted((tmp_path / "sim" / "data").glob("recording_*rpm.csv"))  # zero-padded: in speed order
+    files = sorted((sim / "data").glob("recording_*rpm.csv"))  # zero-padded: in speed order
     assert [f.name for f in files] == [f"recording_{rpm:03d}rpm.csv" for rpm in speeds]
     result = invoke("monitor", "identify", str(EXAMPLE), *map(str, files), "--db", str(tmp_path / "m.sqlite"),
-                    "--slow-roll", str(tmp_path / "sim" / "data" / "slow_roll_15rpm.csv"),
+                    "--slow-roll", str(sim / "data" / "slow_roll_15rpm.csv"),
                     "--json", str(tmp_path / "r.json"))  # fmt: skip
     assert result.exit_code == 0, result.stderr
     # D1 and the loaded end are negative (the journal pressed into the liner): the terminal says what that means

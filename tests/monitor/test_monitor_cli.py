@@ -16,12 +16,11 @@ EXAMPLE = ROOT / "examples" / "monitor_rig.toml"
 
 
 @pytest.mark.slow
-def test_simulate_example_writes_recordings_figures_and_json(tmp_path):
+def test_simulate_example_writes_recordings_figures_and_json(simulated_example):
     """The example end to end (about 10 s): identified regime lengths equal the truth to the bound of
     tests/monitor/test_forward.py (about a mm), film errors below 0.01 µm, recordings and figures written; the
     bearing solver placed every journal (liner and asperities), the loaded end in boundary lubrication."""
-    out = tmp_path / "out"
-    result = invoke("monitor", "simulate", str(EXAMPLE), "--out", str(out), "--json", "-")
+    result, out = simulated_example  # the example's run, shared with test_identify_cli's
     assert result.exit_code == 0, result.stderr
     monitor = json.loads(result.stdout)["monitor"]
     assert [round(p["speed"] * 30 / 3.141592653589793) for p in monitor["points"]] == [35, 65, 95, 135, 175, 215]
