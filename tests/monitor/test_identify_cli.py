@@ -203,8 +203,12 @@ def hdf5_with_two_rates(path: Path, truth) -> Path:
                                                          np.nan, t[1].signals)),
          'error: r.csv window 0 = "10.01% of the probe samples NaN'),
         (hdf5_with_two_rates, "error: r.h5 sample rates"),
+        (lambda p, t: _rename(write_csv(p / "r.csv", t), "keyphasor", "kp"),
+         "error: r.csv: monitor.identify.keyphasor = 'keyphasor': allowed the once-per-revolution channel of r.csv "
+         "(channels there besides the probes: kp)"),
     ],
-    ids=["missing channel", "extra channel", "units off by 1000", "too many NaN", "two sample rates"],
+    ids=["missing channel", "extra channel", "units off by 1000", "too many NaN", "two sample rates",
+         "keyphasor named otherwise"],
 )  # fmt: skip
 def test_bad_recordings_are_one_line_and_store_nothing(truth, tmp_path, make, message):
     path = make(tmp_path, truth) if make is not hdf5_with_two_rates else make(tmp_path / "r.h5", truth)
@@ -216,6 +220,11 @@ def test_bad_recordings_are_one_line_and_store_nothing(truth, tmp_path, make, me
     assert result.exit_code == 2, result.stdout
     assert result.stderr.startswith(message) and result.stderr.count("\n") == 1, result.stderr
     assert rows(database) == 0 and not (tmp_path / "out").exists()
+
+
+def _rename(path: Path, column: str, name: str) -> Path:
+    pd.read_csv(path).rename(columns={column: name}).to_csv(path, index=False)
+    return path
 
 
 def _drop(path: Path, column: str) -> Path:

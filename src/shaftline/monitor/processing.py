@@ -527,6 +527,17 @@ def plan_recording(
             "speed", "none" if speed is None else speed, "rad/s", "the shaft speed of recordings without a keyphasor"
         )
     recording = open_recording(path)
+    if keyphasor and keyphasor not in recording.channels:
+        # the case's name for it, not the file's channel list, is what is wrong most often
+        others = [c for c in recording.channels if c not in layout.channels]
+        raise InputError(
+            "monitor.identify.keyphasor",
+            keyphasor,
+            "",
+            f"the once-per-revolution channel of {recording.path.name} (channels there besides the probes: "
+            + (", ".join(others[:8]) or 'none; keyphasor = "" and speed for recordings without one')
+            + ")",
+        )
     columns = [*layout.channels, keyphasor] if keyphasor else list(layout.channels)
     rate = recording.sample_rate(columns, given=sample_rate)
     if ignore_channels is not None:
