@@ -169,6 +169,7 @@ def test_a_speed_the_solver_did_not_converge_at_is_not_acceptable(tmp_path):
     result = capability.solve(study, task="simulate")
     assert capability.findings(result) == []
     (point,) = result.points
-    stalled = replace(result, points=(replace(point, recording=replace(point.recording, converged=False)),))
+    short = replace(point.recording, solver_status="not converged")
+    stalled = replace(result, points=(replace(point, recording=short),))
     (finding,) = capability.findings(stalled)
     assert not finding.criterion and finding.text.startswith("At 175 rpm the bearing solver did not converge")

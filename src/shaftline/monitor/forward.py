@@ -219,15 +219,13 @@ class Recording:
         True rigid-body motion about it, m.
     clearance : float
         True radial clearance (layout's plus sleeve wear), m.
-    contact : bool
-        The bearing solver found no film that carries the load above its floor (the
-        journal stands where the search stopped).
+    solver_status : str
+        How the bearing solver placed the journal (:attr:`RigEquilibrium.status`): ``"ok"``,
+        ``"contact"`` or ``"not converged"`` (in the last two the journal stands where the
+        search stopped); :attr:`contact` and :attr:`converged` read it.
     solver_min_film : float
         Smallest film of the solver's solution, m (with a liner: deformed; rough: the
         separation of the mean planes, negative in boundary lubrication).
-    converged : bool
-        The solver's equilibrium carries the load (False: it stopped short of it; the
-        journal stands where its search stopped).
     max_liner_deformation : float
         Largest compression of the liner, m (0 without a liner): what the probes' film
         lacks of the bearing's there.
@@ -245,16 +243,20 @@ class Recording:
     whirl_ey: np.ndarray = field(repr=False)
     whirl_ez: np.ndarray = field(repr=False)
     clearance: float
-    contact: bool
+    solver_status: str
     solver_min_film: float
-    converged: bool = True
     max_liner_deformation: float = 0.0
     asperity_load_share: float = 0.0
 
     @property
-    def solver_status(self) -> str:
-        """``"ok"``, ``"contact"`` or ``"not converged"``: how the bearing solver placed the journal."""
-        return "contact" if self.contact else ("ok" if self.converged else "not converged")
+    def contact(self) -> bool:
+        """The bearing solver found no film that carries the load above its floor."""
+        return self.solver_status == "contact"
+
+    @property
+    def converged(self) -> bool:
+        """The solver's equilibrium carries the load."""
+        return self.solver_status == "ok"
 
     def centres(self, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """True journal centre at stations ``z`` (m) and every sample, each (N, nz), m."""
@@ -376,11 +378,12 @@ def equilibrium_line(case: RigCase, speed: float) -> RigEquilibrium:
         change. A lined equilibrium whose liner does not settle at its first position starts
         nearer the bore centre instead (film/bearing.py) and is reported, not raised.
     """
-    layout = case.layout
-    stations, shape = rig_shape_for(case)
-    bend = case.bend_scale * shape
+    bearing = rig_bearing(case, speed)
+    bent = bearing.geometry.bent_journal
+    assert bent is not None  # the rig's journal is always bent (rig_geometry)
+    stations, bend = bent.z, bent.dy
     try:
-        result = rig_bearing(case, speed).equilibrium(load_y=-case.load, tilt_y=case.misalignment)
+        result = bearing.equilibrium(load_y=-case.load, tilt_y=case.misalignment)
     except SolverFailure as failure:
         raise SolverFailure(
             f"monitor simulate: no journal position at {speed * 30 / math.pi:.0f} rpm: the bearing solver stopped "
@@ -388,7 +391,7 @@ def equilibrium_line(case: RigCase, speed: float) -> RigEquilibrium:
         ) from failure
     state = result.state
     position = state.position
-    arm = stations - 0.5 * layout.length
+    arm = stations - 0.5 * case.layout.length
     status = "contact" if result.contact else ("ok" if result.converged else "not converged")
     return RigEquilibrium(
         speed,
@@ -461,9 +464,8 @@ def simulate(case: RigCase, speed: float, equilibrium: RigEquilibrium | None = N
         whirl_ey,
         whirl_ez,
         layout.radial_clearance + case.sleeve_wear,
-        equilibrium.status == "contact",
+        equilibrium.status,
         equilibrium.min_film,
-        equilibrium.status == "ok",
         equilibrium.max_liner_deformation,
         equilibrium.asperity_load_share,
     )
