@@ -28,6 +28,7 @@ import time
 import warnings
 from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import qdldl
@@ -73,21 +74,39 @@ def operator_matrix(stencil, fixed: np.ndarray, cavitated: np.ndarray, free_only
     return matrix
 
 
-def factor_units(bearing: JournalBearing, position) -> dict[str, float]:
-    """Medians of one factorisation + solve of the converged active set's matrix, s."""
+def unit_timers(bearing: JournalBearing, position) -> tuple[dict[str, Any], int]:
+    """Timers of one factorisation + solve of the converged active set's matrix (the unit and
+    its two variants), and the free nodes."""
     evaluation = bearing._evaluate(position, warm=False)
     fixed = bearing._solver_state().reynolds.fixed
     cavitated = evaluation.solution.cavitated
     free = operator_matrix(evaluation.stencil, fixed, cavitated, free_only=True)
     full = operator_matrix(evaluation.stencil, fixed, cavitated, free_only=False)
     rhs_free, rhs_full = np.ones(free.shape[0]), np.ones(full.shape[0])
-    repeat = 30 if free.shape[0] < 50_000 else 3
-    fresh, _ = median_time(lambda: qdldl.Solver(free, upper=True).solve(rhs_free), repeat)
     numeric_free = qdldl.Solver(free, upper=True)
-    numeric, _ = median_time(lambda: (numeric_free.update(free, upper=True), numeric_free.solve(rhs_free)), repeat)
     masked = qdldl.Solver(full, upper=True)
-    masked_time, _ = median_time(lambda: (masked.update(full, upper=True), masked.solve(rhs_full)), repeat)
-    return {"fresh": fresh, "numeric": numeric, "masked": masked_time, "free_nodes": free.shape[0]}
+    timers = {
+        "numeric": lambda: (numeric_free.update(free, upper=True), numeric_free.solve(rhs_free)),
+        "fresh": lambda: qdldl.Solver(free, upper=True).solve(rhs_free),
+        "masked": lambda: (masked.update(full, upper=True), masked.solve(rhs_full)),
+    }
+    return timers, free.shape[0]
+
+
+def paired_ratios(timers: dict[str, Any], subjects: dict[str, Any], rounds: int) -> dict[str, list[float]]:
+    """Per round: the median of each timer and subject (15 calls each, one after the other), and
+    each subject over each timer: ratios taken pair by pair, so that a machine whose speed drifts
+    between the two measurements (a shared or throttled CPU: the unit alone varied 1.0-1.8 ms
+    between runs) does not move them. Returns the rounds' ratios ``"subject/timer"`` and times."""
+    out: dict[str, list[float]] = {}
+    for _ in range(rounds):
+        times = {name: median_time(function, 15)[0] for name, function in {**timers, **subjects}.items()}
+        for name, value in times.items():
+            out.setdefault(name, []).append(value)
+        for subject in subjects:
+            for timer in timers:
+                out.setdefault(f"{subject}/{timer}", []).append(times[subject] / times[timer])
+    return out
 
 
 class FactorCounter:
@@ -150,20 +169,28 @@ def ntua() -> None:
         f"  eps = {eq.state.eccentricity_ratio:.4f}, h_min = {eq.state.min_film_thickness * 1e6:.1f} um, "
         f"S = {eq.state.sommerfeld_number:.5f}"
     )
-    units = factor_units(bearing, position)
-    unit = units["numeric"]
-    print(f"\nIssue 10: cost against one factorisation + solve of the final matrix ({units['free_nodes']} free nodes)")
-    print(f"  unit: qdldl numeric factorisation + solve, free sub-matrix    : {unit * 1e3:7.3f} ms median")
-    print(f"        the same with a fresh AMD ordering and symbolic analysis : {units['fresh'] * 1e3:7.3f} ms")
-    print(f"        numeric factorisation + solve, full periodic pattern     : {units['masked'] * 1e3:7.3f} ms")
-    print(
-        f"  cold solution / unit : {cold / unit:6.1f}x  (target <= 4x; {cold / units['fresh']:.1f}x the fresh "
-        f"ordering, {cold / units['masked']:.1f}x the full pattern)"
-    )
-    print(
-        f"  equilibrium / unit   : {eq_time / unit:6.1f}x  (target <= 12x; {eq_time / units['fresh']:.1f}x the fresh "
-        f"ordering, {eq_time / units['masked']:.1f}x the full pattern)"
-    )
+    timers, free_nodes = unit_timers(bearing, position)
+    subjects = {
+        "cold": lambda: bearing.solve_at(position, warm_start=False),
+        "equilibrium": lambda: bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y),
+    }
+    pairs = paired_ratios(timers, subjects, rounds=7)
+
+    def median(name: str) -> float:
+        return statistics.median(pairs[name])
+
+    print(f"\nIssue 10: cost against one factorisation + solve of the final matrix ({free_nodes} free nodes)")
+    print("  medians of 7 rounds, each timing everything once (median of 15 calls); ratios per round")
+    print(f"  unit: qdldl numeric factorisation + solve, free sub-matrix    : {median('numeric') * 1e3:7.3f} ms")
+    print(f"        the same with a fresh AMD ordering and symbolic analysis : {median('fresh') * 1e3:7.3f} ms")
+    print(f"        numeric factorisation + solve, full periodic pattern     : {median('masked') * 1e3:7.3f} ms")
+    for subject, label, target in (("cold", "cold solution", 4), ("equilibrium", "equilibrium  ", 12)):
+        ratios = pairs[f"{subject}/numeric"]
+        print(
+            f"  {label} / unit : {median(f'{subject}/numeric'):6.1f}x  (target <= {target}x; rounds "
+            f"{min(ratios):.1f}-{max(ratios):.1f}; {median(f'{subject}/fresh'):.1f}x the fresh ordering, "
+            f"{median(f'{subject}/masked'):.1f}x the full pattern)"
+        )
     # Fine-grid factorisations: larger than the coarse grid (a quarter of the nodes) can be.
     position_nodes = case.options.axial_nodes * case.options.circumferential_nodes
     # A fresh bearing each: a solver built before the counter started would not be counted.

@@ -168,9 +168,9 @@ def test_equilibrium_started_from_a_neighbours_set_is_the_same_equilibrium(tilt_
     starts = []
     solve = solver.solve
 
-    def recording(stencil, film, cavitation="reynolds", initial_cavitated=None):
+    def recording(stencil, film, cavitation="reynolds", initial_cavitated=None, **options):
         starts.append(initial_cavitated)
-        return solve(stencil, film, cavitation, initial_cavitated)
+        return solve(stencil, film, cavitation, initial_cavitated, **options)
 
     solver.solve = recording
     from_set = bearing.equilibrium(load, tilt_y=tilt_y, initial=start, initial_cavitated=neighbour.state.cavitated)
@@ -214,3 +214,53 @@ def test_linearisation_from_the_equilibrium_set_is_the_cold_linearisation():
     # Per component against the force's size: the horizontal one is the equilibrium's residual
     # (1e-5 N of 6 kN), which a low-rank corrected solve rounds differently from a factor.
     np.testing.assert_allclose(warm.force, cold.force, rtol=1e-12, atol=1e-12 * np.abs(cold.force).max())
+
+
+def test_a_refined_trial_is_the_reference_solution_without_a_factorisation():
+    """A Newton trial near the equilibrium (film/bearing.py, ``REFINE_RESIDUAL``) iterates its
+    pressure from the step's linear guess with the kept factor of the film it steps from: it
+    must land on the reference LCP solution at the new position to the module's tolerance and
+    leave the kept factor that of the old film (no factorisation of the new one). From a guess
+    of zero (a long way off) it must still reach the reference: the iteration then needs more
+    steps or falls back to a factorisation, never a wrong answer."""
+    bearing = make_bearing(1.0, axial_nodes=41, circumferential_nodes=144)
+    position = JournalPosition.from_polar(0.6 * CLEARANCE, np.pi, tilt_y=4e-4)
+    evaluation = bearing._evaluate(position, warm=False)
+    _, _, d_pressure = bearing._position_response(evaluation)  # factorises the current film
+    solver = bearing._solver_state().reynolds
+    kept = solver._factor
+    assert kept is not None and kept.stencil is evaluation.stencil
+    step = np.array([2e-4, -1e-4]) * CLEARANCE
+    moved = JournalPosition(
+        ey=position.ey + step[0], ez=position.ez + step[1], tilt_y=position.tilt_y, tilt_z=position.tilt_z
+    )
+    guess = evaluation.relative_pressure + np.tensordot(step, d_pressure, axes=1)
+    trial = bearing._evaluate(moved, start=evaluation.solution.cavitated, refine=guess)
+    assert solver._factor is kept and kept.stencil is evaluation.stencil  # nothing factorised
+    reference = _reference(bearing, moved)
+    assert np.abs(trial.relative_pressure - reference).max() <= TOLERANCE * np.abs(reference).max()
+    bearing._position_response(evaluation)  # the old film's factor again
+    far = bearing._evaluate(moved, start=evaluation.solution.cavitated, refine=np.zeros_like(guess))
+    assert np.abs(far.relative_pressure - reference).max() <= TOLERANCE * np.abs(reference).max()
+
+
+def test_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium():
+    """Grid continuation (5 000 nodes or more, film/bearing.py ``CONTINUATION_NODES``) changes
+    the start, not the answer: the default equilibrium on 80 x 72 (5 760 nodes) against the one
+    started from the closed-form position (``initial``, which skips the coarse grid), both to a
+    force tolerance of 1e-10 of the load: the journal positions agree to 1e-8 of the clearance
+    (the Jacobian's scale, 1e6 N/m per micrometre here, turns 1e-10 of 6 kN into 1e-9 c) and the
+    pressures to 1e-6 of the peak; the continuation takes fewer fine Newton iterations."""
+    bearing = make_bearing(1.0, axial_nodes=80, circumferential_nodes=72, tolerance=1e-10)
+    load, tilt_y = -6e3, 4e-4
+    assert bearing._coarse_equilibrium(load, 0.0, tilt_y, 0.0) is not None  # it does continue
+    continued = bearing.equilibrium(load, tilt_y=tilt_y)
+    closed_form = bearing._initial_position(np.array([load, 0.0]), tilt_y, 0.0)
+    direct = bearing.equilibrium(load, tilt_y=tilt_y, initial=closed_form)
+    for result in (continued, direct):
+        assert result.converged and not result.contact
+    assert abs(continued.state.position.ey - direct.state.position.ey) < 1e-8 * CLEARANCE
+    assert abs(continued.state.position.ez - direct.state.position.ez) < 1e-8 * CLEARANCE
+    scale = np.abs(direct.state.pressure).max()
+    assert np.abs(continued.state.pressure - direct.state.pressure).max() < 1e-6 * scale
+    assert continued.iterations < direct.iterations

@@ -78,10 +78,15 @@ def test_ng_pan_and_constantinescu_agree_in_the_turbulent_range() -> None:
     assert np.all(ng_x > ng_z) and np.all(co_x > co_z)  # the pressure flow along the motion is damped most
 
 
-def test_laminar_limit_reproduces_the_laminar_solver_bit_for_bit() -> None:
+def test_laminar_limit_reproduces_the_laminar_solver() -> None:
     """As Re -> 0 every coefficient is its laminar value in floating point (12 + 1e-290 is 12),
     so the turbulent path (the flow-factor stencil with a factor of exactly 1) gives the laminar
-    solver's equilibrium bit for bit, smooth and rough."""
+    solver's equilibrium, smooth and rough: the same film matrices, to rounding. Not bit for
+    bit: the last Newton trial's pressure is iterated from the step's linear guess (film/
+    bearing.py, REFINE_RESIDUAL), whose derivative the turbulent path computes with its own
+    (here unit) factors, so its last bits may differ (5e-17 of the peak seen); 1e-13 of the
+    peak pressure, the clearance and the friction is rounding, far below what a coefficient
+    that is not exactly its laminar value would move."""
     rough = replace(RIG, surface=SurfaceRoughness.preset("steel_polymer"))
     for geometry in (RIG, rough):
         operating = OperatingPoint(speed=100 * math.pi / 30, viscosity=0.89e-3, density=1e-300)
@@ -90,9 +95,13 @@ def test_laminar_limit_reproduces_the_laminar_solver_bit_for_bit() -> None:
         assert turbulent_bearing.turbulent
         turbulent = turbulent_bearing.equilibrium(load_y=-LOAD)
         assert turbulent.state.max_reynolds_number < 1e-290
-        np.testing.assert_array_equal(turbulent.state.pressure, laminar.state.pressure)
-        assert turbulent.state.position == laminar.state.position
-        assert turbulent.state.friction_force == laminar.state.friction_force
+        peak = float(laminar.state.pressure.max())
+        np.testing.assert_allclose(turbulent.state.pressure, laminar.state.pressure, rtol=0.0, atol=1e-13 * peak)
+        for offset in ("ey", "ez"):
+            assert getattr(turbulent.state.position, offset) == pytest.approx(
+                getattr(laminar.state.position, offset), rel=0.0, abs=1e-13 * geometry.radial_clearance
+            )
+        assert turbulent.state.friction_force == pytest.approx(laminar.state.friction_force, rel=1e-13)
 
 
 def _load_ratio(

@@ -67,12 +67,15 @@ ATOL_SHARE = 1e-9
 #: component (a vertical load's horizontal force, the moments of an aligned or symmetric
 #: film, the load centre's offset then): their value is rounding below the solver's force
 #: tolerance (1e-8 of the load, 3.1e-3 N on the NTUA case), and any solver change that
-#: rounds differently moves them by orders of magnitude (1e-10 to 1e-6 N). Compared against
+#: rounds differently or takes another Newton path moves them by orders of magnitude (1e-10 to
+#: 1e-3 N; tests/regression/README.md). Compared against
 #: these absolute bounds, far below anything physical (a real horizontal load or moment in
 #: the examples is 1e3 N or N m or more, a real load-centre offset a millimetre).
 RESIDUAL_ATOL = {
-    "force_z": 1e-5,  # N
-    "force_residual": 1e-5,  # N
+    # the solver's own bound on the NTUA case (1e-8 of its load), below which the last Newton
+    # step may land anywhere
+    "force_z": 3.1e-3,  # N
+    "force_residual": 3.1e-3,  # N
     "moment_y": 1e-5,  # N m
     "moment_z": 1e-5,  # N m
     "load_centre_offset": 1e-12,  # m
@@ -146,7 +149,7 @@ def test_compare_sees_a_change():
     assert compare({"a": [1.0, 2.0, {"b": 3.0, "c": 1}]}, reference) != []
     # A residual-level number may round differently, a real change of it is still seen.
     assert compare({"c": {"force_z": 3e-9}}, {"c": {"force_z": -2e-9}}) == []
-    assert compare({"c": {"force_z": 1e-3}}, {"c": {"force_z": -2e-9}}) == ["c.force_z: 0.001 != -2e-09"]
+    assert compare({"c": {"force_z": 1e-2}}, {"c": {"force_z": -2e-9}}) == ["c.force_z: 0.01 != -2e-09"]
 
 
 @pytest.mark.parametrize(

@@ -27,6 +27,8 @@ from shaftline.film.analytic import eccentricity_guess
 from shaftline.film.elastic import CoupledLiner, CoupledOrderings, LayerSystem, LinerSystem
 from shaftline.film.extremes import local_extreme
 from shaftline.film.geometry import (
+    MIN_AXIAL_NODES,
+    MIN_CIRCUMFERENTIAL_NODES,
     BearingGeometry,
     BentJournal,
     Grid,
@@ -88,10 +90,32 @@ __all__ = [
 
 #: Grids with at least this many nodes start the equilibrium from the equilibrium on the grid
 #: halved in both directions (grid continuation): the fine Newton steps are then short, so
-#: each trial's predicted active set is nearly right.
-CONTINUATION_NODES = 20_000
-#: Force tolerance of that coarse equilibrium: it only places the start.
-CONTINUATION_TOLERANCE = 1e-5
+#: each trial's predicted active set is nearly right, and the first film solution starts its
+#: active set from the coarse pressure. Measured on the NTUA case (misaligned; median of 15,
+#: benchmarks/bench_bearing.py): 80 x 48 the same with and without (16 ms), 100 x 60 17 ms
+#: against 23, 120 x 72 27 against 34, 140 x 84 57 against 111, 200 x 120 91 against 314 (4
+#: fine Newton iterations from the closed-form start, 2 from the coarse equilibrium). A
+#: bearing with a liner, a rough surface or the mass-conserving model keeps the threshold that
+#: its solver paths were tuned with, :data:`CONTINUATION_NODES_OTHER`.
+CONTINUATION_NODES = 5_000
+CONTINUATION_NODES_OTHER = 20_000
+#: Force tolerance (share of the load) of that coarse equilibrium: it only places the start.
+#: The fine Newton iteration takes about ``r -> 0.7 r^2`` there, so from a start within 1 % of
+#: the load it converges (1e-8) in two steps; the start's residual is the coarse grid's
+#: discretisation error plus this tolerance, so a tighter one buys nothing (18 NTUA
+#: equilibria, 100 x 60 and 200 x 120, three loads and tilts: the same fine iterations at
+#: 1e-5 and 2e-3, one coarse iteration fewer at 2e-3 on the example, 5 % of its time). The
+#: bearings of :data:`CONTINUATION_NODES_OTHER` keep theirs, :data:`OTHER_START_TOLERANCE`.
+CONTINUATION_TOLERANCE = 2e-3
+#: Force tolerance of the equilibria that only place the start of a bearing with a liner, a
+#: rough surface or the mass-conserving model (the coarse grid's, and a lined bearing's rigid
+#: bore's): the one their solver paths were tuned with (docs/theory.md Sect. 17).
+OTHER_START_TOLERANCE = 1e-5
+#: Force residual (share of the load) below which a Newton step's trials refine their pressure
+#: from the step's linear guess by conjugate gradients preconditioned by the current film's
+#: factor instead of factorising their own matrix: there the step changes the film by about
+#: that share, so the iteration gains about that factor per step (ReynoldsSolver.solve).
+REFINE_RESIDUAL = 1e-3
 #: Newton iterations in a row that each leave more than ``STALLED_REDUCTION`` of the force
 #: residual, after which a rigid rough bore's equilibrium is given up: as contact when its film
 #: is at the boundary limit (the asperities there cannot carry the rest of the load), as not
@@ -763,6 +787,7 @@ class JournalBearing:
         deformation: np.ndarray | None = None,
         chord: CoupledLiner | None = None,
         liner_tolerance: float = LINER_TOLERANCE,
+        refine: np.ndarray | None = None,
     ) -> _Evaluation:
         """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
         bent journal of :meth:`film_load`); ``tilt_rates`` (rad/s, dy/dx and dz/dx per second)
@@ -774,7 +799,10 @@ class JournalBearing:
         the film and the liner are solved together (:meth:`_evaluate_liner`), from the
         ``deformation`` given (m) or none, its first steps with the Newton matrix ``chord`` of a
         nearby film when given, to ``liner_tolerance`` (max |R| of the liner equation over the
-        clearance)."""
+        clearance). ``refine``, a pressure guess close to the solution (relative,
+        dimensionless; rigid bore, Reynolds condition), with ``start`` the set it starts from:
+        the solution is iterated from it with the kept factor instead of factorising
+        (:meth:`~shaftline.film.reynolds.ReynoldsSolver.solve`)."""
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(geometry or self.geometry, grid, position)
@@ -816,7 +844,7 @@ class JournalBearing:
             return self._evaluate_liner(
                 position, grid, rigid, rate, start, film - rigid, geometry or self.geometry, chord, liner_tolerance
             )
-        solution = solver.solve(stencil, film_nd, self.options.cavitation, start)
+        solution = solver.solve(stencil, film_nd, self.options.cavitation, start, refine=refine)
         cache.last_cavitated = solution.cavitated
         relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
         surface = (geometry or self.geometry).surface
@@ -1587,8 +1615,11 @@ class JournalBearing:
             raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
         c = self.geometry.radial_clearance
         floor = self._film_floor()
+        start_pressure = None
         if initial is None:
-            initial = self._coarse_equilibrium(load_y, load_z, tilt_y, tilt_z)
+            coarse = self._coarse_equilibrium(load_y, load_z, tilt_y, tilt_z)
+            if coarse is not None:
+                initial, start_pressure = coarse
         if initial is None and self.geometry.liner is not None:
             initial = self._rigid_equilibrium(load_y, load_z, tilt_y, tilt_z)
             if initial is not None and self.min_film(initial) < self._approach_floor():
@@ -1607,7 +1638,10 @@ class JournalBearing:
         self._solver_state().last_cavitated = None
         self._solver_state().last_deformation = None
         self._solver_state().orderings.clear()
-        evaluation, started = self._start_evaluation(position, self._start_set(initial_cavitated))
+        start_set = self._start_set(initial_cavitated)
+        if start_set is not None or self.options.cavitation != "reynolds":
+            start_pressure = None
+        evaluation, started = self._start_evaluation(position, start_set, start_pressure)
         residual = evaluation.force + load
         if not started:
             # No position of the retreat settles the film-liner iteration: the start itself,
@@ -1619,6 +1653,7 @@ class JournalBearing:
         # A liner carries any load by deforming (the journal may pass the rigid bore surface):
         # the stall rule of a rigid rough bore does not apply to it.
         rough = self.geometry.surface is not None and self.geometry.liner is None
+        refinable = self.geometry.liner is None and self.options.cavitation == "reynolds"
         stalled = crawled = 0
         unsettled = False
         while iterations < self.options.max_iterations:
@@ -1656,9 +1691,12 @@ class JournalBearing:
             jacobian, d_residual, d_pressure = self._position_response(evaluation)
             accepted = None
             inexact = required
+            # Near the equilibrium the step barely changes the film: its trials are iterated from
+            # the linear pressure guess with this film's factor (no factorisation, no set sweeps).
+            refine = refinable and norm <= REFINE_RESIDUAL * magnitude
             for step, sufficient in self._candidate_steps(jacobian, residual, load, c):
                 accepted = self._line_search(
-                    evaluation, (d_residual, d_pressure), step, load, norm, floor, sufficient, inexact
+                    evaluation, (d_residual, d_pressure), step, load, norm, floor, sufficient, inexact, refine
                 )
                 if accepted is not None:
                     break
@@ -1707,7 +1745,9 @@ class JournalBearing:
             state = replace(state, contact=True)
         return Equilibrium(state, load_y, load_z, converged, contact, iterations, residual_norm)
 
-    def _start_evaluation(self, position: JournalPosition, start: np.ndarray | None) -> tuple[_Evaluation, bool]:
+    def _start_evaluation(
+        self, position: JournalPosition, start: np.ndarray | None, start_pressure: np.ndarray | None = None
+    ) -> tuple[_Evaluation, bool]:
         """The equilibrium's first film solution, at ``position`` or, where an elastic liner's
         film-liner iteration does not settle there, at the first position of :meth:`_retreat`
         where it does; and whether one settled. None settling: the evaluation the iteration left
@@ -1720,7 +1760,7 @@ class JournalBearing:
         takes it down to the equilibrium, with its line search rejecting trials that do not
         settle (docs/theory.md, "Starting a lined equilibrium")."""
         try:
-            return self._evaluate(position, start=start), True
+            return self._evaluate(position, start=start, start_pressure=start_pressure), True
         except LinerConvergenceError as failure:
             first = failure
         for lifted in self._retreat(position):
@@ -1903,28 +1943,45 @@ class JournalBearing:
             )
         return start
 
-    def _coarse_equilibrium(self, load_y: float, load_z: float, tilt_y: float, tilt_z: float) -> JournalPosition | None:
-        """Equilibrium position on the grid halved in both directions (grid continuation), or
-        None on a grid below :data:`CONTINUATION_NODES` or where it does not converge.
+    def _coarse_equilibrium(
+        self, load_y: float, load_z: float, tilt_y: float, tilt_z: float
+    ) -> tuple[JournalPosition, np.ndarray | None] | None:
+        """Equilibrium position on the grid halved in both directions (grid continuation) and
+        its pressure brought onto this grid (relative, dimensionless: the start of the first
+        film solution's active set), or None on a grid below :data:`CONTINUATION_NODES`
+        (:data:`CONTINUATION_NODES_OTHER` with a liner, a rough surface or the mass-conserving
+        model) or where it does not converge.
 
         Depends only on the problem and the arguments, as the equilibrium does."""
         options = self.options
         shape = coarse_shape((options.axial_nodes, options.circumferential_nodes))
-        if options.axial_nodes * options.circumferential_nodes < CONTINUATION_NODES or shape is None:
+        plain = self.geometry.liner is None and self.geometry.surface is None and options.cavitation == "reynolds"
+        threshold = CONTINUATION_NODES if plain else CONTINUATION_NODES_OTHER
+        coarse_tolerance = CONTINUATION_TOLERANCE if plain else OTHER_START_TOLERANCE
+        if options.axial_nodes * options.circumferential_nodes < threshold or shape is None:
             return None
+        if shape[0] < MIN_AXIAL_NODES or shape[1] < MIN_CIRCUMFERENTIAL_NODES:
+            return None  # a grid too coarse to resolve the film is no start (e.g. 200 x 30)
         cache = self._solver_state()
         if cache.coarse_bearing is None:
             coarse_options = replace(
                 options,
                 axial_nodes=shape[0],
                 circumferential_nodes=shape[1],
-                tolerance=max(options.tolerance, CONTINUATION_TOLERANCE),
+                tolerance=max(options.tolerance, coarse_tolerance),
             )
             cache.coarse_bearing = JournalBearing(self.geometry, self.operating, coarse_options)
         coarse = cache.coarse_bearing.equilibrium(load_y, load_z, tilt_y=tilt_y, tilt_z=tilt_z)
         if not coarse.converged or coarse.contact:
             return None
-        return coarse.state.position
+        relative = (coarse.state.pressure - self.operating.cavitation_pressure) / self.pressure_scale
+        # Both grids start at the same angle at the same position, so the coarse rows and
+        # columns are the fine solver's coarse grid's (CoarseGrid: every other column, rows
+        # evenly from edge to edge).
+        grid = cache.reynolds.coarse_grid()
+        if grid is None or grid.solver.shape != relative.shape:
+            return coarse.state.position, None
+        return coarse.state.position, grid.prolong(relative)
 
     def _rigid_equilibrium(self, load_y: float, load_z: float, tilt_y: float, tilt_z: float) -> JournalPosition | None:
         """Equilibrium position of the same bearing with a rigid bore (the liner left out), or
@@ -1938,7 +1995,7 @@ class JournalBearing:
         cache = self._solver_state()
         if cache.rigid_bearing is None:
             # Its force tolerance is the coarse start's: it only places the start.
-            options = replace(self.options, tolerance=max(self.options.tolerance, CONTINUATION_TOLERANCE))
+            options = replace(self.options, tolerance=max(self.options.tolerance, OTHER_START_TOLERANCE))
             cache.rigid_bearing = JournalBearing(replace(self.geometry, liner=None), self.operating, options)
         try:
             rigid = cache.rigid_bearing.equilibrium(load_y, load_z, tilt_y=tilt_y, tilt_z=tilt_z)
@@ -1975,13 +2032,16 @@ class JournalBearing:
         floor: float,
         sufficient: float,
         liner_tolerance: float = LINER_TOLERANCE,
+        refine: bool = False,
     ) -> _Evaluation | None:
         """Backtracking that keeps the film above the floor and lowers the force residual
         (by the Armijo share ``sufficient * alpha`` for a Newton step, at all for a fallback).
 
         Each trial starts its active set from the one predicted by the step from the
         evaluation's ``response`` (the residual and pressure changes per metre of ey and ez of
-        :meth:`_position_response`; see :meth:`_predicted_cavitation`)."""
+        :meth:`_position_response`; see :meth:`_predicted_cavitation`); with ``refine`` each
+        trial starts from the evaluation's set and iterates its pressure from that guess
+        (:meth:`_evaluate`)."""
         position = evaluation.position
         lined = evaluation.deformation is not None
         hmin_now = float(evaluation.film.min()) if lined else self.min_film(position)
@@ -2009,14 +2069,19 @@ class JournalBearing:
         while alpha > 1e-8:
             try:
                 start, guess = self._predicted_cavitation(evaluation, response, alpha * step)
-                trial = self._evaluate(
-                    self._moved(position, alpha * step),
-                    start=start,
-                    start_pressure=guess,
-                    deformation=self._predicted_deformation(evaluation, response, alpha * step),
-                    chord=evaluation.liner_system,
-                    liner_tolerance=liner_tolerance,
-                )
+                if refine and guess is not None:
+                    trial = self._evaluate(
+                        self._moved(position, alpha * step), start=evaluation.solution.cavitated, refine=guess
+                    )
+                else:
+                    trial = self._evaluate(
+                        self._moved(position, alpha * step),
+                        start=start,
+                        start_pressure=guess,
+                        deformation=self._predicted_deformation(evaluation, response, alpha * step),
+                        chord=evaluation.liner_system,
+                        liner_tolerance=liner_tolerance,
+                    )
             except (_NegativeFilm, LinerConvergenceError):
                 alpha *= 0.5
                 continue

@@ -91,6 +91,10 @@ NESTED_SWING = 0.02
 #: factorisation) cost less than a factorisation up to about four nodes.
 SWITCH_MAX_NODES = 3
 PCG_TOLERANCE = 1e-9
+#: Energy-norm share to which a refined solution (:meth:`ReynoldsSolver.solve` with ``refine``)
+#: is iterated: near the rounding of a direct solve (its pressures agree with the factor's to
+#: about 1e-12 of the peak), so that it stands for that set's solution.
+REFINE_TOLERANCE = 1e-13
 #: Grids below this many nodes factorise every trial set: there a conjugate-gradient
 #: iteration, its array work in numpy included, costs a tenth of a factorisation or more
 #: (0.25 ms against 1-3 ms on 100 x 60), and a trial set needs 10-25 of them.
@@ -405,7 +409,13 @@ class ReynoldsSolver:
         return factor
 
     def _solve_free(
-        self, stencil: Stencil, held: np.ndarray, rhs: np.ndarray, guess: np.ndarray | None, direct: bool
+        self,
+        stencil: Stencil,
+        held: np.ndarray,
+        rhs: np.ndarray,
+        guess: np.ndarray | None,
+        direct: bool,
+        refine: bool = False,
     ) -> np.ndarray:
         """``x`` with ``A[free, free] x[free] = rhs[free]`` and ``x = 0`` on the held nodes (flat).
 
@@ -413,7 +423,8 @@ class ReynoldsSolver:
         active set, possibly of a nearby film) come first: they end in a few iterations, as
         the two matrices differ in the rows and columns of the switched nodes and by the
         small change of the film. Otherwise, or when they do not converge, the factor of
-        this set. ``guess`` (flat, or None) starts the iteration.
+        this set. ``guess`` (flat, or None) starts the iteration. ``refine``: conjugate
+        gradients on any grid, to :data:`REFINE_TOLERANCE`.
         """
         free = ~held.ravel()
         out = np.zeros(free.size)
@@ -421,9 +432,10 @@ class ReynoldsSolver:
             return out
         if self.masked:
             return self._masked_factorisation(stencil, held).solve(np.where(free, rhs.ravel(), 0.0))
-        iterative = free.size >= PCG_MIN_NODES and self._factor is not None
+        iterative = (refine or free.size >= PCG_MIN_NODES) and self._factor is not None
         if iterative and not direct:
-            solution = self._pcg(stencil, free, rhs.ravel()[free], None if guess is None else guess[free])
+            tolerance = REFINE_TOLERANCE if refine else PCG_TOLERANCE
+            solution = self._pcg(stencil, free, rhs.ravel()[free], None if guess is None else guess[free], tolerance)
             if solution is not None:
                 out[free] = solution
                 return out
@@ -450,7 +462,14 @@ class ReynoldsSolver:
             return True  # a masked solve is always a direct solve of that set's own matrix
         return self._factor is not None and self._factor.is_for(stencil, ~held.ravel())
 
-    def _pcg(self, stencil: Stencil, free: np.ndarray, rhs: np.ndarray, guess: np.ndarray | None) -> np.ndarray | None:
+    def _pcg(
+        self,
+        stencil: Stencil,
+        free: np.ndarray,
+        rhs: np.ndarray,
+        guess: np.ndarray | None,
+        tolerance: float = PCG_TOLERANCE,
+    ) -> np.ndarray | None:
         """Conjugate gradients on ``A[free, free]`` preconditioned by the kept factor.
 
         The preconditioner applies the kept factor's inverse on the nodes free in both sets
@@ -460,7 +479,7 @@ class ReynoldsSolver:
         Computations, 4th ed., Sect. 11.5); a factor of a nearby film adds a perturbation
         small in norm, which costs a few more.
         Stops when the preconditioned residual (the error in the energy norm) falls below
-        ``PCG_TOLERANCE`` of the solution's energy norm; None when it does not within
+        ``tolerance`` of the solution's energy norm; None when it does not within
         ``PCG_MAX_ITERATIONS``.
         """
         factor = self._factor
@@ -493,7 +512,7 @@ class ReynoldsSolver:
         rz = _dot(r, z)
         for step in range(PCG_MAX_ITERATIONS):
             energy = abs(_dot(x, rhs)) + abs(_dot(x, r))
-            if rz <= PCG_TOLERANCE**2 * energy or rz == 0.0:
+            if rz <= tolerance**2 * energy or rz == 0.0:
                 self.pcg_iterations += step
                 return x
             q = operator(p)
@@ -513,12 +532,13 @@ class ReynoldsSolver:
         held_values: np.ndarray,
         guess: np.ndarray | None = None,
         direct: bool = True,
+        refine: bool = False,
     ) -> np.ndarray:
         """Solve ``A P = b`` on the free nodes with ``P = held_values`` on held nodes."""
         # Moving the held values to the right-hand side: b - A_{free,held} P_held.
         boundary = np.where(held, held_values, 0.0)
         rhs = stencil.rhs - apply_operator(stencil.c_theta, stencil.c_z, boundary)
-        pressure = self._solve_free(stencil, held, rhs, None if guess is None else guess.ravel(), direct)
+        pressure = self._solve_free(stencil, held, rhs, None if guess is None else guess.ravel(), direct, refine)
         return (pressure + boundary.ravel()).reshape(self.shape)
 
     def solve_linear(self, stencil: Stencil) -> np.ndarray:
@@ -531,8 +551,15 @@ class ReynoldsSolver:
         film: np.ndarray,
         cavitation: Cavitation = "reynolds",
         initial_cavitated: np.ndarray | None = None,
+        refine: np.ndarray | None = None,
     ) -> ReynoldsSolution:
-        """Solve with the chosen cavitation model; ``initial_cavitated`` warm-starts the active set."""
+        """Solve with the chosen cavitation model; ``initial_cavitated`` warm-starts the active set.
+
+        ``refine`` (Reynolds condition only), a pressure guess (nz, nt) close to the solution
+        (a short Newton step's ``P + dP``): the active set's solves then iterate from it by
+        conjugate gradients preconditioned by the kept factor (that of the nearby film), to
+        :data:`REFINE_TOLERANCE`, instead of factorising this film's matrix.
+        """
         if cavitation == "half_sommerfeld":
             pressure = np.maximum(self.solve_linear(stencil), 0.0)
             cavitated = (pressure <= 0.0) & ~self.fixed
@@ -542,7 +569,7 @@ class ReynoldsSolver:
             from shaftline.film.jfo import solve_jfo
 
             return solve_jfo(self, stencil, film, initial_cavitated)
-        reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film)
+        reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film, refine=refine)
         if cavitation == "reynolds":
             return _MarchedSolution(reynolds.pressure, reynolds.cavitated, reynolds.iterations, film)
         raise ValueError(f"unknown cavitation model {cavitation!r}")
@@ -616,6 +643,7 @@ class ReynoldsSolver:
         initial_cavitated: np.ndarray | None,
         film: np.ndarray | None = None,
         exact: bool = True,
+        refine: np.ndarray | None = None,
     ) -> ReynoldsSolution:
         """Primal-dual active set (Hintermueller, Ito & Kunisch 2002) for the Reynolds LCP.
 
@@ -623,7 +651,8 @@ class ReynoldsSolver:
         by the kept factor where they converge); once the set has settled, its pressures are
         solved again with the factor of that set (``exact``), so that the result depends only
         on the film and the set, which is unique, not on the start or the path. The coarse
-        grids that only predict the set skip that last solve.
+        grids that only predict the set skip that last solve. With ``refine`` (a pressure guess,
+        see :meth:`solve`) every set is solved iteratively to :data:`REFINE_TOLERANCE`.
         """
         iterations = 0
         if initial_cavitated is None and film is not None and stencil.rhs.shape == film.shape:
@@ -635,12 +664,12 @@ class ReynoldsSolver:
         else:
             cavitated = initial_cavitated & ~self.fixed
         scale = 1.0
-        guess: np.ndarray | None = None
+        guess = refine
         values = np.where(self.fixed, self.fixed_pressure, 0.0)
         direct = False
         for _ in range(MAX_ACTIVE_SET_ITERATIONS):
             held = self.fixed | cavitated
-            pressure = self._solve_masked(stencil, held, values, guess, direct=direct)
+            pressure = self._solve_masked(stencil, held, values, guess, direct=direct, refine=refine is not None)
             guess = pressure
             iterations += 1
             scale = max(float(np.abs(pressure).max()), 1e-300)
@@ -649,7 +678,7 @@ class ReynoldsSolver:
             leave = cavitated & (multiplier < -1e-12 * rhs_scale)
             enter = ~held & (pressure < -1e-12 * scale)
             if not leave.any() and not enter.any():
-                if exact and not self._is_factored(stencil, held):
+                if exact and refine is None and not self._is_factored(stencil, held):
                     # Settled on an iterative solution: solve once more with this set's factor
                     # (and check it again) so that the result does not depend on the path.
                     direct = True
