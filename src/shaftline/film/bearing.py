@@ -1885,18 +1885,10 @@ class JournalBearing:
         return evaluation, iterations, self._at_floor(self.min_film(evaluation.position))
 
     def contact_zone_nodes(self, film: np.ndarray) -> int:
-        """Circumferential nodes of the row of the thinnest film whose film is within one composite
-        roughness sigma of that row's minimum: how many nodes resolve a rough contact zone (0 for
-        smooth surfaces). ``film`` in m on :meth:`grid`, shape (nz, nt).
-
-        Near its minimum a journal's film is ``h_min + c eps theta^2 / 2``, so the zone is
-        ``2 sqrt(2 sigma / (c eps))`` wide: 10 degrees on seed 001's rig (3.4 nodes on its 3 degree
-        grid, 14 on a 0.75 degree one)."""
+        """:func:`contact_zone_nodes` of ``film`` (m, on :meth:`grid`) with this bearing's
+        composite roughness (0 for smooth surfaces)."""
         surface = self.geometry.surface
-        if surface is None:
-            return 0
-        row = film[int(np.argmin(film.min(axis=1)))]
-        return int(np.count_nonzero(row <= row.min() + surface.sigma))
+        return 0 if surface is None else contact_zone_nodes(film, surface.sigma)
 
     def _newton_trial(
         self,
@@ -2350,6 +2342,32 @@ def closed_form_offsets(
     load_angle = math.atan2(g.rotation * load_z, load_y)
     local = JournalPosition.from_polar(epsilon * g.radial_clearance, load_angle + attitude, g.rotation)
     return local.ey, local.ez
+
+
+def contact_zone_nodes(film: np.ndarray, sigma: float) -> int:
+    """Circumferential nodes of the row of the thinnest film whose film is within one composite
+    roughness ``sigma`` (m) of that row's minimum: how many nodes resolve a rough contact zone.
+    ``film`` in m, shape (nz, nt).
+
+    Near its minimum a journal's film is ``h_min + c eps theta^2 / 2``, so the zone is
+    ``2 sqrt(2 sigma / (c eps))`` wide: 10 degrees on seed 001's rig (3.4 nodes on its 3 degree
+    grid, 14 on a 0.75 degree one). Below :data:`SETTLE_ZONE_NODES` the discrete film force of a
+    rigid rough bore jumps as the minimum moves between nodes (docs/theory.md, "Rigid rough bore
+    at low speed")."""
+    row = film[int(np.argmin(film.min(axis=1)))]
+    return int(np.count_nonzero(row <= row.min() + sigma))
+
+
+def nodes_to_resolve_contact_zone(film: np.ndarray, sigma: float) -> int:
+    """Circumferential nodes (even) that would put :data:`SETTLE_ZONE_NODES` nodes across the
+    contact zone of ``film`` (m, shape (nz, nt), on a grid of nt nodes round the bore): the zone
+    keeps its width in angle as the grid is refined. The count of nodes inside a zone is up to
+    one more than its width in cells, so the width is taken as one node less (seed 001's rig:
+    4 nodes on 120, 400 asked; 3.4 cells wide, so 11 nodes there)."""
+    nt = film.shape[1]
+    zone = max(contact_zone_nodes(film, sigma) - 1, 1)
+    needed = math.ceil(nt * SETTLE_ZONE_NODES / zone)
+    return needed + needed % 2
 
 
 class _NegativeFilm(Exception):

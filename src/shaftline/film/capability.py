@@ -16,9 +16,11 @@ from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb
 from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table, fmt
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from shaftline.film.case import BearingSection
     from shaftline.film.stribeck import StribeckCurve
-    from shaftline.film.study import BearingStudy, BearingStudyResult
+    from shaftline.film.study import BearingCase, BearingStudy, BearingStudyResult
 
 #: Largest peak film pressure a class rule allows, Pa: NK's 40 MPa as quoted in seed 004
 #: Sect. 2.2.1 (line 497 of the text); above it a result is not a stern-tube bearing's.
@@ -204,7 +206,7 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 out.append(
                     Finding(
                         f"{name}: the equilibrium did not converge (force residual {equilibrium.residual:.3g} N); "
-                        "the numbers are not a solution."
+                        "the numbers are not a solution." + _unresolved_contact_zone(run.case, state.film)
                     )
                 )
             roughness = run.case.surface_roughness
@@ -250,6 +252,8 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                         criterion=True,
                     )
                 )
+        if result.stribeck is not None:
+            out += _stribeck_findings(result.stribeck, result.cases[0].case)
         return out
 
     def _table(self, result: BearingStudyResult) -> Table:
@@ -505,3 +509,57 @@ def _stribeck_table(result: BearingStudyResult) -> Table:
 
 
 CAPABILITY = BearingFilm()
+
+
+def _unresolved_contact_zone(case: BearingCase, film: np.ndarray) -> str:
+    """For a rigid rough bore whose contact zone (the film within sigma of its minimum) spans fewer
+    nodes than the settling needs, what a user can change ("" otherwise): on such a grid the
+    discrete film force jumps as the minimum moves between nodes and Newton stalls (docs/theory.md,
+    "Rigid rough bore at low speed")."""
+    from shaftline.film.bearing import SETTLE_ZONE_NODES, contact_zone_nodes, nodes_to_resolve_contact_zone
+
+    surface = case.geometry.surface
+    if surface is None or case.geometry.liner is not None:
+        return ""
+    zone = contact_zone_nodes(film, surface.sigma)
+    if zone >= SETTLE_ZONE_NODES:
+        return ""
+    return (
+        f" The rough contact zone (film within σ of its minimum) spans {zone} of the {film.shape[1]} nodes round "
+        f"the bore, too few for the discrete film force to have a root Newton can follow (at least "
+        f"{SETTLE_ZONE_NODES} needed): set [bearing.solver] circumferential_nodes to about "
+        f"{nodes_to_resolve_contact_zone(film, surface.sigma)}, or model the liner ([bearing.liner]), which "
+        'widens the zone (docs/theory.md, "Rigid rough bore at low speed").'
+    )
+
+
+def _stribeck_findings(curve: StribeckCurve, case: BearingCase) -> list[Finding]:
+    """The speeds of a Stribeck curve whose equilibrium stalled above the contact limit (their
+    points are not solutions), with what would resolve a rigid rough bore's contact zone there:
+    near ε = 1 the zone (film within σ of its minimum) is 2 sqrt(2σ/c) wide (docs/theory.md, "Rigid
+    rough bore at low speed"), so :data:`~shaftline.film.bearing.SETTLE_ZONE_NODES` + 1 nodes
+    across it (one for the count's rounding) need that many times 2 pi over its width round the bore.
+    Advisory (``criterion``): the rest of the curve stands, and the table counts them too."""
+    from shaftline.film.bearing import SETTLE_ZONE_NODES
+
+    stalled = ~curve.converged.astype(bool) & ~curve.contact.astype(bool)
+    if not stalled.any():
+        return []
+    rpm = curve.speed[stalled] * 30.0 / math.pi
+    text = (
+        f"Stribeck curve: {int(stalled.sum())} of {curve.speed.size} speeds ({fmt(float(rpm.min()))} to "
+        f"{fmt(float(rpm.max()))} rpm) did not converge above the contact limit; their points are not solutions."
+    )
+    geometry, nodes = case.geometry, case.options.circumferential_nodes
+    if geometry.surface is not None and geometry.liner is None:
+        width = 2.0 * math.sqrt(2.0 * geometry.surface.sigma / geometry.radial_clearance)  # rad, at ε = 1
+        needed = math.ceil((SETTLE_ZONE_NODES + 1) * 2.0 * math.pi / width)
+        needed += needed % 2
+        if needed > nodes:
+            text += (
+                f" Near ε = 1 the rough contact zone (film within σ of its minimum) is {math.degrees(width):.2g}° "
+                f"wide, {nodes * width / (2.0 * math.pi):.2g} of the {nodes} nodes round the bore (at least "
+                f"{SETTLE_ZONE_NODES} needed for a root Newton can follow): [bearing.solver] circumferential_nodes "
+                f'of about {needed} resolve it, or model the liner (docs/theory.md, "Rigid rough bore at low speed").'
+            )
+    return [Finding(text, criterion=True)]
