@@ -146,6 +146,16 @@ def test_frozen_set_derivatives_match_a_direct_solve():
     assert np.abs(d_pressure.ravel() - expected).max() <= TOLERANCE * np.abs(expected).max()
 
 
+def _assert_same_equilibrium(result, reference, position_tolerance: float) -> None:
+    """``result`` converged without contact at ``reference``'s journal position to
+    ``position_tolerance`` (m) and on its pressure to 1e-6 of the peak."""
+    assert result.converged and not result.contact
+    assert abs(result.state.position.ey - reference.state.position.ey) < position_tolerance
+    assert abs(result.state.position.ez - reference.state.position.ez) < position_tolerance
+    scale = np.abs(reference.state.pressure).max()
+    assert np.abs(result.state.pressure - reference.state.pressure).max() < 1e-6 * scale
+
+
 @pytest.mark.parametrize("tilt_y", [0.0, 4e-4])
 def test_equilibrium_started_from_a_neighbours_set_is_the_same_equilibrium(tilt_y):
     """``initial_cavitated`` (the sweep's warm start) changes the path, not the answer.
@@ -178,11 +188,7 @@ def test_equilibrium_started_from_a_neighbours_set_is_the_same_equilibrium(tilt_
     # The first film solution of the equilibrium started from the neighbour's set.
     np.testing.assert_array_equal(starts[0], neighbour.state.cavitated)
     for warm in (from_start, from_set):
-        assert warm.converged and not warm.contact
-        assert abs(warm.state.position.ey - cold.state.position.ey) < 1e-9 * CLEARANCE
-        assert abs(warm.state.position.ez - cold.state.position.ez) < 1e-9 * CLEARANCE
-        scale = np.abs(cold.state.pressure).max()
-        assert np.abs(warm.state.pressure - cold.state.pressure).max() < 1e-6 * scale
+        _assert_same_equilibrium(warm, cold, 1e-9 * CLEARANCE)
     # The set carried over is the journal-position path's answer exactly (same first position).
     np.testing.assert_array_equal(from_set.state.cavitated, from_start.state.cavitated)
     assert from_set.iterations == from_start.iterations
@@ -257,10 +263,6 @@ def test_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium(
     continued = bearing.equilibrium(load, tilt_y=tilt_y)
     closed_form = bearing._initial_position(np.array([load, 0.0]), tilt_y, 0.0)
     direct = bearing.equilibrium(load, tilt_y=tilt_y, initial=closed_form)
-    for result in (continued, direct):
-        assert result.converged and not result.contact
-    assert abs(continued.state.position.ey - direct.state.position.ey) < 1e-8 * CLEARANCE
-    assert abs(continued.state.position.ez - direct.state.position.ez) < 1e-8 * CLEARANCE
-    scale = np.abs(direct.state.pressure).max()
-    assert np.abs(continued.state.pressure - direct.state.pressure).max() < 1e-6 * scale
+    assert direct.converged and not direct.contact
+    _assert_same_equilibrium(continued, direct, 1e-8 * CLEARANCE)
     assert continued.iterations < direct.iterations
