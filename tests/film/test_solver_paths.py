@@ -241,12 +241,12 @@ def test_a_refined_trial_is_the_reference_solution_without_a_factorisation():
         ey=position.ey + step[0], ez=position.ez + step[1], tilt_y=position.tilt_y, tilt_z=position.tilt_z
     )
     guess = evaluation.relative_pressure + np.tensordot(step, d_pressure, axes=1)
-    trial = bearing._evaluate(moved, start=evaluation.solution.cavitated, refine=guess)
+    trial = bearing._evaluate(moved, start=evaluation.solution.cavitated, refine_from=guess)
     assert solver._factor is kept and kept.stencil is evaluation.stencil  # nothing factorised
     reference = _reference(bearing, moved)
     assert np.abs(trial.relative_pressure - reference).max() <= TOLERANCE * np.abs(reference).max()
     bearing._position_response(evaluation)  # the old film's factor again
-    far = bearing._evaluate(moved, start=evaluation.solution.cavitated, refine=np.zeros_like(guess))
+    far = bearing._evaluate(moved, start=evaluation.solution.cavitated, refine_from=np.zeros_like(guess))
     assert np.abs(far.relative_pressure - reference).max() <= TOLERANCE * np.abs(reference).max()
 
 

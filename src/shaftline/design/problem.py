@@ -262,5 +262,4 @@ def evaluate_design(problem: SlopeDesignProblem, x: np.ndarray) -> DesignEvaluat
         attitude_angle=state.attitude_angle,
         load_centre_offset=state.load_centre_offset,
     )
-    status = "contact" if found.contact else ("ok" if found.converged else "not converged")
-    return DesignEvaluation(x, values, status, found.iterations)
+    return DesignEvaluation(x, values, found.status, found.iterations)

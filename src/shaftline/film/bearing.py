@@ -408,6 +408,11 @@ class Equilibrium:
     iterations: int
     residual: float
 
+    @property
+    def status(self) -> str:
+        """``"ok"``, ``"contact"`` (the film reached its floor) or ``"not converged"``."""
+        return "contact" if self.contact else ("ok" if self.converged else "not converged")
+
 
 @dataclass(frozen=True, eq=False)
 class FilmLinearisation:
@@ -787,7 +792,7 @@ class JournalBearing:
         deformation: np.ndarray | None = None,
         chord: CoupledLiner | None = None,
         liner_tolerance: float = LINER_TOLERANCE,
-        refine: np.ndarray | None = None,
+        refine_from: np.ndarray | None = None,
     ) -> _Evaluation:
         """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
         bent journal of :meth:`film_load`); ``tilt_rates`` (rad/s, dy/dx and dz/dx per second)
@@ -799,7 +804,7 @@ class JournalBearing:
         the film and the liner are solved together (:meth:`_evaluate_liner`), from the
         ``deformation`` given (m) or none, its first steps with the Newton matrix ``chord`` of a
         nearby film when given, to ``liner_tolerance`` (max |R| of the liner equation over the
-        clearance). ``refine``, a pressure guess close to the solution (relative,
+        clearance). ``refine_from``, a pressure guess close to the solution (relative,
         dimensionless; rigid bore, Reynolds condition), with ``start`` the set it starts from:
         the solution is iterated from it with the kept factor instead of factorising
         (:meth:`~shaftline.film.reynolds.ReynoldsSolver.solve`)."""
@@ -844,7 +849,7 @@ class JournalBearing:
             return self._evaluate_liner(
                 position, grid, rigid, rate, start, film - rigid, geometry or self.geometry, chord, liner_tolerance
             )
-        solution = solver.solve(stencil, film_nd, self.options.cavitation, start, refine=refine)
+        solution = solver.solve(stencil, film_nd, self.options.cavitation, start, refine_from=refine_from)
         cache.last_cavitated = solution.cavitated
         relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
         surface = (geometry or self.geometry).surface
@@ -1639,8 +1644,8 @@ class JournalBearing:
         self._solver_state().last_deformation = None
         self._solver_state().orderings.clear()
         start_set = self._start_set(initial_cavitated)
-        if start_set is not None or self.options.cavitation != "reynolds":
-            start_pressure = None
+        if start_set is not None:
+            start_pressure = None  # the caller's set comes first
         evaluation, started = self._start_evaluation(position, start_set, start_pressure)
         residual = evaluation.force + load
         if not started:
@@ -1770,7 +1775,7 @@ class JournalBearing:
                 continue
         evaluation = first.evaluation
         assert evaluation is not None  # raised by _evaluate_liner, which attaches its iterate
-        evaluation.liner_residual = float(first.args[0])
+        evaluation.liner_residual = first.residual
         return evaluation, False
 
     def _retreat(self, position: JournalPosition) -> Iterator[JournalPosition]:
@@ -1937,7 +1942,7 @@ class JournalBearing:
 
     def _coarse_equilibrium(
         self, load_y: float, load_z: float, tilt_y: float, tilt_z: float
-    ) -> tuple[JournalPosition, np.ndarray | None] | None:
+    ) -> tuple[JournalPosition, np.ndarray] | None:
         """Equilibrium position on the grid halved in both directions (grid continuation) and
         its pressure brought onto this grid (relative, dimensionless: the start of the first
         film solution's active set), or None on a grid below :data:`CONTINUATION_NODES`
@@ -1971,8 +1976,7 @@ class JournalBearing:
         # columns are the fine solver's coarse grid's (CoarseGrid: every other column, rows
         # evenly from edge to edge).
         grid = cache.reynolds.coarse_grid()
-        if grid is None or grid.solver.shape != relative.shape:
-            return coarse.state.position, None
+        assert grid is not None and grid.solver.shape == relative.shape  # both coarse_shape's
         return coarse.state.position, grid.prolong(relative)
 
     def _rigid_equilibrium(self, load_y: float, load_z: float, tilt_y: float, tilt_z: float) -> JournalPosition | None:
@@ -2063,7 +2067,7 @@ class JournalBearing:
                 start, guess = self._predicted_cavitation(evaluation, response, alpha * step)
                 if refine and guess is not None:
                     trial = self._evaluate(
-                        self._moved(position, alpha * step), start=evaluation.solution.cavitated, refine=guess
+                        self._moved(position, alpha * step), start=evaluation.solution.cavitated, refine_from=guess
                     )
                 else:
                     trial = self._evaluate(

@@ -91,7 +91,7 @@ NESTED_SWING = 0.02
 #: factorisation) cost less than a factorisation up to about four nodes.
 SWITCH_MAX_NODES = 3
 PCG_TOLERANCE = 1e-9
-#: Energy-norm share to which a refined solution (:meth:`ReynoldsSolver.solve` with ``refine``)
+#: Energy-norm share to which a refined solution (:meth:`ReynoldsSolver.solve` with ``refine_from``)
 #: is iterated: near the rounding of a direct solve (its pressures agree with the factor's to
 #: about 1e-12 of the peak), so that it stands for that set's solution.
 REFINE_TOLERANCE = 1e-13
@@ -551,11 +551,11 @@ class ReynoldsSolver:
         film: np.ndarray,
         cavitation: Cavitation = "reynolds",
         initial_cavitated: np.ndarray | None = None,
-        refine: np.ndarray | None = None,
+        refine_from: np.ndarray | None = None,
     ) -> ReynoldsSolution:
         """Solve with the chosen cavitation model; ``initial_cavitated`` warm-starts the active set.
 
-        ``refine`` (Reynolds condition only), a pressure guess (nz, nt) close to the solution
+        ``refine_from`` (Reynolds condition only), a pressure guess (nz, nt) close to the solution
         (a short Newton step's ``P + dP``): the active set's solves then iterate from it by
         conjugate gradients preconditioned by the kept factor (that of the nearby film), to
         :data:`REFINE_TOLERANCE`, instead of factorising this film's matrix.
@@ -569,7 +569,7 @@ class ReynoldsSolver:
             from shaftline.film.jfo import solve_jfo
 
             return solve_jfo(self, stencil, film, initial_cavitated)
-        reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film, refine=refine)
+        reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film, refine_from=refine_from)
         if cavitation == "reynolds":
             return _MarchedSolution(reynolds.pressure, reynolds.cavitated, reynolds.iterations, film)
         raise ValueError(f"unknown cavitation model {cavitation!r}")
@@ -643,7 +643,7 @@ class ReynoldsSolver:
         initial_cavitated: np.ndarray | None,
         film: np.ndarray | None = None,
         exact: bool = True,
-        refine: np.ndarray | None = None,
+        refine_from: np.ndarray | None = None,
     ) -> ReynoldsSolution:
         """Primal-dual active set (Hintermueller, Ito & Kunisch 2002) for the Reynolds LCP.
 
@@ -651,7 +651,7 @@ class ReynoldsSolver:
         by the kept factor where they converge); once the set has settled, its pressures are
         solved again with the factor of that set (``exact``), so that the result depends only
         on the film and the set, which is unique, not on the start or the path. The coarse
-        grids that only predict the set skip that last solve. With ``refine`` (a pressure guess,
+        grids that only predict the set skip that last solve. With ``refine_from`` (a pressure guess,
         see :meth:`solve`) every set is solved iteratively to :data:`REFINE_TOLERANCE`.
         """
         iterations = 0
@@ -664,12 +664,12 @@ class ReynoldsSolver:
         else:
             cavitated = initial_cavitated & ~self.fixed
         scale = 1.0
-        guess = refine
+        guess = refine_from
         values = np.where(self.fixed, self.fixed_pressure, 0.0)
         direct = False
         for _ in range(MAX_ACTIVE_SET_ITERATIONS):
             held = self.fixed | cavitated
-            pressure = self._solve_masked(stencil, held, values, guess, direct=direct, refine=refine is not None)
+            pressure = self._solve_masked(stencil, held, values, guess, direct=direct, refine=refine_from is not None)
             guess = pressure
             iterations += 1
             scale = max(float(np.abs(pressure).max()), 1e-300)
@@ -678,7 +678,7 @@ class ReynoldsSolver:
             leave = cavitated & (multiplier < -1e-12 * rhs_scale)
             enter = ~held & (pressure < -1e-12 * scale)
             if not leave.any() and not enter.any():
-                if exact and refine is None and not self._is_factored(stencil, held):
+                if exact and refine_from is None and not self._is_factored(stencil, held):
                     # Settled on an iterative solution: solve once more with this set's factor
                     # (and check it again) so that the result does not depend on the path.
                     direct = True

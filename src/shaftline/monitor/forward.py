@@ -392,13 +392,12 @@ def equilibrium_line(case: RigCase, speed: float) -> RigEquilibrium:
     state = result.state
     position = state.position
     arm = stations - 0.5 * case.layout.length
-    status = "contact" if result.contact else ("ok" if result.converged else "not converged")
     return RigEquilibrium(
         speed,
         stations,
         position.ey + case.misalignment * arm + bend,
         position.ez + position.tilt_z * arm,
-        status,
+        result.status,
         float(result.residual) / case.load,
         float(state.min_film_thickness),
         float(state.max_liner_deformation),
