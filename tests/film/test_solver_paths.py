@@ -266,3 +266,125 @@ def test_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium(
     assert direct.converged and not direct.contact
     _assert_same_equilibrium(continued, direct, 1e-8 * CLEARANCE)
     assert continued.iterations < direct.iterations
+
+
+def _two_nodes_off(solver, cavitated: np.ndarray) -> np.ndarray:
+    """``cavitated`` with two of its nodes next to the pressurised film made free: a start set
+    two nodes short of the settled one (their pressures go negative when solved)."""
+    free = ~(solver.fixed | cavitated)
+    beside = cavitated & (np.roll(free, 1, axis=1) | np.roll(free, -1, axis=1))
+    rows, columns = np.nonzero(beside)
+    middle = np.argsort(np.abs(rows - cavitated.shape[0] // 2))[:2]  # mid-length: well inside the film
+    out = cavitated.copy()
+    out[rows[middle], columns[middle]] = False
+    return out
+
+
+def test_an_unsettled_iterate_is_finished_by_its_own_factor():
+    """``settle=False`` (film/reynolds.py ``UNSETTLED_MAX_NODES``, the Newton iterates far from the
+    equilibrium) stops at a set two nodes short of settling: its pressure is that set's, clipped
+    at zero, and is marked unsettled; its force is within 1e-4 of the settled one's (the two
+    nodes sit on the cavitation boundary, where P is small). Finishing it on its own stencil
+    (``_settled_set``) must reach the reference LCP solution to the module's tolerance with the
+    kept factor and a low-rank update (no new factorisation)."""
+    bearing = make_bearing(1.0, axial_nodes=41, circumferential_nodes=144)
+    position = JournalPosition.from_polar(0.6 * CLEARANCE, np.pi, tilt_y=4e-4)
+    settled = bearing._evaluate(position, warm=False)
+    solver = bearing._solver_state().reynolds
+    start = _two_nodes_off(solver, settled.solution.cavitated)
+    loose = bearing._evaluate(position, start=start, settle=False)
+    assert not loose.solution.settled
+    np.testing.assert_array_equal(loose.solution.cavitated, start)
+    assert loose.solution.pressure.min() >= 0.0
+    scale = float(np.hypot(*settled.force))
+    assert 0.0 < float(np.hypot(*(loose.force - settled.force))) < 1e-4 * scale
+    factor = solver._factor
+    finished = bearing._settled_set(loose)
+    assert finished.solution.settled
+    assert solver._factor is factor and factor.correction is not None  # switched, not factorised
+    reference = _reference(bearing, position)
+    assert np.abs(finished.relative_pressure - reference).max() <= TOLERANCE * np.abs(reference).max()
+    np.testing.assert_array_equal(finished.solution.cavitated, settled.solution.cavitated)
+    assert bearing._settled_set(finished) is finished
+
+
+def test_equilibrium_through_unsettled_iterates_ends_on_the_exact_solution(monkeypatch):
+    """The equilibrium's Newton iterates may leave their sets unsettled; its answer may not. With
+    a start set two nodes off (``initial_cavitated``) and on the continued 80 x 72 grid, the
+    equilibrium must (a) pass through unsettled iterates, (b) end on the reference LCP solution at
+    its own position to the module's tolerance, and (c) land where the equilibrium with every
+    iterate settled (``UNSETTLED_MAX_NODES = 0``) lands: positions to 1e-8 of the clearance and
+    pressures to 1e-6 of the peak (both converge to a force tolerance of 1e-10 of the load; see
+    ``test_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium``)."""
+    import shaftline.film.reynolds as reynolds
+
+    bearing = make_bearing(1.0, axial_nodes=80, circumferential_nodes=72, tolerance=1e-10)
+    load, tilt_y = -6e3, 4e-4
+    solver = bearing._solver_state().reynolds
+    solutions = []
+    solve = solver.solve
+
+    def recording(*args, **options):
+        solution = solve(*args, **options)
+        solutions.append(solution)
+        return solution
+
+    monkeypatch.setattr(solver, "solve", recording)
+    loose = bearing.equilibrium(load, tilt_y=tilt_y)
+    assert any(not s.settled for s in solutions) and solutions[-1].settled
+    reference = _reference(bearing, loose.state.position)
+    assert _relative(bearing, loose.state.pressure, reference) <= TOLERANCE
+    start = _two_nodes_off(solver, loose.state.cavitated)
+    solutions.clear()
+    from_set = bearing.equilibrium(load, tilt_y=tilt_y, initial=loose.state.position, initial_cavitated=start)
+    assert not solutions[0].settled and solutions[-1].settled
+    reference = _reference(bearing, from_set.state.position)
+    assert _relative(bearing, from_set.state.pressure, reference) <= TOLERANCE
+    monkeypatch.setattr(reynolds, "UNSETTLED_MAX_NODES", 0)
+    solutions.clear()
+    settled = bearing.equilibrium(load, tilt_y=tilt_y)
+    assert all(s.settled for s in solutions)
+    _assert_same_equilibrium(loose, settled, 1e-8 * CLEARANCE)
+    _assert_same_equilibrium(from_set, settled, 1e-8 * CLEARANCE)
+
+
+def test_an_equilibrium_never_reports_an_unsettled_set():
+    """The two ways an equilibrium can end on an unsettled iterate: (a) one already within the
+    force tolerance (here 1e-3 of the load, from the converged position with a start set two
+    nodes off: its force is within 1e-4 of the load) is settled and checked again, no Newton
+    step taken; (b) one left when the iterations run out (``max_iterations = 1`` from the
+    closed-form start, whose trial stops two or three nodes short here) is settled before the
+    state is built. Both states must carry the reference LCP solution at their positions to
+    the module's tolerance."""
+    load, tilt_y = -3e3, 4e-4
+    exact = make_bearing(1.0, axial_nodes=80, circumferential_nodes=72).equilibrium(load, tilt_y=tilt_y)
+    for options, start in (
+        ({"tolerance": 1e-3}, "converged"),
+        ({"tolerance": 1e-10, "max_iterations": 1}, "closed form"),
+    ):
+        bearing = make_bearing(1.0, axial_nodes=80, circumferential_nodes=72, **options)
+        solver = bearing._solver_state().reynolds
+        settled = []
+        solve = solver.solve
+
+        def recording(*args, _solve=solve, _settled=settled, **keywords):
+            solution = _solve(*args, **keywords)
+            _settled.append(solution.settled)
+            return solution
+
+        solver.solve = recording
+        if start == "converged":
+            result = bearing.equilibrium(
+                load,
+                tilt_y=tilt_y,
+                initial=exact.state.position,
+                initial_cavitated=_two_nodes_off(solver, exact.state.cavitated),
+            )
+            assert result.converged and result.iterations == 0
+        else:
+            initial = bearing._initial_position(np.array([load, 0.0]), tilt_y, 0.0)
+            result = bearing.equilibrium(load, tilt_y=tilt_y, initial=initial)
+            assert not result.converged and result.iterations == 1
+        assert settled[-2:] == [False, True], (start, settled)
+        reference = _reference(bearing, result.state.position)
+        assert _relative(bearing, result.state.pressure, reference) <= TOLERANCE

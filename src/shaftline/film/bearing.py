@@ -793,6 +793,7 @@ class JournalBearing:
         chord: CoupledLiner | None = None,
         liner_tolerance: float = LINER_TOLERANCE,
         refine_from: np.ndarray | None = None,
+        settle: bool = True,
     ) -> _Evaluation:
         """The film solution at ``position`` (with ``geometry`` in place of the bearing's, e.g. a
         bent journal of :meth:`film_load`); ``tilt_rates`` (rad/s, dy/dx and dz/dx per second)
@@ -807,7 +808,9 @@ class JournalBearing:
         clearance). ``refine_from``, a pressure guess close to the solution (relative,
         dimensionless; rigid bore, Reynolds condition), with ``start`` the set it starts from:
         the solution is iterated from it with the kept factor instead of factorising
-        (:meth:`~shaftline.film.reynolds.ReynoldsSolver.solve`)."""
+        (:meth:`~shaftline.film.reynolds.ReynoldsSolver.solve`). ``settle=False`` (rigid bore,
+        Reynolds condition): its active set may stop a few nodes short of settling, as a Newton
+        iterate far from the equilibrium may (:meth:`_settled_set` finishes it)."""
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(geometry or self.geometry, grid, position)
@@ -849,13 +852,29 @@ class JournalBearing:
             return self._evaluate_liner(
                 position, grid, rigid, rate, start, film - rigid, geometry or self.geometry, chord, liner_tolerance
             )
-        solution = solver.solve(stencil, film_nd, self.options.cavitation, start, refine_from=refine_from)
+        solution = solver.solve(
+            stencil, film_nd, self.options.cavitation, start, refine_from=refine_from, settle=settle
+        )
         cache.last_cavitated = solution.cavitated
         relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
         surface = (geometry or self.geometry).surface
         contact = None if surface is None else asperity_pressure(surface, film)
         force = self._integrate_force(grid, relative, contact=contact)
         return _Evaluation(position, grid, film, stencil, solution, relative, force, rate, contact)
+
+    def _settled_set(self, evaluation: _Evaluation) -> _Evaluation:
+        """``evaluation`` with its active set settled (itself when it is): the solve continues
+        from its set on its own stencil, so the kept factor of that set and film carries the
+        last switch as a low-rank update (rigid bore; see :meth:`_evaluate`, ``settle``)."""
+        if evaluation.solution.settled:
+            return evaluation
+        solver = self._solver_state().reynolds
+        film_nd = evaluation.film / self.geometry.radial_clearance
+        solution = solver.solve(evaluation.stencil, film_nd, self.options.cavitation, evaluation.solution.cavitated)
+        self._solver_state().last_cavitated = solution.cavitated
+        relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
+        force = self._integrate_force(evaluation.grid, relative, contact=evaluation.contact)
+        return replace(evaluation, solution=solution, relative_pressure=relative, force=force)
 
     def _evaluate_liner(
         self,
@@ -1646,7 +1665,10 @@ class JournalBearing:
         start_set = self._start_set(initial_cavitated)
         if start_set is not None:
             start_pressure = None  # the caller's set comes first
-        evaluation, started = self._start_evaluation(position, start_set, start_pressure)
+        # A smooth rigid bore's Newton iterates far from the equilibrium leave their active sets a
+        # few nodes short of settling (docs/theory.md Sect. 4.1): the converged one is settled.
+        loose = self.geometry.liner is None and self.geometry.surface is None and self.options.cavitation == "reynolds"
+        evaluation, started = self._start_evaluation(position, start_set, start_pressure, settle=not loose)
         residual = evaluation.force + load
         if not started:
             # No position of the retreat settles the film-liner iteration: the start itself,
@@ -1685,7 +1707,11 @@ class JournalBearing:
                 residual = evaluation.force + load
                 continue
             if norm <= tolerance:
-                break
+                if evaluation.solution.settled:
+                    break
+                evaluation = self._settled_set(evaluation)
+                residual = evaluation.force + load
+                continue
             iterations += 1
             borrowed = evaluation.liner_system is None and norm > NEARBY_JACOBIAN * magnitude
             if borrowed:
@@ -1701,7 +1727,7 @@ class JournalBearing:
             refine = refinable and norm <= REFINE_RESIDUAL * magnitude
             for step, sufficient in self._candidate_steps(jacobian, residual, load, c):
                 accepted = self._line_search(
-                    evaluation, (d_residual, d_pressure), step, load, norm, floor, sufficient, inexact, refine
+                    evaluation, (d_residual, d_pressure), step, load, norm, floor, sufficient, inexact, refine, loose
                 )
                 if accepted is not None:
                     break
@@ -1741,6 +1767,9 @@ class JournalBearing:
                     break
         if evaluation.liner_system is evaluation.nearby_system:
             evaluation.liner_system = None  # the state's derivatives are the exact ones
+        if not evaluation.solution.settled:  # stopped before converging (contact, a stall)
+            evaluation = self._settled_set(evaluation)
+            residual = evaluation.force + load
         residual_norm = float(np.hypot(*residual))
         converged = residual_norm <= tolerance and not unsettled
         state = self._state(evaluation, load=load)
@@ -1751,7 +1780,11 @@ class JournalBearing:
         return Equilibrium(state, load_y, load_z, converged, contact, iterations, residual_norm)
 
     def _start_evaluation(
-        self, position: JournalPosition, start: np.ndarray | None, start_pressure: np.ndarray | None = None
+        self,
+        position: JournalPosition,
+        start: np.ndarray | None,
+        start_pressure: np.ndarray | None = None,
+        settle: bool = True,
     ) -> tuple[_Evaluation, bool]:
         """The equilibrium's first film solution, at ``position`` or, where an elastic liner's
         film-liner iteration does not settle there, at the first position of :meth:`_retreat`
@@ -1765,7 +1798,7 @@ class JournalBearing:
         takes it down to the equilibrium, with its line search rejecting trials that do not
         settle (docs/theory.md, "Starting a lined equilibrium")."""
         try:
-            return self._evaluate(position, start=start, start_pressure=start_pressure), True
+            return self._evaluate(position, start=start, start_pressure=start_pressure, settle=settle), True
         except LinerConvergenceError as failure:
             first = failure
         for lifted in self._retreat(position):
@@ -2029,6 +2062,7 @@ class JournalBearing:
         sufficient: float,
         liner_tolerance: float = LINER_TOLERANCE,
         refine: bool = False,
+        loose: bool = False,
     ) -> _Evaluation | None:
         """Backtracking that keeps the film above the floor and lowers the force residual
         (by the Armijo share ``sufficient * alpha`` for a Newton step, at all for a fallback).
@@ -2037,7 +2071,7 @@ class JournalBearing:
         evaluation's ``response`` (the residual and pressure changes per metre of ey and ez of
         :meth:`_position_response`; see :meth:`_predicted_cavitation`); with ``refine`` each
         trial starts from the evaluation's set and iterates its pressure from that guess
-        (:meth:`_evaluate`)."""
+        (:meth:`_evaluate`), otherwise with ``loose`` its set may stop short of settling."""
         position = evaluation.position
         lined = evaluation.deformation is not None
         hmin_now = float(evaluation.film.min()) if lined else self.min_film(position)
@@ -2077,6 +2111,7 @@ class JournalBearing:
                         deformation=self._predicted_deformation(evaluation, response, alpha * step),
                         chord=evaluation.liner_system,
                         liner_tolerance=liner_tolerance,
+                        settle=not loose,
                     )
             except (_NegativeFilm, LinerConvergenceError):
                 alpha *= 0.5

@@ -34,7 +34,7 @@ All pressures here are dimensionless and measured from the cavitation pressure.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
@@ -90,6 +90,10 @@ NESTED_SWING = 0.02
 #: its 2k triangular solves (0.35 ms a node on 100 x 60, against 1.6 ms for the numeric
 #: factorisation) cost less than a factorisation up to about four nodes.
 SWITCH_MAX_NODES = 3
+#: A solution asked for with ``settle=False`` (:meth:`ReynoldsSolver.solve`) stops at the first
+#: trial set that leaves at most this many nodes on the wrong side of the complementarity
+#: conditions: the pressure of that set, clipped at zero.
+UNSETTLED_MAX_NODES = SWITCH_MAX_NODES
 PCG_TOLERANCE = 1e-9
 #: Energy-norm share to which a refined solution (:meth:`ReynoldsSolver.solve` with ``refine_from``)
 #: is iterated: near the rounding of a direct solve (its pressures agree with the factor's to
@@ -284,22 +288,28 @@ class ReynoldsSolution:
         Active-set iterations used: linear solves of trial sets (factorisations, or on
         fine grids conjugate-gradient solves), the final solve with the settled set's
         factor included.
+    settled : bool
+        False for a solution left on a set a few nodes from the final one (a Newton iterate
+        solved with ``settle=False``, :meth:`ReynoldsSolver.solve`); True otherwise.
     """
 
     pressure: np.ndarray
     film_fraction: np.ndarray
     cavitated: np.ndarray
     iterations: int
+    settled: bool = field(default=True, kw_only=True)
 
 
 class _MarchedSolution(ReynoldsSolution):
     """A Reynolds-condition solution whose film fraction is marched (:func:`_marched_film_fraction`)
     when first read: the Newton trials of an equilibrium never read it, only its final state."""
 
-    def __init__(self, pressure: np.ndarray, cavitated: np.ndarray, iterations: int, film: np.ndarray) -> None:
+    def __init__(
+        self, pressure: np.ndarray, cavitated: np.ndarray, iterations: int, film: np.ndarray, settled: bool = True
+    ) -> None:
         self._film = film
         self._fraction: np.ndarray | None = None
-        super().__init__(pressure, None, cavitated, iterations)  # type: ignore[arg-type]
+        super().__init__(pressure, None, cavitated, iterations, settled=settled)  # type: ignore[arg-type]
 
     @property
     def film_fraction(self) -> np.ndarray:
@@ -552,6 +562,7 @@ class ReynoldsSolver:
         cavitation: Cavitation = "reynolds",
         initial_cavitated: np.ndarray | None = None,
         refine_from: np.ndarray | None = None,
+        settle: bool = True,
     ) -> ReynoldsSolution:
         """Solve with the chosen cavitation model; ``initial_cavitated`` warm-starts the active set.
 
@@ -559,6 +570,13 @@ class ReynoldsSolver:
         (a short Newton step's ``P + dP``): the active set's solves then iterate from it by
         conjugate gradients preconditioned by the kept factor (that of the nearby film), to
         :data:`REFINE_TOLERANCE`, instead of factorising this film's matrix.
+
+        ``settle=False`` (Reynolds condition only): stop at the first trial set within
+        :data:`UNSETTLED_MAX_NODES` nodes of settling, the solution marked ``settled=False``: an
+        iterate of a Newton iteration far from its root, whose step moves the force by far more
+        than those nodes do, need not pay for the last set switch (a low-rank update of the
+        factor, about half a factorisation). Solving again from its set with the same
+        ``stencil`` finishes it with that update (docs/theory.md Sect. 4.1).
         """
         if cavitation == "half_sommerfeld":
             pressure = np.maximum(self.solve_linear(stencil), 0.0)
@@ -569,9 +587,9 @@ class ReynoldsSolver:
             from shaftline.film.jfo import solve_jfo
 
             return solve_jfo(self, stencil, film, initial_cavitated)
-        reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film, refine_from=refine_from)
+        reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film, refine_from=refine_from, settle=settle)
         if cavitation == "reynolds":
-            return _MarchedSolution(reynolds.pressure, reynolds.cavitated, reynolds.iterations, film)
+            return _MarchedSolution(reynolds.pressure, reynolds.cavitated, reynolds.iterations, film, reynolds.settled)
         raise ValueError(f"unknown cavitation model {cavitation!r}")
 
     def coarse_grid(self) -> CoarseGrid | None:
@@ -644,6 +662,7 @@ class ReynoldsSolver:
         film: np.ndarray | None = None,
         exact: bool = True,
         refine_from: np.ndarray | None = None,
+        settle: bool = True,
     ) -> ReynoldsSolution:
         """Primal-dual active set (Hintermueller, Ito & Kunisch 2002) for the Reynolds LCP.
 
@@ -652,7 +671,8 @@ class ReynoldsSolver:
         solved again with the factor of that set (``exact``), so that the result depends only
         on the film and the set, which is unique, not on the start or the path. The coarse
         grids that only predict the set skip that last solve. With ``refine_from`` (a pressure guess,
-        see :meth:`solve`) every set is solved iteratively to :data:`REFINE_TOLERANCE`.
+        see :meth:`solve`) every set is solved iteratively to :data:`REFINE_TOLERANCE`; with
+        ``settle=False`` it may stop a few nodes short of settling (see :meth:`solve`).
         """
         iterations = 0
         if initial_cavitated is None and film is not None and stencil.rhs.shape == film.shape:
@@ -685,6 +705,9 @@ class ReynoldsSolver:
                     continue
                 pressure = np.where(cavitated, 0.0, pressure)
                 return ReynoldsSolution(pressure, np.ones_like(pressure), cavitated, iterations)
+            if not settle and int(np.count_nonzero(leave | enter)) <= UNSETTLED_MAX_NODES:
+                pressure = np.maximum(np.where(cavitated, 0.0, pressure), 0.0)
+                return ReynoldsSolution(pressure, np.ones_like(pressure), cavitated, iterations, settled=False)
             cavitated = (cavitated & ~leave) | enter
         raise ReynoldsConvergenceError("Reynolds-condition active set did not settle")
 
