@@ -555,6 +555,20 @@ class _Evaluation:
     shortened: bool = False  # a line-search trial reached by a step its residual test shortened
 
 
+@dataclass
+class _Found:
+    """Where :meth:`JournalBearing._find_equilibrium` ended: its last film solution, whether it
+    converged or met the film floor, its Newton iterations and force residual (N), and whether
+    its first film solution settled (a lined start that did not is reported as it is)."""
+
+    evaluation: _Evaluation
+    converged: bool
+    contact: bool
+    iterations: int
+    residual: float
+    started: bool = True
+
+
 class _SolverState:
     """What a bearing builds from its problem to solve it, in one process.
 
@@ -1637,6 +1651,30 @@ class JournalBearing:
         magnitude = float(np.hypot(*load))
         if magnitude == 0.0:
             raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
+        found = self._find_equilibrium(load, tilt_y, tilt_z, initial, progress, initial_cavitated)
+        state = self._state(found.evaluation, load=load)
+        contact = found.contact
+        if found.started and not found.converged and self._at_floor(state.min_film_thickness):
+            contact = True
+        if contact:
+            state = replace(state, contact=True)
+        return Equilibrium(state, load_y, load_z, found.converged, contact, found.iterations, found.residual)
+
+    def _find_equilibrium(
+        self,
+        load: np.ndarray,
+        tilt_y: float,
+        tilt_z: float,
+        initial: JournalPosition | None = None,
+        progress: Callable[[int, float], None] | None = None,
+        initial_cavitated: np.ndarray | None = None,
+    ) -> _Found:
+        """The iteration of :meth:`equilibrium` (its arguments checked, ``load`` (2,) N) up to its
+        last film solution, without the state: the coarse grid's and the rigid bore's equilibria,
+        which only start another, need no more (the state's extremes, flows and friction cost a
+        film solution's worth on a small grid)."""
+        load_y, load_z = float(load[0]), float(load[1])
+        magnitude = float(np.hypot(*load))
         c = self.geometry.radial_clearance
         floor = self._film_floor()
         start_pressure = None
@@ -1673,8 +1711,7 @@ class JournalBearing:
         if not started:
             # No position of the retreat settles the film-liner iteration: the start itself,
             # its liner as the iteration left it, reported as not converged.
-            state = self._state(evaluation, load=load)
-            return Equilibrium(state, load_y, load_z, False, False, 0, float(np.hypot(*residual)))
+            return _Found(evaluation, False, False, 0, float(np.hypot(*residual)), started=False)
         contact = False
         iterations = 0
         # A liner carries any load by deforming (the journal may pass the rigid bore surface):
@@ -1772,12 +1809,7 @@ class JournalBearing:
             residual = evaluation.force + load
         residual_norm = float(np.hypot(*residual))
         converged = residual_norm <= tolerance and not unsettled
-        state = self._state(evaluation, load=load)
-        if not converged and self._at_floor(state.min_film_thickness):
-            contact = True
-        if contact:
-            state = replace(state, contact=True)
-        return Equilibrium(state, load_y, load_z, converged, contact, iterations, residual_norm)
+        return _Found(evaluation, converged, contact, iterations, residual_norm)
 
     def _start_evaluation(
         self,
@@ -2001,16 +2033,16 @@ class JournalBearing:
                 tolerance=max(options.tolerance, coarse_tolerance),
             )
             cache.coarse_bearing = JournalBearing(self.geometry, self.operating, coarse_options)
-        coarse = cache.coarse_bearing.equilibrium(load_y, load_z, tilt_y=tilt_y, tilt_z=tilt_z)
+        coarse = cache.coarse_bearing._find_equilibrium(np.array([load_y, load_z]), tilt_y, tilt_z)
         if not coarse.converged or coarse.contact:
             return None
-        relative = (coarse.state.pressure - self.operating.cavitation_pressure) / self.pressure_scale
+        relative = coarse.evaluation.relative_pressure
         # Both grids start at the same angle at the same position, so the coarse rows and
         # columns are the fine solver's coarse grid's (CoarseGrid: every other column, rows
         # evenly from edge to edge).
         grid = cache.reynolds.coarse_grid()
         assert grid is not None and grid.solver.shape == relative.shape  # both coarse_shape's
-        return coarse.state.position, grid.prolong(relative)
+        return coarse.evaluation.position, grid.prolong(relative)
 
     def _rigid_equilibrium(self, load_y: float, load_z: float, tilt_y: float, tilt_z: float) -> JournalPosition | None:
         """Equilibrium position of the same bearing with a rigid bore (the liner left out), or
@@ -2027,12 +2059,12 @@ class JournalBearing:
             options = replace(self.options, tolerance=max(self.options.tolerance, OTHER_START_TOLERANCE))
             cache.rigid_bearing = JournalBearing(replace(self.geometry, liner=None), self.operating, options)
         try:
-            rigid = cache.rigid_bearing.equilibrium(load_y, load_z, tilt_y=tilt_y, tilt_z=tilt_z)
+            rigid = cache.rigid_bearing._find_equilibrium(np.array([load_y, load_z]), tilt_y, tilt_z)
         except SolverFailure:
             return None
         if not rigid.converged or rigid.contact:
             return None
-        return rigid.state.position
+        return rigid.evaluation.position
 
     def _moved(self, position: JournalPosition, step: np.ndarray) -> JournalPosition:
         return replace(position, ey=position.ey + float(step[0]), ez=position.ez + float(step[1]))
