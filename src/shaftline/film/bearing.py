@@ -879,7 +879,7 @@ class JournalBearing:
     def _settled_set(self, evaluation: _Evaluation) -> _Evaluation:
         """``evaluation`` with its active set settled (itself when it is): the solve continues
         from its set on its own stencil, so the kept factor of that set and film carries the
-        last switch as a low-rank update (rigid bore; see :meth:`_evaluate`, ``settle``)."""
+        last switch as a bordered update (rigid bore; see :meth:`_evaluate`, ``settle``)."""
         if evaluation.solution.settled:
             return evaluation
         solver = self._solver_state().reynolds

@@ -574,7 +574,7 @@ class ReynoldsSolver:
         ``settle=False`` (Reynolds condition only): stop at the first trial set within
         :data:`UNSETTLED_MAX_NODES` nodes of settling, the solution marked ``settled=False``: an
         iterate of a Newton iteration far from its root, whose step moves the force by far more
-        than those nodes do, need not pay for the last set switch (a low-rank update of the
+        than those nodes do, need not pay for the last set switch (a bordered update of the
         factor, about half a factorisation). Solving again from its set with the same
         ``stencil`` finishes it with that update (docs/theory.md Sect. 4.1).
         """
