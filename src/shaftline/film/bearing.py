@@ -1219,11 +1219,11 @@ class JournalBearing:
         pressure = self._gauge(relative) if gauge else relative * self.pressure_scale
         if contact is not None:
             pressure = pressure + contact
-        weighted = pressure * self._solver_state().area_weights
+        # Per-column sums first (one product with the area weights): the film force is
+        # computed at every trial and derivative, and this is its cheapest form.
+        per_column = self._solver_state().area_weights[:, 0] @ pressure
         theta = grid.theta
-        fy = -np.sum(weighted * np.cos(theta)[None, :])
-        fz = -self.geometry.rotation * np.sum(weighted * np.sin(theta)[None, :])
-        return np.array([fy, fz])
+        return np.array([-(per_column @ np.cos(theta)), -self.geometry.rotation * (per_column @ np.sin(theta))])
 
     def _integrate_moment(
         self, grid: Grid, relative: np.ndarray, gauge: bool = True, contact: np.ndarray | None = None
@@ -2106,7 +2106,7 @@ class JournalBearing:
         (:meth:`_evaluate`), otherwise with ``loose`` its set may stop short of settling."""
         position = evaluation.position
         lined = evaluation.deformation is not None
-        hmin_now = float(evaluation.film.min()) if lined else self.min_film(position)
+        hmin_now = float(evaluation.film.min())  # rigid: the film at ``position``; lined: with its liner
         alpha = 1.0
         approach = self._approach_floor()
         if approach > floor and hmin_now > 2.0 * approach:

@@ -22,6 +22,7 @@ docs/theory.md for why the slope term is not tied to the attitude angle.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any, Literal, get_args
 
 import numpy as np
@@ -326,15 +327,17 @@ class Grid:
         require_nodes("axial_nodes", self.axial_nodes, MIN_AXIAL_NODES)
         require_nodes("circumferential_nodes", self.circumferential_nodes, MIN_CIRCUMFERENTIAL_NODES)
 
-    @property
+    # Kept on the instance, read-only: a bearing's grid is asked for its nodes at every film
+    # solution (about twenty per equilibrium), and building them cost more than using them.
+    @cached_property
     def theta(self) -> np.ndarray:
-        """Node angles, rad, shape (circumferential_nodes,)."""
-        return self.theta_start + np.arange(self.circumferential_nodes) * self.d_theta
+        """Node angles, rad, shape (circumferential_nodes,); read-only."""
+        return _read_only(self.theta_start + np.arange(self.circumferential_nodes) * self.d_theta)
 
-    @property
+    @cached_property
     def z(self) -> np.ndarray:
-        """Axial node stations from the aft edge, m, shape (axial_nodes,)."""
-        return np.linspace(0.0, self.length, self.axial_nodes)
+        """Axial node stations from the aft edge, m, shape (axial_nodes,); read-only."""
+        return _read_only(np.linspace(0.0, self.length, self.axial_nodes))
 
     @property
     def d_theta(self) -> float:
@@ -350,6 +353,11 @@ class Grid:
     def shape(self) -> tuple[int, int]:
         """(axial_nodes, circumferential_nodes): fields are indexed [z, theta]."""
         return (self.axial_nodes, self.circumferential_nodes)
+
+
+def _read_only(values: np.ndarray) -> np.ndarray:
+    values.flags.writeable = False
+    return values
 
 
 def coarse_shape(shape: tuple[int, int]) -> tuple[int, int] | None:
