@@ -622,7 +622,10 @@ class ReynoldsSolver:
         # A Newton trial's pressure guess, restricted and swept on the coarse grid, starts the
         # coarse set there: two coarse solves instead of the coarser grids' cold chain.
         start_c = None if guess is None else solver.predicted_set(stencil_c, coarse.restrict(guess))
-        solution = solver._solve_reynolds_lcp(stencil_c, start_c, film_c, exact=False)
+        # Only a prediction: a coarse set a few nodes short of settling predicts the fine one as
+        # well (the sweeps below correct a node or two), without the coarse grids' last switch
+        # (NTUA 100 x 60 cold solution: 10 -> 7 factorisations, 8 % faster).
+        solution = solver._solve_reynolds_lcp(stencil_c, start_c, film_c, exact=False, settle=False)
         self.coarse_iterations = solution.iterations
         diag = stencil_diagonal(stencil_c)
         multiplier = apply_operator(stencil_c.c_theta, stencil_c.c_z, solution.pressure) - stencil_c.rhs
