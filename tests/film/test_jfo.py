@@ -191,3 +191,57 @@ def test_damping_matches_central_differences(jfo_bearing):
         columns.append([(up.force_y - down.force_y) / (2 * h), (up.force_z - down.force_z) / (2 * h)])
     differences = np.array(columns).T
     assert np.abs(exact - differences).max() <= 1e-6 * np.abs(differences).max()
+
+
+def test_an_unsettled_jfo_solution_finishes_on_the_settled_one(jfo_bearing):
+    """``settle=False`` (a Newton iterate far from the equilibrium, a coarse grid's prediction)
+    stops a JFO solve started two nodes off at that set: pressure and void fraction clipped at
+    zero, marked unsettled, the force within 1e-3 of the settled one's. Finishing it from its
+    own set (the chord-step predictor of its factor leads to the next set) must give the cold
+    solution to 1e-9, as any JFO start does (``test_warm_start_gives_the_cold_solution``)."""
+    position = JournalPosition.from_polar(0.7 * CLEARANCE, np.pi)
+    settled = jfo_bearing._evaluate(position, warm=False)
+    fixed = settled.solution.fixed
+    cavitated = settled.solution.cavitated
+    full = ~(fixed | cavitated)
+    beside = cavitated & np.roll(full, 1, axis=1)  # first cavitated node downstream of the film
+    rows, columns = np.nonzero(beside)
+    middle = np.argsort(np.abs(rows - cavitated.shape[0] // 2))[:2]
+    start = cavitated.copy()
+    start[rows[middle], columns[middle]] = False
+    loose = jfo_bearing._evaluate(position, start=start, settle=False)
+    assert not loose.solution.settled
+    np.testing.assert_array_equal(loose.solution.cavitated, start)
+    assert loose.solution.pressure.min() >= 0.0 and loose.solution.void.min() >= 0.0
+    scale = float(np.hypot(*settled.force))
+    assert 0.0 < float(np.hypot(*(loose.force - settled.force))) < 1e-3 * scale
+    finished = jfo_bearing._settled_set(loose)
+    assert finished.solution.settled
+    np.testing.assert_array_equal(finished.solution.cavitated, cavitated)
+    peak = np.abs(settled.relative_pressure).max()
+    assert np.abs(finished.relative_pressure - settled.relative_pressure).max() <= 1e-9 * peak
+    assert np.abs(finished.solution.void - settled.solution.void).max() <= 1e-9
+
+
+def test_jfo_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium():
+    """Grid continuation of the mass-conserving film (5 000 nodes or more, its fine start set
+    from the coarse JFO unknown, loose iterates far from the root) changes the path, not the
+    answer: on 80 x 72 (5 760 nodes) against the equilibrium started from the closed-form
+    position (``initial``, no coarse grid), both to 1e-10 of the load: positions to 1e-8 of the
+    clearance (as for the Reynolds condition in test_solver_paths.py) and pressures to 1e-6 of
+    the peak; the continued one in fewer fine Newton iterations."""
+    bearing = make_bearing(
+        1.0, cavitation_pressure=-2e4, axial_nodes=80, circumferential_nodes=72, cavitation="jfo", tolerance=1e-10
+    )
+    load, tilt_y = -5e3, 2e-4
+    assert bearing._coarse_equilibrium(load, 0.0, tilt_y, 0.0) is not None  # it does continue
+    continued = bearing.equilibrium(load, tilt_y=tilt_y)
+    closed_form = bearing._initial_position(np.array([load, 0.0]), tilt_y, 0.0)
+    direct = bearing.equilibrium(load, tilt_y=tilt_y, initial=closed_form)
+    for result in (continued, direct):
+        assert result.converged and not result.contact
+    assert abs(continued.state.position.ey - direct.state.position.ey) < 1e-8 * CLEARANCE
+    assert abs(continued.state.position.ez - direct.state.position.ez) < 1e-8 * CLEARANCE
+    peak = np.abs(direct.state.pressure).max()
+    assert np.abs(continued.state.pressure - direct.state.pressure).max() < 1e-6 * peak
+    assert continued.iterations < direct.iterations

@@ -94,9 +94,10 @@ __all__ = [
 #: active set from the coarse pressure. Measured on the NTUA case (misaligned; median of 15,
 #: benchmarks/bench_bearing.py): 80 x 48 the same with and without (16 ms), 100 x 60 17 ms
 #: against 23, 120 x 72 27 against 34, 140 x 84 57 against 111, 200 x 120 91 against 314 (4
-#: fine Newton iterations from the closed-form start, 2 from the coarse equilibrium). A
-#: bearing with a liner, a rough surface or the mass-conserving model keeps the threshold that
-#: its solver paths were tuned with, :data:`CONTINUATION_NODES_OTHER`.
+#: fine Newton iterations from the closed-form start, 2 from the coarse equilibrium). The
+#: mass-conserving model too (NTUA, cavitation pressure -30 kPa, 100 x 60: 89 -> 52 ms, 4 -> 2
+#: fine iterations); a bearing with a liner or a rough surface keeps the threshold that its
+#: solver paths were tuned with, :data:`CONTINUATION_NODES_OTHER`.
 CONTINUATION_NODES = 5_000
 CONTINUATION_NODES_OTHER = 20_000
 #: Force tolerance (share of the load) of that coarse equilibrium: it only places the start.
@@ -116,6 +117,12 @@ OTHER_START_TOLERANCE = 1e-5
 #: factor instead of factorising their own matrix: there the step changes the film by about
 #: that share, so the iteration gains about that factor per step (ReynoldsSolver.solve).
 REFINE_RESIDUAL = 1e-3
+#: Force residual (share of the load) above which a mass-conserving (JFO) Newton trial may leave
+#: its active set a few nodes short of settling (each set costs an LU factorisation there). Such
+#: an iterate's force is off by about 1e-5 of the load, which stalls Newton's quadratic steps
+#: below about 1e-3 (NTUA 100 x 60: 1.1e-3 -> 1.5e-5 -> 2.8e-6 with loose trials throughout):
+#: near the root its trials settle. The Reynolds condition's trials there are refined instead.
+JFO_UNSETTLED_RESIDUAL = 1e-2
 #: Newton iterations in a row that each leave more than ``STALLED_REDUCTION`` of the force
 #: residual, after which a rigid rough bore's equilibrium is given up: as contact when its film
 #: is at the boundary limit (the asperities there cannot carry the rest of the load), as not
@@ -860,6 +867,10 @@ class JournalBearing:
         solver.flow = rough if isinstance(rough, TurbulentFilm) else None
         if start_pressure is not None and self.options.cavitation == "reynolds":
             start = solver.trial_set(stencil, film_nd, start_pressure)
+        elif start_pressure is not None and self.options.cavitation == "jfo":
+            # The coarse JFO unknown (P, or -s where cavitated) changes sign on both cavitation
+            # boundaries: its negative nodes start the set (as the JFO nested start does).
+            start = (start_pressure < 0.0) & ~solver.fixed
         if start is None and warm:
             start = cache.last_cavitated
         if liner is not None:
@@ -1705,7 +1716,8 @@ class JournalBearing:
             start_pressure = None  # the caller's set comes first
         # A smooth rigid bore's Newton iterates far from the equilibrium leave their active sets a
         # few nodes short of settling (docs/theory.md Sect. 4.1): the converged one is settled.
-        loose = self.geometry.liner is None and self.geometry.surface is None and self.options.cavitation == "reynolds"
+        smooth_rigid = self.geometry.liner is None and self.geometry.surface is None
+        loose = smooth_rigid and self.options.cavitation in ("reynolds", "jfo")
         evaluation, started = self._start_evaluation(position, start_set, start_pressure, settle=not loose)
         residual = evaluation.force + load
         if not started:
@@ -1764,7 +1776,16 @@ class JournalBearing:
             refine = refinable and norm <= REFINE_RESIDUAL * magnitude
             for step, sufficient in self._candidate_steps(jacobian, residual, load, c):
                 accepted = self._line_search(
-                    evaluation, (d_residual, d_pressure), step, load, norm, floor, sufficient, inexact, refine, loose
+                    evaluation,
+                    (d_residual, d_pressure),
+                    step,
+                    load,
+                    norm,
+                    floor,
+                    sufficient,
+                    inexact,
+                    refine,
+                    loose and (self.options.cavitation == "reynolds" or norm > JFO_UNSETTLED_RESIDUAL * magnitude),
                 )
                 if accepted is not None:
                     break
@@ -2021,8 +2042,15 @@ class JournalBearing:
         Depends only on the problem and the arguments, as the equilibrium does."""
         options = self.options
         shape = coarse_shape((options.axial_nodes, options.circumferential_nodes))
-        plain = self.geometry.liner is None and self.geometry.surface is None and options.cavitation == "reynolds"
-        threshold = CONTINUATION_NODES if plain else CONTINUATION_NODES_OTHER
+        smooth_rigid = self.geometry.liner is None and self.geometry.surface is None
+        plain = smooth_rigid and options.cavitation == "reynolds"
+        # The mass-conserving film continues from the same grids (its fine start then comes from
+        # the coarse JFO unknown), with the force tolerance its solver paths were tuned with.
+        threshold = (
+            CONTINUATION_NODES
+            if smooth_rigid and options.cavitation in ("reynolds", "jfo")
+            else CONTINUATION_NODES_OTHER
+        )
         coarse_tolerance = CONTINUATION_TOLERANCE if plain else OTHER_START_TOLERANCE
         if options.axial_nodes * options.circumferential_nodes < threshold or shape is None:
             return None
@@ -2041,6 +2069,9 @@ class JournalBearing:
         if not (coarse.converged or (plain and coarse.contact)) or (coarse.contact and not plain):
             return None
         relative = coarse.evaluation.relative_pressure
+        solution = coarse.evaluation.solution
+        if isinstance(solution, JfoSolution):
+            relative = np.where(solution.cavitated, -solution.void, relative)  # the JFO unknown
         # Both grids start at the same angle at the same position, so the coarse rows and
         # columns are the fine solver's coarse grid's (CoarseGrid: every other column, rows
         # evenly from edge to edge).

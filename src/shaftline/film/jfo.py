@@ -36,6 +36,7 @@ import scipy.sparse.linalg as spla
 
 from shaftline.film.reynolds import (
     MAX_ACTIVE_SET_ITERATIONS,
+    UNSETTLED_MAX_NODES,
     ReynoldsConvergenceError,
     ReynoldsSolution,
     ReynoldsSolver,
@@ -292,6 +293,7 @@ def solve_jfo(
     film: np.ndarray,
     initial_cavitated: np.ndarray | None = None,
     remember: bool = True,
+    settle: bool = True,
 ) -> JfoSolution:
     """Mass-conserving cavitation by semi-smooth Newton on ``u`` (``P`` or ``-s`` per node).
 
@@ -311,6 +313,12 @@ def solve_jfo(
     remember : bool
         Keep the solution as the predictor of the next warm start of ``solver`` (the
         coarse grids of a cold start, never warm-started, do not).
+    settle : bool
+        False: stop at the first set within :data:`~shaftline.film.reynolds.UNSETTLED_MAX_NODES`
+        nodes of settling, that set's solution (pressure and void fraction clipped at zero)
+        marked ``settled=False``, its factor that set's Jacobian (a Newton iterate far from
+        the equilibrium, or a coarse grid's prediction: each set costs an LU factorisation).
+        Solving again from its set finishes it (the chord-step predictor leads to the next set).
 
     Returns
     -------
@@ -350,10 +358,15 @@ def solve_jfo(
         scale = max(float(np.abs(pressure).max()), 1e-300)
         enter = ~(fixed | cavitated) & (unknown < -SWITCH_TOLERANCE * scale)
         leave = cavitated & (unknown > SWITCH_TOLERANCE)
-        if not enter.any() and not leave.any():
+        settled = not enter.any() and not leave.any()
+        if settled or (not settle and int(np.count_nonzero(enter | leave)) <= UNSETTLED_MAX_NODES):
             void = np.where(cavitated, -unknown, 0.0)
+            if not settled:  # the few nodes on the wrong side, at zero
+                pressure, void = np.maximum(pressure, 0.0), np.maximum(void, 0.0)
             fraction = np.clip(1.0 - void, 0.0, 1.0)
-            solution = JfoSolution(pressure, fraction, cavitated, iterations, void, fixed, stencil, weakref.ref(factor))
+            solution = JfoSolution(
+                pressure, fraction, cavitated, iterations, void, fixed, stencil, weakref.ref(factor), settled=settled
+            )
             if remember:
                 _LAST.set(solver, (solution, factor))
             return solution
@@ -380,7 +393,7 @@ def _nested_start(solver: ReynoldsSolver, stencil: Stencil, film: np.ndarray) ->
     rate_c = coarse.restrict(rate) if np.any(rate) else None
     solver_c = coarse.solver
     stencil_c = build_stencil(film_c, solver_c.d_theta, solver_c.d_z, rate_c)
-    solution = solve_jfo(solver_c, stencil_c, film_c, remember=False)
+    solution = solve_jfo(solver_c, stencil_c, film_c, remember=False, settle=False)  # a prediction only
     indicator = np.where(solution.cavitated, -solution.void, solution.pressure)
     indicator = np.where(solver_c.fixed, 0.0, indicator)
     return (coarse.prolong(indicator) < 0.0) & ~solver.fixed

@@ -571,7 +571,7 @@ class ReynoldsSolver:
         conjugate gradients preconditioned by the kept factor (that of the nearby film), to
         :data:`REFINE_TOLERANCE`, instead of factorising this film's matrix.
 
-        ``settle=False`` (Reynolds condition only): stop at the first trial set within
+        ``settle=False`` (Reynolds condition and JFO): stop at the first trial set within
         :data:`UNSETTLED_MAX_NODES` nodes of settling, the solution marked ``settled=False``: an
         iterate of a Newton iteration far from its root, whose step moves the force by far more
         than those nodes do, need not pay for the last set switch (a bordered update of the
@@ -586,7 +586,7 @@ class ReynoldsSolver:
             # Warm-started from the previous JFO set; cold from the JFO solution on coarser grids.
             from shaftline.film.jfo import solve_jfo
 
-            return solve_jfo(self, stencil, film, initial_cavitated)
+            return solve_jfo(self, stencil, film, initial_cavitated, settle=settle)
         reynolds = self._solve_reynolds_lcp(stencil, initial_cavitated, film, refine_from=refine_from, settle=settle)
         if cavitation == "reynolds":
             return _MarchedSolution(reynolds.pressure, reynolds.cavitated, reynolds.iterations, film, reynolds.settled)
