@@ -1,10 +1,10 @@
-"""The film solver's linear-algebra kernels (issue 10): the low-rank switch of a kept factor and
+"""The film solver's linear-algebra kernels (issue 10): the bordered switch of a kept factor and
 the set prediction by red-black projected SOR, each against a direct computation.
 
 Reference: the free sub-matrix ``A[free, free]`` of the Reynolds operator, assembled here from
 the stencil alone and solved by SuperLU (scipy), and the active-set solver's own LCP solution.
-Tolerances: 1e-11 relative for a Woodbury-corrected solve (a handful of rank-one terms on a
-matrix of condition about 1e4 loses at most a few digits of 1e-16).
+Tolerances: 1e-11 relative for a switched solve (a k x k Schur complement of a handful of
+nodes on a matrix of condition about 1e4 loses at most a few digits of 1e-16).
 """
 
 from __future__ import annotations
@@ -57,7 +57,7 @@ def _boundary_nodes(free: np.ndarray, shape: tuple[int, int]) -> tuple[np.ndarra
 @pytest.mark.parametrize("entering, leaving", [(1, 0), (0, 1), (2, 1), (1, 2)])
 def test_a_switched_set_solves_as_its_own_factorisation(loaded_film, entering, leaving):
     """Nodes entering the held set (their links cut) and leaving it (links restored), with the
-    kept factor and a Woodbury correction: the solution of the new set's own matrix."""
+    kept factor and a bordered correction: the solution of the new set's own matrix."""
     solver, evaluation = loaded_film
     held = solver.fixed | evaluation.solution.cavitated
     base = ~held.ravel()

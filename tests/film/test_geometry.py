@@ -146,3 +146,22 @@ def test_bad_bent_journal_and_profile_name_their_own_attributes():
     with pytest.raises(InputError) as error:
         FilmProfile(theta=[0.0, 1.0], z=[0.0], delta=[[0.0, 0.0, 0.0]])
     assert error.value.field == "delta"
+
+
+def test_grid_nodes_are_shared_read_only_and_results_get_their_own():
+    """A grid computes its node angles and stations once and hands out read-only arrays (the
+    solver asks for them at every film solution); what a user receives — a state's ``theta``
+    and ``z``, ``axial_stations`` — stays a writable array of its own, as before."""
+    from tests.conftest import make_bearing
+
+    grid = Grid(length=0.1, axial_nodes=11, circumferential_nodes=24)
+    assert grid.z is grid.z and not grid.z.flags.writeable and not grid.theta.flags.writeable
+    with pytest.raises(ValueError):
+        grid.z[0] = 1.0
+    bearing = make_bearing(1.0, axial_nodes=11, circumferential_nodes=24)
+    state = bearing.solve_at(JournalPosition.from_polar(3e-5, np.pi))
+    stations = bearing.axial_stations
+    for array in (state.theta, state.z, stations):
+        assert array.flags.writeable
+    state.z[0] = -1.0
+    assert bearing.axial_stations[0] == 0.0 and bearing.solve_at(state.position).z[0] == 0.0

@@ -117,11 +117,12 @@ OTHER_START_TOLERANCE = 1e-5
 #: factor instead of factorising their own matrix: there the step changes the film by about
 #: that share, so the iteration gains about that factor per step (ReynoldsSolver.solve).
 REFINE_RESIDUAL = 1e-3
-#: Force residual (share of the load) above which a mass-conserving (JFO) Newton trial may leave
+#: Force residual (share of the load) above which a mass-conserving (JFO) Newton iterate may leave
 #: its active set a few nodes short of settling (each set costs an LU factorisation there). Such
 #: an iterate's force is off by about 1e-5 of the load, which stalls Newton's quadratic steps
 #: below about 1e-3 (NTUA 100 x 60: 1.1e-3 -> 1.5e-5 -> 2.8e-6 with loose trials throughout):
-#: near the root its trials settle. The Reynolds condition's trials there are refined instead.
+#: below it the trials settle, and so does an unsettled iterate before its step. The Reynolds
+#: condition's floor is :data:`REFINE_RESIDUAL`, below which its trials are refined.
 JFO_UNSETTLED_RESIDUAL = 1e-2
 #: Newton iterations in a row that each leave more than ``STALLED_REDUCTION`` of the force
 #: residual, after which a rigid rough bore's equilibrium is given up: as contact when its film
@@ -830,8 +831,10 @@ class JournalBearing:
         dimensionless; rigid bore, Reynolds condition), with ``start`` the set it starts from:
         the solution is iterated from it with the kept factor instead of factorising
         (:meth:`~shaftline.film.reynolds.ReynoldsSolver.solve`). ``settle=False`` (rigid bore,
-        Reynolds condition): its active set may stop a few nodes short of settling, as a Newton
-        iterate far from the equilibrium may (:meth:`_settled_set` finishes it)."""
+        Reynolds condition or JFO): its active set may stop a few nodes short of settling, as a
+        Newton iterate far from the equilibrium may (:meth:`_settled_set` finishes it). With the
+        JFO model ``start_pressure`` is the coarse JFO unknown (P, or -s where cavitated), whose
+        negative nodes start the set."""
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(geometry or self.geometry, grid, position)
@@ -1460,7 +1463,7 @@ class JournalBearing:
     @property
     def axial_stations(self) -> np.ndarray:
         """Axial grid stations from the aft edge, m (where :meth:`film_load` takes the journal)."""
-        return self._solver_state().grid.z
+        return self._solver_state().grid.z.copy()
 
     def film_load(
         self,
@@ -1718,6 +1721,12 @@ class JournalBearing:
         # few nodes short of settling (docs/theory.md Sect. 4.1): the converged one is settled.
         smooth_rigid = self.geometry.liner is None and self.geometry.surface is None
         loose = smooth_rigid and self.options.cavitation in ("reynolds", "jfo")
+        # Below this residual an unsettled iterate is settled before its step: its force error
+        # (1e-6 to 1e-5 of the load) would steer a step meant to reach the tolerance, and a line
+        # search measuring progress against it can reject every step (a start at the root).
+        settle_below = (
+            REFINE_RESIDUAL if self.options.cavitation == "reynolds" else JFO_UNSETTLED_RESIDUAL
+        ) * magnitude
         evaluation, started = self._start_evaluation(position, start_set, start_pressure, settle=not loose)
         residual = evaluation.force + load
         if not started:
@@ -1755,12 +1764,12 @@ class JournalBearing:
                     break
                 residual = evaluation.force + load
                 continue
-            if norm <= tolerance:
-                if evaluation.solution.settled:
-                    break
+            if not evaluation.solution.settled and norm <= settle_below:
                 evaluation = self._settled_set(evaluation)
                 residual = evaluation.force + load
                 continue
+            if norm <= tolerance:
+                break
             iterations += 1
             borrowed = evaluation.liner_system is None and norm > NEARBY_JACOBIAN * magnitude
             if borrowed:
@@ -1785,7 +1794,7 @@ class JournalBearing:
                     sufficient,
                     inexact,
                     refine,
-                    loose and (self.options.cavitation == "reynolds" or norm > JFO_UNSETTLED_RESIDUAL * magnitude),
+                    loose and norm > settle_below,
                 )
                 if accepted is not None:
                     break
@@ -2033,8 +2042,9 @@ class JournalBearing:
         its pressure brought onto this grid (relative, dimensionless: the start of the first
         film solution's active set), or None on a grid below :data:`CONTINUATION_NODES`
         (:data:`CONTINUATION_NODES_OTHER` with a liner, a rough surface or the mass-conserving
-        model) or where it does not converge. A smooth rigid bore whose coarse equilibrium ends
-        at the film floor (contact) starts from where it ended: the fine film is then at or
+        model) or where it does not converge. A smooth rigid bore with the Reynolds condition
+        whose coarse equilibrium's line search ends at the film floor (contact) starts from where
+        it ended: the fine film is then at or
         near its floor too, and its own iteration decides (NTUA at twice the load and the tilt,
         100 x 60: 24 fine iterations crawling from the closed-form start to contact, 2 from the
         coarse end, 121 -> 37 ms).
@@ -2262,7 +2272,7 @@ class JournalBearing:
         g = self.geometry
         op = self.operating
         grid = evaluation.grid
-        theta, z = grid.theta, grid.z
+        theta, z = grid.theta.copy(), grid.z.copy()  # the state's own (the grid's are shared, read-only)
         film = evaluation.film
         pressure = self._gauge(evaluation.relative_pressure)
         fraction = evaluation.solution.film_fraction

@@ -34,9 +34,9 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from shaftline.film import reynolds
 from shaftline.film.reynolds import (
     MAX_ACTIVE_SET_ITERATIONS,
-    UNSETTLED_MAX_NODES,
     ReynoldsConvergenceError,
     ReynoldsSolution,
     ReynoldsSolver,
@@ -359,7 +359,7 @@ def solve_jfo(
         enter = ~(fixed | cavitated) & (unknown < -SWITCH_TOLERANCE * scale)
         leave = cavitated & (unknown > SWITCH_TOLERANCE)
         settled = not enter.any() and not leave.any()
-        if settled or (not settle and int(np.count_nonzero(enter | leave)) <= UNSETTLED_MAX_NODES):
+        if settled or (not settle and int(np.count_nonzero(enter | leave)) <= reynolds.UNSETTLED_MAX_NODES):
             void = np.where(cavitated, -unknown, 0.0)
             if not settled:  # the few nodes on the wrong side, at zero
                 pressure, void = np.maximum(pressure, 0.0), np.maximum(void, 0.0)
