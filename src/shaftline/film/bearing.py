@@ -567,7 +567,8 @@ class _Evaluation:
 class _Found:
     """Where :meth:`JournalBearing._find_equilibrium` ended: its last film solution, whether it
     converged or met the film floor, its Newton iterations and force residual (N), and whether
-    its first film solution settled (a lined start that did not is reported as it is)."""
+    its start was solved (False: a lined start whose film-liner iteration did not settle at any
+    position tried, reported as it is)."""
 
     evaluation: _Evaluation
     converged: bool
@@ -2044,10 +2045,9 @@ class JournalBearing:
         (:data:`CONTINUATION_NODES_OTHER` with a liner, a rough surface or the mass-conserving
         model) or where it does not converge. A smooth rigid bore with the Reynolds condition
         whose coarse equilibrium's line search ends at the film floor (contact) starts from where
-        it ended: the fine film is then at or
-        near its floor too, and its own iteration decides (NTUA at twice the load and the tilt,
-        100 x 60: 24 fine iterations crawling from the closed-form start to contact, 2 from the
-        coarse end, 121 -> 37 ms).
+        it ended: the fine film is then at or near its floor too, and its own iteration decides
+        (NTUA at twice the load and the tilt, 100 x 60: 24 fine iterations crawling from the
+        closed-form start to contact, 2 from the coarse end, 121 -> 37 ms).
 
         Depends only on the problem and the arguments, as the equilibrium does."""
         options = self.options
