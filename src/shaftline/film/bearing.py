@@ -1720,8 +1720,7 @@ class JournalBearing:
             start_pressure = None  # the caller's set comes first
         # A smooth rigid bore's Newton iterates far from the equilibrium leave their active sets a
         # few nodes short of settling (docs/theory.md Sect. 4.1): the converged one is settled.
-        smooth_rigid = self.geometry.liner is None and self.geometry.surface is None
-        loose = smooth_rigid and self.options.cavitation in ("reynolds", "jfo")
+        loose = self._smooth_rigid_active_set()
         # Below this residual an unsettled iterate is settled before its step: its force error
         # (1e-6 to 1e-5 of the load) would steer a step meant to reach the tolerance, and a line
         # search measuring progress against it can reject every step (a start at the root).
@@ -2036,6 +2035,15 @@ class JournalBearing:
             )
         return start
 
+    def _smooth_rigid_active_set(self) -> bool:
+        """A smooth rigid bore with an active-set cavitation model (Reynolds condition or JFO): the
+        film whose equilibrium continues from 5 000 nodes and leaves its far iterates unsettled."""
+        return (
+            self.geometry.liner is None
+            and self.geometry.surface is None
+            and self.options.cavitation in ("reynolds", "jfo")
+        )
+
     def _coarse_equilibrium(
         self, load_y: float, load_z: float, tilt_y: float, tilt_z: float
     ) -> tuple[JournalPosition, np.ndarray] | None:
@@ -2052,15 +2060,11 @@ class JournalBearing:
         Depends only on the problem and the arguments, as the equilibrium does."""
         options = self.options
         shape = coarse_shape((options.axial_nodes, options.circumferential_nodes))
-        smooth_rigid = self.geometry.liner is None and self.geometry.surface is None
-        plain = smooth_rigid and options.cavitation == "reynolds"
         # The mass-conserving film continues from the same grids (its fine start then comes from
         # the coarse JFO unknown), with the force tolerance its solver paths were tuned with.
-        threshold = (
-            CONTINUATION_NODES
-            if smooth_rigid and options.cavitation in ("reynolds", "jfo")
-            else CONTINUATION_NODES_OTHER
-        )
+        smooth = self._smooth_rigid_active_set()
+        plain = smooth and options.cavitation == "reynolds"
+        threshold = CONTINUATION_NODES if smooth else CONTINUATION_NODES_OTHER
         coarse_tolerance = CONTINUATION_TOLERANCE if plain else OTHER_START_TOLERANCE
         if options.axial_nodes * options.circumferential_nodes < threshold or shape is None:
             return None
@@ -2076,7 +2080,7 @@ class JournalBearing:
             )
             cache.coarse_bearing = JournalBearing(self.geometry, self.operating, coarse_options)
         coarse = cache.coarse_bearing._find_equilibrium(np.array([load_y, load_z]), tilt_y, tilt_z)
-        if not (coarse.converged or (plain and coarse.contact)) or (coarse.contact and not plain):
+        if not ((coarse.converged and not coarse.contact) or (plain and coarse.contact)):
             return None
         relative = coarse.evaluation.relative_pressure
         solution = coarse.evaluation.solution
