@@ -162,6 +162,43 @@ def test_assembled_jacobian_is_the_residual_on_its_set(jfo_bearing):
     assert np.abs(np.where(fixed, 0.0, applied - rhs) - expected).max() <= 1e-13 * scale
 
 
+def test_a_kept_elimination_order_solves_as_a_fresh_one(jfo_bearing):
+    """A JFO factor in the elimination order kept from another film's set (rows and columns
+    permuted to it, SuperLU keeping that order) solves the same system as one ordered afresh:
+    on a film far from the one the order was found for, to 1e-10 of the largest entry (two
+    pivot orders' round-off) for one right-hand side and for several; the film solved with a
+    kept order agrees with one whose first set was ordered afresh to 1e-10 of the peak; and an
+    order that lets the fill grow past ``ORDERING_FILL_GROWTH`` is dropped, so that the next
+    set is ordered afresh."""
+    from shaftline.film import jfo
+    from shaftline.film.reynolds import stencil_diagonal
+
+    solver = jfo_bearing._solver_state().reynolds
+    jfo_bearing._evaluate(JournalPosition.from_polar(0.3 * CLEARANCE, 2.0), warm=False)
+    kept = jfo._ORDERINGS.get(solver)
+    assert kept is not None
+    here = JournalPosition.from_polar(0.8 * CLEARANCE, np.pi)
+    with_kept = jfo_bearing._evaluate(here, warm=False)
+    stencil, cavitated = with_kept.stencil, with_kept.solution.cavitated
+    values = jfo._jacobian_values(stencil, cavitated, solver.fixed, stencil_diagonal(stencil))
+    ordered = jfo._factorise_ordered(values, kept)
+    fresh = jfo._factorise_values(values, solver.shape)
+    assert ordered.order is not None and fresh.order is None
+    rhs = np.random.default_rng(3).normal(size=(solver.fixed.size, 3))
+    for right in (rhs[:, 0], rhs):
+        expected = fresh.solve(right)
+        assert np.abs(ordered.solve(right) - expected).max() <= 1e-10 * np.abs(expected).max()
+    jfo._ORDERINGS.pop(solver)
+    afresh = jfo_bearing._evaluate(here, warm=False)
+    peak = np.abs(afresh.relative_pressure).max()
+    assert np.abs(with_kept.relative_pressure - afresh.relative_pressure).max() <= 1e-10 * peak
+    kept = jfo._ORDERINGS.get(solver)
+    assert kept is not None
+    jfo._ORDERINGS.set(solver, jfo._Ordering(kept.order, kept.take, kept.indices, kept.indptr, fill=1))
+    jfo._factorise(stencil, cavitated, solver.fixed, stencil_diagonal(stencil), solver)
+    assert not jfo._ORDERINGS.has(solver)
+
+
 def test_an_older_solution_still_linearises(jfo_bearing):
     """The solver keeps one factor alive (its newest solution's); a solution asked for its
     derivatives after a newer solve refactorises and gives the same Jacobian (to 1e-10)."""

@@ -38,9 +38,10 @@ def test_factor_fill_formula_against_qdldl(shape):
 
 def test_factor_grows_faster_than_the_nodes():
     """A grid twice as fine each way has four times the nodes and more than four times the
-    memory (the factor's n log n)."""
+    memory (the factor's n log n); the mass-conserving model needs more than the Reynolds
+    condition (measured peaks 1.1-1.2 times the Reynolds-condition estimate, docs/validation.md)."""
     assert estimated_memory(321, 480) > 4.2 * estimated_memory(161, 240)
-    assert estimated_memory(161, 240, "jfo") > 1.8 * estimated_memory(161, 240)
+    assert estimated_memory(161, 240, "jfo") > 1.2 * estimated_memory(161, 240)
 
 
 _PEAK = """

@@ -101,15 +101,14 @@ _FACTOR_BYTES = 22.0
 #: estimate with 0.7 and 700 bytes a node (1.12 once, on 81 x 240 in a CI run).
 _FREE_FACTOR_SHARE = 0.85
 #: Further bytes per fine-grid node of the mass-conserving ("jfo") model: its Jacobian in the
-#: fixed 5-point pattern, the residual arrays and its own coarse grids (re-measured after
-#: issue 10's semi-smooth Newton solver: peaks at 0.85-1.01 of the estimate on 81 x 120 to
-#: 321 x 240) ... Lowered from 850 when the Reynolds-condition part of the estimate, which a
-#: JFO film also counts, rose with the kept node-set factors (the JFO solver does not use
-#: them): peaks on 161 x 240 at 0.73-0.85 of the estimate with 850, 0.77-0.90 with 650.
-_JFO_DENSE_BYTES = 650.0
-#: ... and its SuperLU factors (about 1.75 times the nonzeros of the LDL^T factor), per
-#: nonzero of the LDL^T factor of the fine grid.
-_JFO_FACTOR_BYTES = 28.0
+#: fixed 5-point pattern, the residual arrays and its own coarse grids ... Lowered from 650
+#: (and the factor's share below from 28) when its SuperLU factors took narrow panels and kept
+#: elimination orders (issue 10): peaks of an equilibrium with stiffness and damping fell to
+#: 0.5-0.64 of the old estimate on 81 x 120 to 321 x 240; with these two, 0.71-0.92 of it
+#: (three runs each of 81 x 120, 161 x 240, 321 x 240, 161 x 480; docs/validation.md).
+_JFO_DENSE_BYTES = 300.0
+#: ... and its SuperLU factors, per nonzero of the LDL^T factor of the fine grid.
+_JFO_FACTOR_BYTES = 8.0
 #: Default grid of SolverOptions (the refusal names the node count furthest above it).
 _DEFAULT_AXIAL_NODES = 41
 _DEFAULT_CIRCUMFERENTIAL_NODES = 120
@@ -153,7 +152,7 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
     axial_nodes, circumferential_nodes : int
         The grid (:class:`SolverOptions`).
     cavitation : Cavitation
-        The cavitation model; ``"jfo"`` needs about twice the memory of the others.
+        The cavitation model; ``"jfo"`` needs about 1.3 times the memory of the others.
 
     Returns
     -------
