@@ -37,7 +37,7 @@ from shaftline.film.geometry import (
     film_thickness,
     squeeze_velocity,
 )
-from shaftline.film.jfo import JfoSolution, void_transport
+from shaftline.film.jfo import JfoSolution, relaxed_set, void_transport
 from shaftline.film.layer import ElasticLayer, layer_operator
 from shaftline.film.problem import (
     CAVITATION_MODELS,
@@ -873,8 +873,9 @@ class JournalBearing:
             start = solver.trial_set(stencil, film_nd, start_pressure)
         elif start_pressure is not None and self.options.cavitation == "jfo":
             # The coarse JFO unknown (P, or -s where cavitated) changes sign on both cavitation
-            # boundaries: its negative nodes start the set (as the JFO nested start does).
-            start = (start_pressure < 0.0) & ~solver.fixed
+            # boundaries: sharpened on this grid, its negative nodes start the set (as in the
+            # JFO nested start).
+            start = relaxed_set(solver, stencil, start_pressure)
         if start is None and warm:
             start = cache.last_cavitated
         if liner is not None:
