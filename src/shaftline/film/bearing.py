@@ -885,12 +885,21 @@ class JournalBearing:
         solution = solver.solve(
             stencil, film_nd, self.options.cavitation, start, refine_from=refine_from, settle=settle
         )
-        cache.last_cavitated = solution.cavitated
-        relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
         surface = (geometry or self.geometry).surface
         contact = None if surface is None else asperity_pressure(surface, film)
-        force = self._integrate_force(grid, relative, contact=contact)
+        relative, force = self._solved(solution, grid, contact)
         return _Evaluation(position, grid, film, stencil, solution, relative, force, rate, contact)
+
+    def _solved(
+        self, solution: ReynoldsSolution, grid: Grid, contact: np.ndarray | None
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Relative pressure (dimensionless, fixed nodes included) and force (N, film and
+        asperities) of a rigid film's solution; its set becomes the next warm start."""
+        cache = self._solver_state()
+        cache.last_cavitated = solution.cavitated
+        solver = cache.reynolds
+        relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
+        return relative, self._integrate_force(grid, relative, contact=contact)
 
     def _settled_set(self, evaluation: _Evaluation) -> _Evaluation:
         """``evaluation`` with its active set settled (itself when it is): the solve continues
@@ -901,9 +910,7 @@ class JournalBearing:
         solver = self._solver_state().reynolds
         film_nd = evaluation.film / self.geometry.radial_clearance
         solution = solver.solve(evaluation.stencil, film_nd, self.options.cavitation, evaluation.solution.cavitated)
-        self._solver_state().last_cavitated = solution.cavitated
-        relative = np.where(solver.fixed, solver.fixed_pressure, solution.pressure)
-        force = self._integrate_force(evaluation.grid, relative, contact=evaluation.contact)
+        relative, force = self._solved(solution, evaluation.grid, evaluation.contact)
         return replace(evaluation, solution=solution, relative_pressure=relative, force=force)
 
     def _evaluate_liner(
