@@ -835,7 +835,7 @@ class JournalBearing:
         Reynolds condition or JFO): its active set may stop a few nodes short of settling, as a
         Newton iterate far from the equilibrium may (:meth:`_settled_set` finishes it). With the
         JFO model ``start_pressure`` is the coarse JFO unknown (P, or -s where cavitated), whose
-        negative nodes start the set."""
+        negative nodes, after the sweeps of :func:`~shaftline.film.jfo.relaxed_set`, start the set."""
         cache = self._solver_state()
         grid = self.grid(position)
         film = film_thickness(geometry or self.geometry, grid, position)

@@ -231,10 +231,13 @@ class _Factor:
     order: np.ndarray | None = None
 
     def solve(self, rhs: np.ndarray) -> np.ndarray:
-        """``J^{-1} rhs`` for ``rhs`` of shape (n,) or (n, k)."""
+        """``J^{-1} rhs`` for real ``rhs`` of shape (n,) or (n, k)."""
+        rhs = np.asarray(rhs)
+        if np.iscomplexobj(rhs):
+            raise TypeError("the JFO factor solves real right-hand sides only")
         if self.order is None:
-            return np.asarray(self.lu.solve(np.ascontiguousarray(rhs)))
-        out = np.empty(np.shape(rhs))
+            return np.asarray(self.lu.solve(np.ascontiguousarray(rhs, dtype=float)))
+        out = np.empty(rhs.shape)
         out[self.order] = self.lu.solve(np.ascontiguousarray(rhs[self.order], dtype=float))
         return out
 
@@ -245,6 +248,8 @@ class _Ordering:
 
     Attributes
     ----------
+    cavitated : ndarray of bool (nz, nt)
+        The set it was found for (its shape is the grid's).
     order : ndarray of int (n,)
         Grid nodes in elimination order.
     take : ndarray of int
@@ -252,9 +257,10 @@ class _Ordering:
     indices, indptr : ndarray of int
         The permuted pattern's rows and column pointers.
     fill : int
-        Entries of the factor of the set it was found for (SuperLU's ``nnz``).
+        Entries of the factor of that set (SuperLU's ``nnz``).
     """
 
+    cavitated: np.ndarray
     order: np.ndarray
     take: np.ndarray
     indices: np.ndarray
@@ -262,22 +268,36 @@ class _Ordering:
     fill: int
 
     @classmethod
-    def of(cls, lu: spla.SuperLU, shape: tuple[int, int]) -> _Ordering:
-        """The order SuperLU chose for ``lu`` (grid node ``k`` eliminated ``perm_c[k]``-th)."""
-        pattern = _jfo_pattern(*shape)
-        position = np.asarray(lu.perm_c)
+    def of(cls, lu: spla.SuperLU, cavitated: np.ndarray) -> _Ordering:
+        """The order SuperLU chose for ``lu``, the factor of the set ``cavitated`` (grid node
+        ``k`` eliminated ``perm_c[k]``-th)."""
+        pattern = _jfo_pattern(*cavitated.shape)
+        n = cavitated.size
+        position = np.asarray(lu.perm_c, dtype=np.int64)
         row, col = position[pattern.row], position[pattern.col]
-        take = np.lexsort((row, col))
-        indptr = np.zeros(position.size + 1, dtype=pattern.indptr.dtype)
-        np.cumsum(np.bincount(col, minlength=position.size), out=indptr[1:])
-        return cls(np.argsort(position), take, row[take], indptr, int(lu.nnz))
+        take = np.argsort(col * n + row)  # column-major (CSC) order of the permuted entries
+        indptr = np.zeros(n + 1, dtype=pattern.indptr.dtype)
+        np.cumsum(np.bincount(col, minlength=n), out=indptr[1:])
+        return cls(cavitated.copy(), np.argsort(position), take, row[take], indptr, int(lu.nnz))
+
+    def suits(self, cavitated: np.ndarray) -> bool:
+        """Whether the order may serve the set ``cavitated`` (:data:`ORDERING_SET_CHANGE`)."""
+        if cavitated.shape != self.cavitated.shape:
+            return False
+        return int(np.count_nonzero(cavitated != self.cavitated)) <= ORDERING_SET_CHANGE * cavitated.size
 
 
-#: A kept elimination order serves the next sets of its grid while their factors hold at
-#: most this many times the entries of the set it was found for; the first set past that is
-#: ordered afresh. On the NTUA case (100 x 60) the order of a JFO equilibrium's first set
-#: factorises its six sets in 2.2-3.1 ms against 3.1-3.3 ms each ordered afresh (the
-#: minimum-degree ordering costs a third of a factorisation), with up to 1.4 times the fill.
+#: A kept elimination order serves a later set of its grid that differs from the set it was
+#: found for in at most this share of the nodes; a set further off is ordered afresh (and its
+#: order kept). The sets of one equilibrium differ along their boundaries, by up to 0.22 % of
+#: the nodes on the NTUA case (100 x 60 and 200 x 120), and an order kept across its six sets
+#: factorises each in 2.2-3.1 ms against 3.1-3.3 ms ordered afresh (the minimum-degree
+#: ordering costs a third of a factorisation) with up to 1.4 times the fill. A zone moved round
+#: the bore (another load direction) is another graph: kept there, the order gave 10-23 times
+#: a fresh order's fill and 20-40 times its time (81 x 240 and 161 x 240).
+ORDERING_SET_CHANGE = 0.02
+#: ... and while the factor holds at most this many times the entries of that set's factor:
+#: the first set past it is ordered afresh.
 ORDERING_FILL_GROWTH = 1.2
 #: SuperLU's panel width and supernode relaxation (its defaults: 20 and 10). Narrow panels suit
 #: the narrow supernodes of a 2-D grid: 13 % (100 x 60) to 20 % (200 x 120) faster.
@@ -288,13 +308,13 @@ def _factorise(
     stencil: Stencil, cavitated: np.ndarray, fixed: np.ndarray, diag: np.ndarray, solver: ReynoldsSolver | None = None
 ) -> _Factor:
     """LU of the Jacobian on ``cavitated``, in the elimination order kept for ``solver``'s grid
-    (found and kept when there is none, or when the kept one let the fill grow too far)."""
+    when it suits the set (:data:`ORDERING_SET_CHANGE`), else in a fresh order, then kept."""
     values = _jacobian_values(stencil, cavitated, fixed, diag)
     ordering = None if solver is None else _ORDERINGS.get(solver)
-    if ordering is None:
+    if ordering is None or not ordering.suits(cavitated):
         factor = _factorise_values(values, fixed.shape)
         if solver is not None:
-            _ORDERINGS.set(solver, _Ordering.of(factor.lu, fixed.shape))
+            _ORDERINGS.set(solver, _Ordering.of(factor.lu, cavitated))
         return factor
     factor = _factorise_ordered(values, ordering)
     if solver is not None and factor.lu.nnz > ORDERING_FILL_GROWTH * ordering.fill:
@@ -358,6 +378,13 @@ _FACTORS: list[_Factor] = []
 _ORDERINGS: _PerSolver[_Ordering] = _PerSolver()
 
 
+def forget(solver: ReynoldsSolver) -> None:
+    """Drop what this module keeps for ``solver`` (its last solution and factor, its elimination
+    order), so that its next JFO solutions round the same whatever it solved before."""
+    _LAST.pop(solver)
+    _ORDERINGS.pop(solver)
+
+
 def _predicted_set(last: JfoSolution, factor: _Factor, stencil: Stencil) -> np.ndarray:
     """Cavitated set after one chord step from the last solution to the new film.
 
@@ -406,8 +433,6 @@ def relaxed_set(
     c_theta, c_z, q = stencil.c_theta, stencil.c_z, stencil.couette_face
     c_west = np.roll(c_theta, 1, axis=1)
     diag = stencil_diagonal(stencil)
-    # The cavitated branch needs Couette flow into the node's cell (q > 0, the rotation's sense).
-    void_slope = np.where(q > 0.0, q, np.inf)
     fixed_pressure = np.where(fixed, solver.fixed_pressure, 0.0)
     u = np.where(fixed, 0.0, unknown)
     cavitated = (u < 0.0) & ~fixed
@@ -418,7 +443,8 @@ def relaxed_set(
             inflow[:-1] += c_z * pressure[1:]
             inflow[1:] += c_z * pressure[:-1]
             residual_at_zero = np.roll(q * np.maximum(-u, 0.0), 1, axis=1) - inflow - stencil.rhs
-            root = np.where(residual_at_zero < 0.0, -residual_at_zero / diag, -residual_at_zero / void_slope)
+            # q (the Couette flux out through the east face) > 0: theta runs with the rotation, H > 0.
+            root = np.where(residual_at_zero < 0.0, -residual_at_zero / diag, -residual_at_zero / q)
             u = np.where(mine, root, u)
         now = (u < 0.0) & ~fixed
         if np.array_equal(now, cavitated):
@@ -519,8 +545,9 @@ def _nested_start(solver: ReynoldsSolver, stencil: Stencil, film: np.ndarray) ->
 
     The coarse unknown ``u`` (``P`` in the full film, ``-s`` where cavitated) changes sign on
     both the rupture and the reformation boundary; interpolated bilinearly onto the fine
-    grid it places them to within a fraction of a coarse cell. Recursive down to the
-    coarsest grid, which starts from the Reynolds condition.
+    grid it places them to within a coarse cell, and the sweeps of :func:`relaxed_set` on this
+    grid remove most of that error. Recursive down to the coarsest grid, which starts from the
+    Reynolds condition.
     """
     coarse = solver.coarse_grid()
     if coarse is None:

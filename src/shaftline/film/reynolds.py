@@ -373,8 +373,13 @@ class ReynoldsSolver:
         sparsity patterns and coarse grids: the next solutions then round the same whatever
         this solver solved before (a design search shares one solver across bores, and its
         results must not depend on which worker evaluated which design before). The masked
-        factor stays: its pattern is fixed, so its results depend on the matrix only."""
+        factor stays: its pattern is fixed, so its results depend on the matrix only. The
+        mass-conserving solver's kept orders and last solution go too
+        (:func:`shaftline.film.jfo.forget`)."""
+        from shaftline.film.jfo import forget  # jfo imports this module
+
         self._factor = None
+        forget(self)
         if self._coarse_grid is not None:
             self._coarse_grid.solver.drop_factors()
 
