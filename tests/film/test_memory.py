@@ -39,9 +39,9 @@ def test_factor_fill_formula_against_qdldl(shape):
 def test_factor_grows_faster_than_the_nodes():
     """A grid twice as fine each way has four times the nodes and more than four times the
     memory (the factor's n log n); the mass-conserving model needs more than the Reynolds
-    condition (measured peaks 1.1-1.2 times the Reynolds-condition estimate, docs/validation.md)."""
+    condition (docs/validation.md)."""
     assert estimated_memory(321, 480) > 4.2 * estimated_memory(161, 240)
-    assert estimated_memory(161, 240, "jfo") > 1.2 * estimated_memory(161, 240)
+    assert estimated_memory(161, 240, "jfo") > 1.3 * estimated_memory(161, 240)
 
 
 _PEAK = """
@@ -55,21 +55,24 @@ def status(key):
     with open("/proc/self/status") as file:
         return next(int(line.split()[1]) * 1024 for line in file if line.startswith(key))
 
-nz, nt, cavitation = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+nz, nt, cavitation, load = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3], float(sys.argv[4])
 grooves = (SupplyGroove(angle=np.pi / 2, pressure=2e4),) if cavitation == "jfo" else ()
 operating = OperatingPoint(speed=2.0, viscosity=0.1, aft_pressure=1e4 if grooves else 0.0, grooves=grooves)
 options = SolverOptions(axial_nodes=nz, circumferential_nodes=nt, cavitation=cavitation)
 bearing = JournalBearing(BearingGeometry(length=1.0, diameter=0.8, radial_clearance=0.4e-3), operating, options)
 before = status("VmRSS")
-equilibrium = bearing.equilibrium(-3e5)
+equilibrium = bearing.equilibrium(load)
 dynamic_coefficients(bearing, equilibrium.state)
 print(json.dumps({"peak": status("VmHWM") - before, "estimate": options.estimated_memory}))
 """
 
 
 @pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="reads the peak from /proc (Linux)")
-@pytest.mark.parametrize("shape, cavitation", [((161, 120), "reynolds"), ((81, 240), "reynolds"), ((161, 240), "jfo")])
-def test_estimate_against_the_measured_peak(shape, cavitation):
+@pytest.mark.parametrize(
+    "shape, cavitation, load",
+    [((161, 120), "reynolds", -3e5), ((81, 240), "reynolds", -3e5), ((161, 240), "jfo", -5e3)],
+)
+def test_estimate_against_the_measured_peak(shape, cavitation, load):
     """The estimate against the peak resident memory of an equilibrium with its stiffness and
     damping, in a fresh process (the growth of the high-water mark over the memory before the
     solution). The calibration (docs/validation.md) puts the peak at 0.81-1.03 of the estimate
@@ -78,11 +81,17 @@ def test_estimate_against_the_measured_peak(shape, cavitation):
     The JFO row is 161 x 240, not smaller: its peak moves between two values from one run to the
     next (glibc's mmap threshold rises after a large block is freed, so whether the next
     factor is mapped or taken from the heap varies), by about 6 MiB: 21-32 MiB on 81 x 120
-    (0.79-1.2 of the estimate), 0.83-0.94 on 161 x 240."""
+    (0.79-1.2 of the estimate), 0.83-0.94 on 161 x 240. It is lightly loaded: a JFO film with
+    little cavitation has the most fill, and the estimate must cover it (at 300 kN its peak is
+    about 0.8 of the light load's)."""
     source = str(Path(shaftline.__file__).resolve().parents[1])
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([source, os.environ.get("PYTHONPATH", "")]))
     result = subprocess.run(
-        [sys.executable, "-c", _PEAK, *map(str, shape), cavitation], env=env, capture_output=True, text=True, check=True
+        [sys.executable, "-c", _PEAK, *map(str, shape), cavitation, str(load)],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
     )
     measured = json.loads(result.stdout.strip().splitlines()[-1])
     assert 0.7 * measured["estimate"] <= measured["peak"] <= 1.1 * measured["estimate"]

@@ -101,14 +101,14 @@ _FACTOR_BYTES = 22.0
 #: estimate with 0.7 and 700 bytes a node (1.12 once, on 81 x 240 in a CI run).
 _FREE_FACTOR_SHARE = 0.85
 #: Further bytes per fine-grid node of the mass-conserving ("jfo") model: its Jacobian in the
-#: fixed 5-point pattern, the residual arrays and its own coarse grids ... Lowered from 650
-#: (and the factor's share below from 28) when its SuperLU factors took narrow panels and kept
-#: elimination orders (issue 10): peaks of an equilibrium with stiffness and damping fell to
-#: 0.5-0.64 of the old estimate on 81 x 120 to 321 x 240; with these two, 0.71-0.92 of it
-#: (three runs each of 81 x 120, 161 x 240, 321 x 240, 161 x 480; docs/validation.md).
-_JFO_DENSE_BYTES = 300.0
+#: fixed 5-point pattern, the residual arrays and its own coarse grids ... Re-measured when its
+#: SuperLU factors took narrow panels and kept elimination orders (issue 10), at a light load
+#: (5 kN, little cavitation: the most fill) and at 300 kN: peaks of an equilibrium with
+#: stiffness and damping at 0.79-0.95 of the estimate lightly loaded (81 x 120, 161 x 240,
+#: 321 x 240, 161 x 480; three runs each), 0.72-0.83 at 300 kN (docs/validation.md).
+_JFO_DENSE_BYTES = 500.0
 #: ... and its SuperLU factors, per nonzero of the LDL^T factor of the fine grid.
-_JFO_FACTOR_BYTES = 8.0
+_JFO_FACTOR_BYTES = 12.0
 #: Default grid of SolverOptions (the refusal names the node count furthest above it).
 _DEFAULT_AXIAL_NODES = 41
 _DEFAULT_CIRCUMFERENTIAL_NODES = 120
@@ -152,7 +152,7 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
     axial_nodes, circumferential_nodes : int
         The grid (:class:`SolverOptions`).
     cavitation : Cavitation
-        The cavitation model; ``"jfo"`` needs about 1.3 times the memory of the others.
+        The cavitation model; ``"jfo"`` needs about 1.5 times the memory of the others.
 
     Returns
     -------
