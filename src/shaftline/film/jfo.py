@@ -258,6 +258,8 @@ class _Ordering:
         The permuted pattern's rows and column pointers.
     fill : int
         Entries of the factor of that set (SuperLU's ``nnz``).
+    boundary : int
+        Nodes of that set with a neighbour outside it (its rupture and reformation boundaries).
     """
 
     cavitated: np.ndarray
@@ -266,6 +268,7 @@ class _Ordering:
     indices: np.ndarray
     indptr: np.ndarray
     fill: int
+    boundary: int
 
     @classmethod
     def of(cls, lu: spla.SuperLU, cavitated: np.ndarray) -> _Ordering:
@@ -278,26 +281,33 @@ class _Ordering:
         take = np.argsort(col * n + row)  # column-major (CSC) order of the permuted entries
         indptr = np.zeros(n + 1, dtype=pattern.indptr.dtype)
         np.cumsum(np.bincount(col, minlength=n), out=indptr[1:])
-        return cls(cavitated.copy(), np.argsort(position), take, row[take], indptr, int(lu.nnz))
+        inside = np.roll(cavitated, 1, axis=1) & np.roll(cavitated, -1, axis=1)
+        inside[1:] &= cavitated[:-1]
+        inside[:-1] &= cavitated[1:]
+        boundary = int(np.count_nonzero(cavitated & ~inside))
+        return cls(cavitated.copy(), np.argsort(position), take, row[take], indptr, int(lu.nnz), boundary)
 
     def suits(self, cavitated: np.ndarray) -> bool:
         """Whether the order may serve the set ``cavitated`` (:data:`ORDERING_SET_CHANGE`)."""
         if cavitated.shape != self.cavitated.shape:
             return False
-        return int(np.count_nonzero(cavitated != self.cavitated)) <= ORDERING_SET_CHANGE * cavitated.size
+        return int(np.count_nonzero(cavitated != self.cavitated)) <= ORDERING_SET_CHANGE * self.boundary
 
 
 #: A kept elimination order serves a later set of its grid that differs from the set it was
-#: found for in at most this share of the nodes; a set further off is ordered afresh (and its
-#: order kept). The sets of one equilibrium differ along their boundaries, by up to 0.22 % of
-#: the nodes on the NTUA case (100 x 60 and 200 x 120), and an order kept across its six sets
-#: factorises each in 2.2-3.1 ms against 3.1-3.3 ms ordered afresh (the minimum-degree
-#: ordering costs a third of a factorisation) with up to 1.4 times the fill. A zone moved round
-#: the bore (another load direction) is another graph: kept there, the order gave 10-23 times
-#: a fresh order's fill and 20-40 times its time (81 x 240 and 161 x 240).
-ORDERING_SET_CHANGE = 0.02
-#: ... and while the factor holds at most this many times the entries of that set's factor:
-#: the first set past it is ordered afresh.
+#: found for in at most this share of that set's boundary nodes; a set further off is ordered
+#: afresh (and its order kept). The sets of one equilibrium differ along their boundaries, by
+#: 13 and 26 nodes on the NTUA case (100 x 60 and 200 x 120, boundaries of 226 and 456 nodes),
+#: and an order kept across its six sets factorises each in 2.2-3.1 ms against 3.1-3.3 ms ordered
+#: afresh (the minimum-degree ordering costs a third of a factorisation). A zone moved round the
+#: bore (another load direction) is another graph: kept there, the order gave 10-23 times a
+#: fresh order's fill and 20-40 times its time (81 x 240, 161 x 240), and sets 1.7-2 % of the
+#: nodes off still 1.5-2.3 times (review). With this share, 20 equilibria over load directions
+#: and magnitudes (81 x 120, 161 x 240) keep every fine factor within 1.06 times a fresh
+#: order's fill, warm starts across 90 degrees (81 x 240) within 1.18 times.
+ORDERING_SET_CHANGE = 0.25
+#: ... and while its factors hold at most this many times the entries of that set's factor: the
+#: factor past it is used, and the next set ordered afresh.
 ORDERING_FILL_GROWTH = 1.2
 #: SuperLU's panel width and supernode relaxation (its defaults: 20 and 10). Narrow panels suit
 #: the narrow supernodes of a 2-D grid: 13 % (100 x 60) to 20 % (200 x 120) faster.
