@@ -35,7 +35,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from shaftline.film import reynolds
-from shaftline.film.elastic import SUPERLU_PANEL
+from shaftline.film.elastic import grid_splu
 from shaftline.film.reynolds import (
     MAX_ACTIVE_SET_ITERATIONS,
     ReynoldsConvergenceError,
@@ -331,19 +331,12 @@ def _factorise(
 
 
 def _splu(matrix: sp.csc_matrix, ordering: str) -> spla.SuperLU:
-    """SuperLU's factor of ``matrix`` in ``ordering`` with diagonal pivots (:func:`_factorise_values`),
-    in the film-liner factor's narrow panels (:data:`~shaftline.film.elastic.SUPERLU_PANEL`): 13 %
-    (100 x 60) to 20 % (200 x 120) faster than SuperLU's defaults on JFO Jacobians."""
+    """:func:`~shaftline.film.elastic.grid_splu` of a Jacobian (diagonal pivots, see
+    :func:`_factorise_values`), a singular one (a whole circumferential line cavitated) raised
+    as :class:`ReynoldsConvergenceError`."""
     try:
-        return spla.splu(
-            matrix,
-            permc_spec=ordering,
-            diag_pivot_thresh=0.1,
-            relax=SUPERLU_PANEL,
-            panel_size=SUPERLU_PANEL,
-            options={"SymmetricMode": True},
-        )
-    except RuntimeError as exc:  # exactly singular: a whole circumferential line cavitated
+        return grid_splu(matrix, ordering, pivot_threshold=0.1)
+    except RuntimeError as exc:
         raise ReynoldsConvergenceError(f"JFO Jacobian is singular ({exc})") from None
 
 
