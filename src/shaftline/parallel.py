@@ -94,6 +94,11 @@ def _ignore_sigint() -> None:
 SINGLE_THREADED = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
 
 
+#: Compiled kernels of the film solver (numba: 0.5-0.7 s and about 100 MiB to load), imported by the
+#: fork server of a process that uses the film package, so that its workers find them loaded
+#: instead of each loading them at its first film solution.
+_FILM_KERNELS = ("shaftline.film._relaxation_kernel",)
+
 #: Whether this process has started its fork server (its workers then start in milliseconds).
 _FORK_SERVER: list[bool] = []
 
@@ -121,6 +126,8 @@ def _context(function: Callable[[Any], Any]) -> tuple[Any, bool]:
         if (name == "shaftline" or name.startswith("shaftline.")) and not name.endswith(".__main__")
     )
     preload = ([module] if module and module not in ("__main__", "__mp_main__") else []) + loaded
+    if any(name.startswith("shaftline.film") for name in loaded):
+        preload += list(_FILM_KERNELS)
     context.set_forkserver_preload(list(dict.fromkeys(preload)))
     from multiprocessing import forkserver
 

@@ -2,9 +2,12 @@
 the set prediction by red-black projected SOR, each against a direct computation.
 
 Reference: the free sub-matrix ``A[free, free]`` of the Reynolds operator, assembled here from
-the stencil alone and solved by SuperLU (scipy), and the active-set solver's own LCP solution.
+the stencil alone and solved by SuperLU (scipy), the active-set solver's own LCP solution, and
+red-black Gauss-Seidel written out node by node in Python for the compiled sweeps.
 Tolerances: 1e-11 relative for a switched solve (a k x k Schur complement of a handful of
-nodes on a matrix of condition about 1e4 loses at most a few digits of 1e-16).
+nodes on a matrix of condition about 1e4 loses at most a few digits of 1e-16); 1e-13 for the
+compiled sweeps against the Python ones (the same operations, grouped differently: a few
+roundings of 1e-16 per sweep).
 """
 
 from __future__ import annotations
@@ -16,7 +19,8 @@ import scipy.sparse.linalg as spla
 
 from shaftline.film import JournalPosition
 from shaftline.film import reynolds as reynolds_module
-from shaftline.film.reynolds import SWITCH_MAX_NODES, Stencil, _NodeSetFactor
+from shaftline.film.relaxation import projected_sor
+from shaftline.film.reynolds import SWITCH_MAX_NODES, ReynoldsSolver, Stencil, _NodeSetFactor
 from tests.conftest import CLEARANCE, make_bearing
 
 
@@ -54,7 +58,7 @@ def _boundary_nodes(free: np.ndarray, shape: tuple[int, int]) -> tuple[np.ndarra
     return np.flatnonzero(next_to_held), np.flatnonzero(next_to_free)
 
 
-@pytest.mark.parametrize("entering, leaving", [(1, 0), (0, 1), (2, 1), (1, 2)])
+@pytest.mark.parametrize("entering, leaving", [(1, 0), (0, 1), (2, 1), (1, 2), (4, 4)])
 def test_a_switched_set_solves_as_its_own_factorisation(loaded_film, entering, leaving):
     """Nodes entering the held set (their links cut) and leaving it (links restored), with the
     kept factor and a bordered correction: the solution of the new set's own matrix."""
@@ -129,3 +133,77 @@ def test_the_set_prediction_keeps_the_solutions_own_set(loaded_film):
     solver, evaluation = loaded_film
     predicted = solver.predicted_set(evaluation.stencil, evaluation.solution.pressure)
     np.testing.assert_array_equal(predicted, evaluation.solution.cavitated)
+
+
+def _python_sweeps(x, c_theta, c_z, rhs, fixed, sweeps, omega):
+    """Red-black projected SOR written out node by node: red ((i + j) even) then black, and on
+    a grid with an odd number of columns the last column apart, even rows then odd rows."""
+    nz, nt = x.shape
+    x = x.copy()
+    paired = nt - 1 if nt % 2 else nt
+    colours = [[(j, i) for j in range(nz) for i in range(paired) if (i + j) % 2 == k] for k in (0, 1)]
+    if nt % 2:
+        colours += [[(j, nt - 1) for j in range(nz) if j % 2 == k] for k in (0, 1)]
+    for _ in range(sweeps):
+        for nodes in colours:
+            for j, i in nodes:
+                if fixed[j, i]:
+                    continue
+                links = [(c_theta[j, i], x[j, (i + 1) % nt]), (c_theta[j, i - 1], x[j, i - 1])]
+                if j + 1 < nz:
+                    links.append((c_z[j, i], x[j + 1, i]))
+                if j > 0:
+                    links.append((c_z[j - 1, i], x[j - 1, i]))
+                gauss_seidel = (rhs[j, i] + sum(c * v for c, v in links)) / sum(c for c, _ in links)
+                x[j, i] = max((1.0 - omega) * x[j, i] + omega * gauss_seidel, 0.0)
+    return x
+
+
+@pytest.mark.parametrize("shape", [(7, 8), (6, 9)])
+def test_the_compiled_sweeps_are_red_black_gauss_seidel(shape):
+    """Random positive conductances, a source of both signs (some nodes go to zero), fixed edge
+    rows and one fixed interior node; even and odd numbers of columns."""
+    rng = np.random.default_rng(7)
+    nz, nt = shape
+    c_theta, c_z = rng.uniform(0.5, 2.0, (nz, nt)), rng.uniform(0.5, 2.0, (nz - 1, nt))
+    rhs = rng.normal(size=(nz, nt))
+    fixed = np.zeros(shape, dtype=bool)
+    fixed[[0, -1]] = True
+    fixed[3, 4] = True
+    start = np.where(fixed, 0.3, rng.uniform(0.0, 1.0, shape))
+    expected = _python_sweeps(start, c_theta, c_z, rhs, fixed, 3, 1.6)
+    got = projected_sor(start, c_theta, c_z, rhs, fixed, sweeps=3, omega=1.6, until_settled=False)
+    assert np.abs(got - expected).max() <= 1e-13 * np.abs(expected).max()
+    assert (got[~fixed] == 0.0).any() and (got[~fixed] > 0.0).any()  # the projection is exercised
+    np.testing.assert_array_equal(got[fixed], start[fixed])
+
+
+def test_the_sweeps_converge_to_the_active_set_solution(loaded_film):
+    """Projected SOR converges to the solution of the complementarity problem (Cryer 1971), which
+    the active-set solver finds directly: its sign convention, stencil and fixed nodes agree."""
+    solver, evaluation = loaded_film
+    stencil = evaluation.stencil
+    start = np.where(solver.fixed, solver.fixed_pressure, 0.0)
+    relaxed = projected_sor(start, stencil.c_theta, stencil.c_z, stencil.rhs, solver.fixed, 4000, 1.9, False)
+    exact = evaluation.solution.pressure
+    assert np.abs(relaxed - exact).max() <= 1e-9 * np.abs(exact).max()
+
+
+def test_the_small_coarse_grids_predict_the_set_without_factorising(monkeypatch):
+    """A cold solution of the NTUA-like loaded film (100 x 60): the coarse grids below it (50 x 30,
+    25 x 15) predict the set by sweeps alone, and the fine set starts within a bordered switch
+    of the final one, so the solution costs one factorisation."""
+    bearing = make_bearing(1.0, axial_nodes=100, circumferential_nodes=60)
+    factorised: list[int] = []
+    original = _NodeSetFactor.factorise
+
+    def spy(self, *args):
+        factorised.append(self.nodes.size)
+        return original(self, *args)
+
+    monkeypatch.setattr(_NodeSetFactor, "factorise", spy)
+    state = bearing.solve_at(JournalPosition(ey=-0.6 * CLEARANCE, ez=0.3 * CLEARANCE), warm_start=False)
+    assert state.cavitated.any()
+    assert factorised == [100 * 60]
+    coarse = bearing._solver_state().reynolds.coarse_grid()
+    assert coarse is not None and isinstance(coarse.solver, ReynoldsSolver) and coarse.solver.masked

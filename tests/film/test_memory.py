@@ -48,6 +48,7 @@ _PEAK = """
 import json, sys
 import numpy as np
 import scipy.sparse.linalg  # noqa: F401  (imports count in the baseline, not in the peak)
+import shaftline.film._relaxation_kernel  # noqa: F401  (numba, about 100 MiB, imported by a process's first solve)
 from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions, SupplyGroove
 from shaftline.film.dynamics import dynamic_coefficients
 

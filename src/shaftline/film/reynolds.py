@@ -45,7 +45,7 @@ import scipy.sparse as sp
 from shaftline.errors import SolverFailure
 from shaftline.film.geometry import coarse_shape
 from shaftline.film.problem import CAVITATION_MODELS, Cavitation
-from shaftline.film.relaxation import Relaxation
+from shaftline.film.relaxation import projected_sor
 from shaftline.film.roughness import FilmFlow
 
 __all__ = [
@@ -85,15 +85,25 @@ PCG_MAX_ITERATIONS = 30
 #: (:meth:`ReynoldsSolver.trial_set`). Over 27 test equilibria (grids 60 x 36 to 200 x 120,
 #: three tilts and loads) 2 % took the fine active-set iterations from 308 to 279.
 NESTED_SWING = 0.02
+#: Projected SOR sweeps and over-relaxation factor of each small coarse grid that predicts the
+#: cavitated set by sweeps alone (:meth:`ReynoldsSolver._swept_indicator`), from the coarsest
+#: up. The sweeps run to the count (no early stop: the pressure, not only its set, starts the
+#: next grid). NTUA 100 x 60 cold solution, 25 x 15 and 50 x 30 below it: 30 sweeps at 1.85
+#: start the fine set 2 nodes off, as the coarse active sets did; at 1.7 it starts 4 off.
+CASCADE_SWEEPS = 30
+CASCADE_OMEGA = 1.85
 #: Active sets that differ from the kept factor's, on the same film, in at most this many
 #: nodes are solved with the factor and a bordered correction (:meth:`_NodeSetFactor.switch`):
-#: its k triangular solves (0.12 ms each on 100 x 60, against 1.3 ms for the numeric
-#: factorisation) and the work around them cost less than a factorisation up to a few nodes.
-SWITCH_MAX_NODES = 3
+#: its k triangular solves (0.12 ms each on 100 x 60, against 1.0-1.3 ms for the numeric
+#: factorisation; 0.6 against 8 ms on 200 x 120) cost less than a factorisation up to about
+#: ten nodes. Nine NTUA equilibria (three loads, three tilts) on 200 x 120: 27 fine
+#: factorisations with 3, 20 with 8; unchanged on 100 x 60 and 400 x 240.
+SWITCH_MAX_NODES = 8
 #: A solution asked for with ``settle=False`` (:meth:`ReynoldsSolver.solve`) stops at the first
 #: trial set that leaves at most this many nodes on the wrong side of the complementarity
-#: conditions: the pressure of that set, clipped at zero.
-UNSETTLED_MAX_NODES = SWITCH_MAX_NODES
+#: conditions: the pressure of that set, clipped at zero (the switch that settles it later
+#: costs one triangular solve a node).
+UNSETTLED_MAX_NODES = 3
 PCG_TOLERANCE = 1e-9
 #: Energy-norm share to which a refined solution (:meth:`ReynoldsSolver.solve` with ``refine_from``)
 #: is iterated: near the rounding of a direct solve (its pressures agree with the factor's to
@@ -359,8 +369,6 @@ class ReynoldsSolver:
         self._masked_factor: _NodeSetFactor | None = None
         self._slot_cache: tuple[Stencil, np.ndarray] | None = None
         self._coarse_grid: CoarseGrid | None = None
-        self._relaxation: Relaxation | None = None
-        self.coarse_iterations = 0
         self.pcg_iterations = 0
         #: Flow model of the coarse grids that predict the cavitated set (:meth:`_nested_start`):
         #: None (the smooth film) unless the caller sets it, e.g. a turbulent film's, whose
@@ -607,15 +615,21 @@ class ReynoldsSolver:
         return self._coarse_grid
 
     def _nested_start(self, film: np.ndarray, stencil: Stencil, guess: np.ndarray | None = None) -> np.ndarray | None:
-        """Cavitated set predicted by solving the same problem on the coarser grid.
+        """Cavitated set predicted from the same problem on the coarser grids.
 
-        The coarse indicator ``P - w / diag(A)`` (pressure where the film is full,
-        minus the scaled complementarity multiplier where it is cavitated) changes
-        sign on the cavitation boundary; interpolated bilinearly onto the fine grid it
-        places that boundary to within a cell or two. A few projected over-relaxation
-        sweeps on this grid (the red-black sweeps of :mod:`shaftline.film.relaxation`), from the
-        interpolated pressure, remove that short-wavelength error: the set they leave is
-        one or two nodes off the final one where the interpolated one is tens.
+        The coarse indicator ``P - w / diag(A)`` (pressure where the film is full, minus the
+        scaled complementarity multiplier where it is cavitated; :func:`_set_indicator`)
+        changes sign on the cavitation boundary; interpolated bilinearly onto this grid it
+        places that boundary to within a cell or two. A few projected over-relaxation sweeps
+        on this grid (:func:`~shaftline.film.relaxation.projected_sor`), from the
+        interpolated pressure, remove that short-wavelength error: the set they leave is one
+        or two nodes off the final one where the interpolated one is tens.
+
+        On the small coarse grids (``masked``, below :data:`PCG_MIN_NODES`) the indicator
+        comes from sweeps alone, carried up from the coarsest grid (:meth:`_swept_indicator`);
+        a larger coarse grid solves its own active set, itself started this way. ``guess``, a
+        Newton trial's pressure guess, starts the coarsest sweeps (restricted to it) or that
+        active set (its swept set).
         """
         coarse = self.coarse_grid()
         if coarse is None:
@@ -623,20 +637,39 @@ class ReynoldsSolver:
         solver = coarse.solver
         film_c = coarse.restrict(film)
         solver.flow = self.flow
+        guess_c = None if guess is None else coarse.restrict(guess)
+        if solver.masked:
+            return self.predicted_set(stencil, coarse.prolong(solver._swept_indicator(film_c, guess_c)))
         stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z, rough=self.flow)
-        # A Newton trial's pressure guess, restricted and swept on the coarse grid, starts the
-        # coarse set there: two coarse solves instead of the coarser grids' cold chain.
-        start_c = None if guess is None else solver.predicted_set(stencil_c, coarse.restrict(guess))
+        start_c = None if guess_c is None else solver.predicted_set(stencil_c, guess_c)
         # Only a prediction: a coarse set a few nodes short of settling predicts the fine one as
-        # well (the sweeps below correct a node or two), without the coarse grids' last switch
-        # (NTUA 100 x 60 cold solution: 10 -> 7 factorisations, 8 % faster).
+        # well (the sweeps below correct a node or two), without the coarse grid's last switch.
         solution = solver._solve_reynolds_lcp(stencil_c, start_c, film_c, exact=False, settle=False)
-        self.coarse_iterations = solution.iterations
-        diag = stencil_diagonal(stencil_c)
-        multiplier = apply_operator(stencil_c.c_theta, stencil_c.c_z, solution.pressure) - stencil_c.rhs
-        indicator = np.where(solution.cavitated, -np.maximum(multiplier, 0.0) / diag, solution.pressure)
-        indicator = np.where(solver.fixed, 0.0, indicator)
+        indicator = _set_indicator(stencil_c, solution.pressure, solution.cavitated, solver.fixed)
         return self.predicted_set(stencil, coarse.prolong(indicator))
+
+    def _swept_indicator(self, film: np.ndarray, guess: np.ndarray | None) -> np.ndarray:
+        """The set indicator (:func:`_set_indicator`) of this grid's problem from
+        :data:`CASCADE_SWEEPS` projected SOR sweeps at :data:`CASCADE_OMEGA`, started from the
+        indicator of the grid below interpolated onto this one, or on the coarsest grid from
+        ``guess`` (a pressure guess on this grid) or zero: the prediction climbs the grids by
+        sweeps alone (a cascadic multigrid, docs/theory.md Sect. 4.1), with no factorisation.
+        On the NTUA case it costs a fifth of the coarse active-set chain it replaced (7 -> 2
+        factorisations of a cold solution, which starts 2 nodes off the final set either way).
+        """
+        stencil = build_stencil(film, self.d_theta, self.d_z, rough=self.flow)
+        coarse = self.coarse_grid()
+        if coarse is None:
+            start = np.zeros(self.shape) if guess is None else guess
+        else:
+            coarse.solver.flow = self.flow
+            guess_below = None if guess is None else coarse.restrict(guess)
+            start = coarse.prolong(coarse.solver._swept_indicator(coarse.restrict(film), guess_below))
+        start = np.where(self.fixed, self.fixed_pressure, np.maximum(start, 0.0))
+        pressure = projected_sor(
+            start, stencil.c_theta, stencil.c_z, stencil.rhs, self.fixed, CASCADE_SWEEPS, CASCADE_OMEGA, False
+        )
+        return _set_indicator(stencil, pressure, (pressure <= 0.0) & ~self.fixed, self.fixed)
 
     def trial_set(self, stencil: Stencil, film: np.ndarray, pressure: np.ndarray) -> np.ndarray | None:
         """Start set of a Newton trial from its linear pressure guess ``P + dP`` (nz, nt):
@@ -654,13 +687,11 @@ class ReynoldsSolver:
     def predicted_set(self, stencil: Stencil, pressure: np.ndarray) -> np.ndarray:
         """Cavitated set predicted from a pressure guess (nz, nt), e.g. interpolated from a
         coarser grid or extrapolated by a Newton step: the nodes that a few projected
-        over-relaxation sweeps from it (the red-black sweeps of :mod:`shaftline.film.relaxation`)
+        over-relaxation sweeps from it (:func:`~shaftline.film.relaxation.projected_sor`)
         leave at zero. The sweeps remove the guess's short-wavelength error around the
         cavitation boundary, so the set is a node or two off the final one."""
-        if self._relaxation is None:
-            self._relaxation = Relaxation(self.shape, self.fixed)
         start = np.where(self.fixed, self.fixed_pressure, np.maximum(pressure, 0.0))
-        relaxed = self._relaxation.sweep(start, stencil.c_theta, stencil.c_z, stencil.rhs)
+        relaxed = projected_sor(start, stencil.c_theta, stencil.c_z, stencil.rhs, self.fixed)
         return (relaxed <= 0.0) & ~self.fixed
 
     def _solve_reynolds_lcp(
@@ -968,6 +999,16 @@ class CoarseGrid:
         col_w = 0.5 * (np.arange(self.col_lo.size) % 2)[None, :]
         lo = field[self.row_lo] * (1.0 - row_w) + field[self.row_hi] * row_w
         return lo[:, self.col_lo] * (1.0 - col_w) + lo[:, self.col_hi] * col_w
+
+
+def _set_indicator(stencil: Stencil, pressure: np.ndarray, cavitated: np.ndarray, fixed: np.ndarray) -> np.ndarray:
+    """``P - w / diag(A)``: the pressure on the full-film nodes, minus the complementarity
+    multiplier ``w = A P - b`` (>= 0 there, clipped) over the diagonal on the cavitated ones,
+    zero on the fixed nodes. It changes sign on the cavitation boundary, and interpolated onto
+    a finer grid it places that boundary between the nodes (docs/theory.md Sect. 4)."""
+    multiplier = apply_operator(stencil.c_theta, stencil.c_z, pressure) - stencil.rhs
+    indicator = np.where(cavitated, -np.maximum(multiplier, 0.0) / stencil_diagonal(stencil), pressure)
+    return np.where(fixed, 0.0, indicator)
 
 
 def _dot(a: np.ndarray, b: np.ndarray) -> float:

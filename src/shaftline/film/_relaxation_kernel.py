@@ -1,0 +1,129 @@
+"""Compiled red-black projected over-relaxation sweeps of the Reynolds complementarity problem.
+
+The one loop over grid nodes of the Reynolds-condition solver (:mod:`shaftline.film.relaxation`
+wraps it). A sweep updates each free node from its four neighbours; the nodes are coloured so
+that no two neighbours share a colour — red and black, (i + j) even or odd, and on a grid with
+an odd number of columns the last column (a neighbour of the first across theta = 0) in two
+colours of its own by row parity — and visited colour by colour, so the sweep is Gauss-Seidel in
+that order and its result does not depend on the order within a colour.
+
+This module imports numba; :mod:`shaftline.film.relaxation` imports it when a solver first
+sweeps, so that importing the film package stays cheap for callers that never solve.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+__all__ = ["projected_sor_sweeps"]
+
+
+_GRID = "float64[:, ::1]"
+
+
+# Compiled (or loaded from numba's cache) when this module is imported, not at the first call: a
+# process pool's fork server that imports it hands its workers the machine code.
+@njit(
+    f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], int64, float64, boolean)",
+    cache=True,
+    nogil=True,
+)
+def projected_sor_sweeps(
+    x: np.ndarray,
+    c_theta: np.ndarray,
+    c_z: np.ndarray,
+    rhs: np.ndarray,
+    fixed: np.ndarray,
+    sweeps: int,
+    omega: float,
+    until_settled: bool,
+) -> int:
+    """Up to ``sweeps`` projected SOR sweeps of ``A P = b, P >= 0`` on ``x`` (nz, nt), in place.
+
+    ``A`` is the five-point operator of the conductances ``c_theta`` (nz, nt; the link from
+    node (j, i) to (j, i + 1), periodic in i) and ``c_z`` (nz - 1, nt; from (j, i) to
+    (j + 1, i)): ``(A P)_n = sum_k c_nk (P_n - P_k)``. ``fixed`` (nz, nt) nodes keep their
+    values. With ``until_settled`` the sweeps stop after the first one that changes no node's
+    side of zero. Returns the number of sweeps done.
+    """
+    nz, nt = x.shape
+    keep = 1.0 - omega
+    # Each node's update as one multiply-add per neighbour: x <- keep x + r + sum_k a_k x_k.
+    east = np.zeros((nz, nt))
+    west = np.zeros((nz, nt))
+    north = np.zeros((nz, nt))
+    south = np.zeros((nz, nt))
+    source = np.zeros((nz, nt))
+    for j in range(nz):
+        for i in range(nt):
+            if fixed[j, i]:
+                continue
+            w = i - 1 if i > 0 else nt - 1
+            diagonal = c_theta[j, i] + c_theta[j, w]
+            if j + 1 < nz:
+                diagonal += c_z[j, i]
+            if j > 0:
+                diagonal += c_z[j - 1, i]
+            scale = omega / diagonal
+            east[j, i] = scale * c_theta[j, i]
+            west[j, i] = scale * c_theta[j, w]
+            if j + 1 < nz:
+                north[j, i] = scale * c_z[j, i]
+            if j > 0:
+                south[j, i] = scale * c_z[j - 1, i]
+            source[j, i] = scale * rhs[j, i]
+    odd = nt % 2 == 1
+    paired = nt - 1 if odd else nt  # columns coloured red and black
+    done = 0
+    while done < sweeps:
+        done += 1
+        switched = False
+        for colour in range(2):
+            for j in range(nz):
+                up = j + 1 if j + 1 < nz else j  # its coefficient is zero on the edge rows
+                down = j - 1 if j > 0 else j
+                for i in range((j + colour) % 2, paired, 2):
+                    if fixed[j, i]:
+                        continue
+                    e = i + 1 if i + 1 < nt else 0
+                    w = i - 1 if i > 0 else nt - 1
+                    old = x[j, i]
+                    new = (
+                        keep * old
+                        + source[j, i]
+                        + east[j, i] * x[j, e]
+                        + west[j, i] * x[j, w]
+                        + north[j, i] * x[up, i]
+                        + south[j, i] * x[down, i]
+                    )
+                    if new < 0.0:
+                        new = 0.0
+                    if (new <= 0.0) != (old <= 0.0):
+                        switched = True
+                    x[j, i] = new
+        if odd:
+            i = nt - 1
+            for colour in range(2):
+                for j in range(colour, nz, 2):
+                    if fixed[j, i]:
+                        continue
+                    up = j + 1 if j + 1 < nz else j
+                    down = j - 1 if j > 0 else j
+                    old = x[j, i]
+                    new = (
+                        keep * old
+                        + source[j, i]
+                        + east[j, i] * x[j, 0]
+                        + west[j, i] * x[j, i - 1]
+                        + north[j, i] * x[up, i]
+                        + south[j, i] * x[down, i]
+                    )
+                    if new < 0.0:
+                        new = 0.0
+                    if (new <= 0.0) != (old <= 0.0):
+                        switched = True
+                    x[j, i] = new
+        if until_settled and not switched:
+            break
+    return done
