@@ -127,3 +127,78 @@ def projected_sor_sweeps(
         if until_settled and not switched:
             break
     return done
+
+
+@njit(f"float64({_GRID}, boolean[:, ::1], {_GRID}, int64, int64)", cache=True, nogil=True, inline="always")
+def _pressure(u: np.ndarray, fixed: np.ndarray, fixed_pressure: np.ndarray, j: int, i: int) -> float:
+    """The pressure of a JFO node: its held value, or ``max(u, 0)`` (zero where cavitated)."""
+    return fixed_pressure[j, i] if fixed[j, i] else max(u[j, i], 0.0)
+
+
+@njit(
+    f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], {_GRID}, int64)",
+    cache=True,
+    nogil=True,
+)
+def jfo_gauss_seidel_sweeps(
+    u: np.ndarray,
+    c_theta: np.ndarray,
+    c_z: np.ndarray,
+    couette_face: np.ndarray,
+    rhs: np.ndarray,
+    diagonal: np.ndarray,
+    fixed: np.ndarray,
+    fixed_pressure: np.ndarray,
+    sweeps: int,
+) -> int:
+    """Up to ``sweeps`` red-black nonlinear Gauss-Seidel sweeps of the JFO equations on the
+    unknown ``u`` (nz, nt; ``P`` where the film is full, ``-s`` where cavitated), in place.
+
+    With its neighbours held, a node's residual is piecewise linear and increasing in its own
+    ``u``, with one root: ``-R0 / diag(A)`` when the residual at ``u = 0``, ``R0``, is negative,
+    else ``-R0 / q`` (``q = couette_face``, the Couette flux out through the node's east face;
+    :func:`shaftline.film.jfo.relaxed_set`). ``R0`` is the inflow of the western face's void
+    share ``q_west max(-u_west, 0)`` minus the pressure inflow from the four neighbours (their
+    ``max(u, 0)``, or ``fixed_pressure`` on fixed nodes) minus ``rhs``. Fixed nodes keep
+    ``u``. Stops after the first sweep that changes no node's side of zero (``u < 0``).
+    Returns the number of sweeps done.
+    """
+    nz, nt = u.shape
+    odd = nt % 2 == 1
+    paired = nt - 1 if odd else nt
+    done = 0
+    while done < sweeps:
+        done += 1
+        switched = False
+        for colour in range(4 if odd else 2):
+            for j in range(nz):
+                if colour < 2:
+                    first, last, step = (j + colour) % 2, paired, 2
+                elif j % 2 == colour - 2:
+                    first, last, step = nt - 1, nt, 1
+                else:
+                    continue
+                for i in range(first, last, step):
+                    if fixed[j, i]:
+                        continue
+                    e = i + 1 if i + 1 < nt else 0
+                    w = i - 1 if i > 0 else nt - 1
+                    inflow = c_theta[j, i] * _pressure(u, fixed, fixed_pressure, j, e)
+                    inflow += c_theta[j, w] * _pressure(u, fixed, fixed_pressure, j, w)
+                    if j + 1 < nz:
+                        inflow += c_z[j, i] * _pressure(u, fixed, fixed_pressure, j + 1, i)
+                    if j > 0:
+                        inflow += c_z[j - 1, i] * _pressure(u, fixed, fixed_pressure, j - 1, i)
+                    void_west = 0.0 if fixed[j, w] else max(-u[j, w], 0.0)
+                    residual_at_zero = couette_face[j, w] * void_west - inflow - rhs[j, i]
+                    old = u[j, i]
+                    if residual_at_zero < 0.0:
+                        new = -residual_at_zero / diagonal[j, i]
+                    else:
+                        new = -residual_at_zero / couette_face[j, i]
+                    if (new < 0.0) != (old < 0.0):
+                        switched = True
+                    u[j, i] = new
+        if not switched:
+            break
+    return done

@@ -424,35 +424,25 @@ def relaxed_set(
     set (the smoothing property multigrid rests on), on both the rupture and the reformation
     boundary, where the Reynolds-condition sweeps (:mod:`shaftline.film.relaxation`) would
     move the reformation boundary to the Reynolds condition's. Stops early once a sweep leaves
-    the set unchanged.
+    the set unchanged. The sweeps are compiled (:mod:`shaftline.film._relaxation_kernel`): in
+    numpy, each colour a dozen operations on the whole grid, they cost 0.6-1 ms on 100 x 60.
     """
+    from shaftline.film._relaxation_kernel import jfo_gauss_seidel_sweeps  # imports numba
+
     fixed = solver.fixed
-    nz, nt = fixed.shape
-    row, column = np.indices((nz, nt))
-    colour = (row + column) % 2
-    if nt % 2:  # theta = 0 neighbours the last column: that column gets two colours of its own
-        colour[:, -1] = 2 + row[:, -1] % 2
-    colours = [(colour == k) & ~fixed for k in range(int(colour.max()) + 1)]
-    c_theta, c_z, q = stencil.c_theta, stencil.c_z, stencil.couette_face
-    c_west = np.roll(c_theta, 1, axis=1)
-    diag = stencil_diagonal(stencil)
-    fixed_pressure = np.where(fixed, solver.fixed_pressure, 0.0)
-    u = np.where(fixed, 0.0, unknown)
+    u = np.where(fixed, 0.0, unknown).astype(np.float64, order="C")
+    jfo_gauss_seidel_sweeps(
+        u,
+        np.ascontiguousarray(stencil.c_theta, dtype=np.float64),
+        np.ascontiguousarray(stencil.c_z, dtype=np.float64),
+        np.ascontiguousarray(stencil.couette_face, dtype=np.float64),
+        np.ascontiguousarray(stencil.rhs, dtype=np.float64),
+        np.ascontiguousarray(stencil_diagonal(stencil), dtype=np.float64),
+        np.ascontiguousarray(fixed, dtype=np.bool_),
+        np.ascontiguousarray(np.where(fixed, solver.fixed_pressure, 0.0), dtype=np.float64),
+        int(sweeps),
+    )
     cavitated = (u < 0.0) & ~fixed
-    for _ in range(int(sweeps)):
-        for mine in colours:
-            pressure = np.where(fixed, fixed_pressure, np.maximum(u, 0.0))
-            inflow = c_theta * np.roll(pressure, -1, axis=1) + c_west * np.roll(pressure, 1, axis=1)
-            inflow[:-1] += c_z * pressure[1:]
-            inflow[1:] += c_z * pressure[:-1]
-            residual_at_zero = np.roll(q * np.maximum(-u, 0.0), 1, axis=1) - inflow - stencil.rhs
-            # q (the Couette flux out through the east face) > 0: theta runs with the rotation, H > 0.
-            root = np.where(residual_at_zero < 0.0, -residual_at_zero / diag, -residual_at_zero / q)
-            u = np.where(mine, root, u)
-        now = (u < 0.0) & ~fixed
-        if np.array_equal(now, cavitated):
-            break
-        cavitated = now
     return cavitated
 
 
