@@ -439,6 +439,31 @@ def test_work_here_while_the_workers_start_and_not_after(tmp_path):
     assert out["me"] not in {pid for _, pid in out["second"]}
 
 
+def test_workers_of_a_film_program_start_with_the_compiled_sweeps_loaded(tmp_path):
+    """A program that has imported the film package (not solved anything yet): its fork server
+    preloads the film solver's compiled kernel, so each worker finds it loaded instead of
+    loading numba at its first film solution (0.3-0.6 s a worker). A program that has not
+    imported the film package does not pay for it."""
+    script = """
+        import json
+        {imports}
+
+        def loaded(_):
+            import sys
+            return "shaftline.film._relaxation_kernel" in sys.modules
+
+        if __name__ == "__main__":
+            print(json.dumps(parallel.map(loaded, range(2), workers=2)))
+        """
+    for imports, expected in (
+        ("from shaftline import parallel", [False, False]),
+        ("import shaftline.film; from shaftline import parallel", [True, True]),
+    ):
+        result = _fresh_process(script.format(imports=imports), tmp_path)
+        assert result.returncode == 0, result.stderr
+        assert json.loads(result.stdout) == expected
+
+
 def test_an_error_in_a_job_solved_here_reaches_the_caller_with_its_type(tmp_path):
     script = """
         from shaftline import parallel

@@ -207,3 +207,16 @@ def test_the_small_coarse_grids_predict_the_set_without_factorising(monkeypatch)
     assert factorised == [100 * 60]
     coarse = bearing._solver_state().reynolds.coarse_grid()
     assert coarse is not None and isinstance(coarse.solver, ReynoldsSolver) and coarse.solver.masked
+
+
+def test_a_long_coarsest_grid_solves_its_own_set_before_the_sweeps():
+    """200 x 122 halves once, to 100 x 61 (61 columns: no further halving): sweeps from zero on
+    a grid that long leave the fine set thousands of nodes off (14-16 fine active-set
+    iterations), so that grid solves its own active set and the fine set starts near the
+    final one (4 iterations)."""
+    bearing = make_bearing(1.0, axial_nodes=200, circumferential_nodes=122)
+    coarse = bearing._solver_state().reynolds.coarse_grid()
+    assert coarse is not None and coarse.solver.shape == (100, 61) and coarse.solver.coarse_grid() is None
+    state = bearing.solve_at(JournalPosition(ey=-0.6 * CLEARANCE, ez=0.3 * CLEARANCE), warm_start=False)
+    assert state.cavitated.any()
+    assert state.iterations <= 6

@@ -92,6 +92,13 @@ NESTED_SWING = 0.02
 #: start the fine set 2 nodes off, as the coarse active sets did; at 1.7 it starts 4 off.
 CASCADE_SWEEPS = 30
 CASCADE_OMEGA = 1.85
+#: The coarsest grid starts the sweeps from zero only up to this many nodes in either direction;
+#: a longer one (the halving stops at an odd column count or below 9 axial nodes: 200 x 122 stops
+#: at 100 x 61, 16 x 250 at 8 x 125) solves its own active set instead, as the sweeps carry
+#: the boundary only some tens of cells. Sweeps from zero there left the 200 x 122 fine set 2201
+#: nodes off (17 active-set iterations instead of 3), 16 x 250 took 65 fine iterations instead
+#: of 10, and on 31 x 1202 the active set did not settle.
+CASCADE_COARSEST_SPAN = 40
 #: Active sets that differ from the kept factor's, on the same film, in at most this many
 #: nodes are solved with the factor and a bordered correction (:meth:`_NodeSetFactor.switch`):
 #: its k triangular solves (0.12 ms each on 100 x 60, against 1.0-1.3 ms for the numeric
@@ -654,11 +661,21 @@ class ReynoldsSolver:
         indicator of the grid below interpolated onto this one, or on the coarsest grid from
         ``guess`` (a pressure guess on this grid) or zero: the prediction climbs the grids by
         sweeps alone (a cascadic multigrid, docs/theory.md Sect. 4.1), with no factorisation.
-        On the NTUA case it costs a fifth of the coarse active-set chain it replaced (7 -> 2
-        factorisations of a cold solution, which starts 2 nodes off the final set either way).
+        A coarsest grid longer than :data:`CASCADE_COARSEST_SPAN` either way solves its own
+        active set instead (a prediction, a few nodes short of settling). On the NTUA case
+        (25 x 15 and 50 x 30 under 100 x 60) the fine set starts 2 nodes off the final one, as
+        from the coarse active sets this replaced, and a cold solution factorises once instead
+        of seven times.
         """
         stencil = build_stencil(film, self.d_theta, self.d_z, rough=self.flow)
         coarse = self.coarse_grid()
+        if coarse is None and max(self.shape) > CASCADE_COARSEST_SPAN:
+            # Too long (the halving stopped at an odd column count or a short bore) for sweeps
+            # from nothing to carry the boundary across: its own active set, a prediction only
+            # (a few nodes short of settling), started from the guess's swept set if any.
+            start_set = None if guess is None else self.predicted_set(stencil, guess)
+            solution = self._solve_reynolds_lcp(stencil, start_set, film, exact=False, settle=False)
+            return _set_indicator(stencil, solution.pressure, solution.cavitated, self.fixed)
         if coarse is None:
             start = np.zeros(self.shape) if guess is None else guess
         else:
@@ -974,8 +991,10 @@ class CoarseGrid:
         value_c = fine.fixed_pressure[rows][:, ::2].copy()
         fixed_c[[0, -1]] = True
         solver = ReynoldsSolver((nz_c, nt_c), 2.0 * fine.d_theta, fine.d_z * (nz - 1) / (nz_c - 1), fixed_c, value_c)
-        # Small coarse grids only predict the set: one symbolic analysis of the full pattern,
-        # then numeric factorisations only (2-4 times cheaper there than a fresh ordering).
+        # Small coarse grids predict the set by sweeps (_swept_indicator); where they solve an
+        # active set (a grid continuation's coarse equilibrium, a long coarsest grid, the JFO's
+        # coarsest start), one symbolic analysis of the full pattern, then numeric
+        # factorisations only (2-4 times cheaper there than a fresh ordering).
         solver.masked = nz_c * nt_c < PCG_MIN_NODES
         return cls(
             solver=solver,
