@@ -34,7 +34,6 @@ process group interrupts only the parent, which then ends them.
 
 from __future__ import annotations
 
-import importlib
 import multiprocessing
 import os
 import signal
@@ -96,21 +95,11 @@ SINGLE_THREADED = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM
 
 
 #: Compiled kernels of the film solver (numba: 0.5-0.9 s and about 100 MiB to load), imported by
-#: a process that uses the film package (it would at its first film solution) and by its fork
-#: server, so that the workers find them loaded instead of each loading them at its first film
-#: solution.
+#: the fork server of a process that uses the film package, so that its workers find them loaded
+#: instead of each loading them at its first film solution. The server imports them while this
+#: process goes on (it survives an ImportError of a preloaded module, e.g. no numba; the kernels
+#: compile without numba's cache where none can be written rather than raise).
 _FILM_KERNELS = ("shaftline.film._relaxation_kernel",)
-
-
-def _importable(name: str) -> bool:
-    """Whether module ``name`` imports in this process (importing it). The fork server survives
-    only an ImportError of a module it preloads; a compiled kernel may raise other errors (numba
-    with no writable cache), and such a module is then left to the workers' own imports."""
-    try:
-        importlib.import_module(name)
-    except Exception:
-        return False
-    return True
 
 
 #: Whether this process has started its fork server (its workers then start in milliseconds).
@@ -141,7 +130,7 @@ def _context(function: Callable[[Any], Any]) -> tuple[Any, bool]:
     )
     preload = ([module] if module and module not in ("__main__", "__mp_main__") else []) + loaded
     if any(name.startswith("shaftline.film") for name in loaded):
-        preload += [name for name in _FILM_KERNELS if _importable(name)]
+        preload += list(_FILM_KERNELS)
     context.set_forkserver_preload(list(dict.fromkeys(preload)))
     from multiprocessing import forkserver
 

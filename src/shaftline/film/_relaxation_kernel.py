@@ -1,17 +1,23 @@
-"""Compiled red-black projected over-relaxation sweeps of the Reynolds complementarity problem.
+"""Compiled red-black sweeps that predict the cavitated set of a film: projected over-relaxation
+of the Reynolds complementarity problem, and nonlinear Gauss-Seidel of the mass-conserving (JFO)
+equations.
 
-The one loop over grid nodes of the Reynolds-condition solver (:mod:`shaftline.film.relaxation`
-wraps it). A sweep updates each free node from its four neighbours; the nodes are coloured so
-that no two neighbours share a colour — red and black, (i + j) even or odd, and on a grid with
-an odd number of columns the last column (a neighbour of the first across theta = 0) in two
-colours of its own by row parity — and visited colour by colour, so the sweep is Gauss-Seidel in
-that order and its result does not depend on the order within a colour.
+The film solvers' loops over grid nodes (:func:`shaftline.film.relaxation.projected_sor` and
+:func:`shaftline.film.jfo.relaxed_set` wrap them). A sweep updates each free node from its four
+neighbours; the nodes are coloured so that no two neighbours share a colour — red and black,
+(i + j) even or odd, and on a grid with an odd number of columns the last column (a neighbour of
+the first across theta = 0) in two colours of its own by row parity — and visited colour by
+colour, so the sweep is Gauss-Seidel in that order and its result does not depend on the order
+within a colour.
 
-This module imports numba; :mod:`shaftline.film.relaxation` imports it when a solver first
-sweeps, so that importing the film package stays cheap for callers that never solve.
+This module imports numba; the film solvers import it when they first sweep, so that importing
+the film package stays cheap for callers that never solve.
 """
 
 from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 from numba import njit
@@ -22,13 +28,23 @@ __all__ = ["projected_sor_sweeps"]
 _GRID = "float64[:, ::1]"
 
 
+def _compiled(signature: str, **options: Any) -> Callable[[Callable[..., Any]], Any]:
+    """``numba.njit(signature)`` with numba's on-disk cache where it can write one (compiled once
+    per installation, about 2 s, then loaded in a fraction of that), without it where it cannot
+    (a read-only installation with no writable cache folder: compiled in every process)."""
+
+    def decorate(function: Callable[..., Any]) -> Any:
+        try:
+            return njit(signature, cache=True, **options)(function)
+        except RuntimeError:  # "cannot cache function ...: no locator available"
+            return njit(signature, cache=False, **options)(function)
+
+    return decorate
+
+
 # Compiled (or loaded from numba's cache) when this module is imported, not at the first call: a
 # process pool's fork server that imports it hands its workers the machine code.
-@njit(
-    f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], int64, float64, boolean)",
-    cache=True,
-    nogil=True,
-)
+@_compiled(f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], int64, float64, boolean)", nogil=True)
 def projected_sor_sweeps(
     x: np.ndarray,
     c_theta: np.ndarray,
@@ -129,17 +145,13 @@ def projected_sor_sweeps(
     return done
 
 
-@njit(f"float64({_GRID}, boolean[:, ::1], {_GRID}, int64, int64)", cache=True, nogil=True, inline="always")
+@_compiled(f"float64({_GRID}, boolean[:, ::1], {_GRID}, int64, int64)", nogil=True, inline="always")
 def _pressure(u: np.ndarray, fixed: np.ndarray, fixed_pressure: np.ndarray, j: int, i: int) -> float:
     """The pressure of a JFO node: its held value, or ``max(u, 0)`` (zero where cavitated)."""
     return fixed_pressure[j, i] if fixed[j, i] else max(u[j, i], 0.0)
 
 
-@njit(
-    f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], {_GRID}, int64)",
-    cache=True,
-    nogil=True,
-)
+@_compiled(f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], {_GRID}, int64)", nogil=True)
 def jfo_gauss_seidel_sweeps(
     u: np.ndarray,
     c_theta: np.ndarray,

@@ -108,7 +108,8 @@ CONTINUATION_NODES_OTHER = 20_000
 #: 1e-5 and 2e-3, one coarse iteration fewer at 2e-3 on the example, 5 % of its time). The
 #: mass-conserving model on a smooth rigid bore takes it too (18 NTUA JFO equilibria, the same
 #: grids, loads and tilts: the same fine iterations and flags at 1e-5 and 2e-3, positions
-#: within 6e-10 of the clearance, the 100 x 60 example 5 % faster). Liners and rough surfaces
+#: within 6e-10 of the clearance, the 100 x 60 example 5 % faster; of 108 a review tried, two
+#: took one fine iteration more, in the same time). Liners and rough surfaces
 #: keep :data:`OTHER_START_TOLERANCE`.
 CONTINUATION_TOLERANCE = 2e-3
 #: Force tolerance of the equilibria that only place the start of a bearing with a liner or a
@@ -2061,8 +2062,8 @@ class JournalBearing:
         """Equilibrium position on the grid halved in both directions (grid continuation) and
         its pressure brought onto this grid (relative, dimensionless: the start of the first
         film solution's active set), or None on a grid below :data:`CONTINUATION_NODES`
-        (:data:`CONTINUATION_NODES_OTHER` with a liner, a rough surface or the mass-conserving
-        model) or where it does not converge. A smooth rigid bore with the Reynolds condition
+        (:data:`CONTINUATION_NODES_OTHER` with a liner or a rough surface) or where it does not
+        converge. A smooth rigid bore with the Reynolds condition
         whose coarse equilibrium's line search ends at the film floor (contact) starts from where
         it ended: the fine film is then at or near its floor too, and its own iteration decides
         (NTUA at twice the load and the tilt, 100 x 60: 24 fine iterations crawling from the
@@ -2071,8 +2072,8 @@ class JournalBearing:
         Depends only on the problem and the arguments, as the equilibrium does."""
         options = self.options
         shape = coarse_shape((options.axial_nodes, options.circumferential_nodes))
-        # The mass-conserving film continues from the same grids (its fine start then comes from
-        # the coarse JFO unknown), with the force tolerance its solver paths were tuned with.
+        # The mass-conserving film on a smooth rigid bore continues from the same grids and to the
+        # same force tolerance (its fine start then comes from the coarse JFO unknown).
         smooth = self._smooth_rigid_active_set()
         plain = smooth and options.cavitation == "reynolds"
         threshold = CONTINUATION_NODES if smooth else CONTINUATION_NODES_OTHER

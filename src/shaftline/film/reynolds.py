@@ -95,9 +95,9 @@ CASCADE_OMEGA = 1.85
 #: The coarsest grid starts the sweeps from zero only up to this many nodes in either direction;
 #: a longer one (the halving stops at an odd column count or below 9 axial nodes: 200 x 122 stops
 #: at 100 x 61, 16 x 250 at 8 x 125) solves its own active set instead, as the sweeps carry
-#: the boundary only some tens of cells. Sweeps from zero there left the 200 x 122 fine set 2201
-#: nodes off (17 active-set iterations instead of 3), 16 x 250 took 65 fine iterations instead
-#: of 10, and on 31 x 1202 the active set did not settle.
+#: the boundary only some tens of cells. Sweeps from zero there left the 200 x 122 fine set up
+#: to 2201 nodes off (14-17 fine active-set iterations instead of 3-4), 16 x 250 took 65 fine
+#: iterations instead of 10 (four positions), and on 31 x 1202 the active set did not settle.
 CASCADE_COARSEST_SPAN = 40
 #: Active sets that differ from the kept factor's, on the same film, in at most this many
 #: nodes are solved with the factor and a bordered correction (:meth:`_NodeSetFactor.switch`):
