@@ -38,8 +38,8 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from numba import njit
 
+from shaftline._compiled import njit_cached
 from shaftline.friction.kernels import (
     finite_slope_force,
     finite_slope_force_slope,
@@ -104,7 +104,7 @@ def close_table(angle: np.ndarray, *values: np.ndarray) -> tuple[np.ndarray, ...
     return tuple(closed)
 
 
-@njit(cache=True)
+@njit_cached()
 def forcing(t, p):
     """(M_sp - M_hyd,mean, Q_c) at time t, s: the tables at psi = speed t, N m.
 
@@ -123,7 +123,7 @@ def forcing(t, p):
     return spindle - p.holding_moment, coulomb
 
 
-@njit(cache=True)
+@njit_cached()
 def spring(phi, p):
     """Oil spring through the pin (Eq. 4.25-4.27 with the backlash dead zone).
 
@@ -139,7 +139,7 @@ def spring(phi, p):
     return force, force * arm, p.oil_stiffness * arm * arm - force * p.pin_radius * np.sin(angle)
 
 
-@njit(cache=True)
+@njit_cached()
 def evaluate(y, spindle, coulomb, p, f, jac, with_jacobian):
     """The equations of motion: y' for the loads ``spindle``, ``coulomb`` (N m) into ``f`` and,
     ``with_jacobian``, d y'/d y into ``jac`` (n x n), exact.
@@ -177,25 +177,25 @@ def evaluate(y, spindle, coulomb, p, f, jac, with_jacobian):
             jac[1, 1] = -finite_slope_force_slope(w, coulomb, 0.0, p.threshold_velocity) / p.inertia
 
 
-@njit(cache=True)
+@njit_cached()
 def rates(y, spindle, coulomb, p, out):
     """Right-hand side y' for the loads ``spindle``, ``coulomb`` (N m), written into ``out``."""
     evaluate(y, spindle, coulomb, p, out, np.empty((0, 0)), False)
 
 
-@njit(cache=True)
+@njit_cached()
 def rates_jacobian(y, spindle, coulomb, p, out):
     """d y' / d y of :func:`rates`, written into ``out`` (n x n), exact (:func:`evaluate`)."""
     evaluate(y, spindle, coulomb, p, np.empty(y.size), out, True)
 
 
-@njit(cache=True)
+@njit_cached()
 def states(p):
     """Number of states: 3 with LuGre (phi, w, z), 2 with the static law (phi, w)."""
     return 3 if p.lugre else 2
 
 
-@njit(cache=True)
+@njit_cached()
 def at_rest(p):
     """What :func:`advance` carries from one chunk to the next, at rest: the state y = 0,
     followed by its rate y', not yet known (NaN)."""
@@ -205,7 +205,7 @@ def at_rest(p):
     return carried
 
 
-@njit(cache=True)
+@njit_cached()
 def rhs(t, y, p):
     """y'(t, y), the right-hand side for scipy's solve_ivp (allocates its result)."""
     spindle, coulomb = forcing(t, p)
@@ -214,7 +214,7 @@ def rhs(t, y, p):
     return out
 
 
-@njit(cache=True)
+@njit_cached()
 def jacobian(t, y, p):
     """d y'/d y (t, y), the Jacobian for scipy's solve_ivp (allocates its result)."""
     spindle, coulomb = forcing(t, p)
@@ -223,7 +223,7 @@ def jacobian(t, y, p):
     return out
 
 
-@njit(cache=True)
+@njit_cached()
 def spring_force(phi, p):
     """Oil-spring (yoke) force for each rotation in ``phi``, N."""
     force = np.empty(phi.size)
@@ -232,7 +232,7 @@ def spring_force(phi, p):
     return force
 
 
-@njit(cache=True)
+@njit_cached()
 def _newton_correction(jac, hc, b, n):
     """Solve (I - hc J) x = b for the Jacobian J of :func:`evaluate`; x replaces b.
 
@@ -258,7 +258,7 @@ def _newton_correction(jac, hc, b, n):
     b[1] = x1
 
 
-@njit(cache=True)
+@njit_cached()
 def _residual(y_new, r, y_ref, spindle, coulomb, hc, p, f, jac, out):
     """Residual y_new - r - hc y'(y_new) of an implicit stage into ``out``, and the Jacobian at
     y_new into ``jac`` (for the next Newton iteration); returns the residual's size for
@@ -277,7 +277,7 @@ def _residual(y_new, r, y_ref, spindle, coulomb, hc, p, f, jac, out):
     return size
 
 
-@njit(cache=True)
+@njit_cached()
 def _stage(p, t, hc, r, y_ref, y_new, f, jac, residual, delta, trial):
     """Solve the implicit stage y_new - hc y'(t, y_new) = r for y_new by Newton's method with
     the exact Jacobian, from the guess in ``y_new`` (overwritten with the solution).
@@ -322,7 +322,7 @@ def _stage(p, t, hc, r, y_ref, y_new, f, jac, residual, delta, trial):
     return False
 
 
-@njit(cache=True)
+@njit_cached()
 def periodic_change(values, end, per, period, limit):
     """How far the samples of the ``period`` revolutions ending at sample ``end`` are from
     repeating the ``period`` revolutions before them (``per`` samples a revolution): the
@@ -351,7 +351,7 @@ def periodic_change(values, end, per, period, limit):
     return change / (high - low) if high > low else np.inf
 
 
-@njit(cache=True)
+@njit_cached()
 def motion_period(phi, w, end, per, tolerance, longest):
     """The smallest number of revolutions m <= ``longest`` after which the motion repeats to
     ``tolerance`` at sample ``end`` (the end of a revolution): the rotation and the rotation
@@ -369,7 +369,7 @@ def motion_period(phi, w, end, per, tolerance, longest):
     return 0
 
 
-@njit(cache=True)
+@njit_cached()
 def advance(p, method, step, carried, first, last, every, revolution, tolerance, longest, phi_out, w_out, force_out):
     """Integrate from step ``first`` to step ``last`` (times ``first * step`` to
     ``last * step``, s) with ``method``, carrying the state in ``carried`` in place; stop
@@ -489,7 +489,7 @@ def advance(p, method, step, carried, first, last, every, revolution, tolerance,
     return unconverged, end, period
 
 
-@njit(cache=True)
+@njit_cached()
 def integrate(p, method, step, steps, every, revolution, tolerance, longest):
     """:func:`advance` from rest (y = 0 at t = 0) over at most ``steps`` steps of ``step`` s,
     in one compiled call (it cannot be interrupted).

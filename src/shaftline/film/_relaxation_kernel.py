@@ -16,11 +16,9 @@ the film package stays cheap for callers that never solve.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
-
 import numpy as np
-from numba import njit
+
+from shaftline._compiled import njit_cached
 
 __all__ = ["projected_sor_sweeps"]
 
@@ -28,23 +26,9 @@ __all__ = ["projected_sor_sweeps"]
 _GRID = "float64[:, ::1]"
 
 
-def _compiled(signature: str, **options: Any) -> Callable[[Callable[..., Any]], Any]:
-    """``numba.njit(signature)`` with numba's on-disk cache where it can write one (compiled once
-    per installation, about 2 s, then loaded in a fraction of that), without it where it cannot
-    (a read-only installation with no writable cache folder: compiled in every process)."""
-
-    def decorate(function: Callable[..., Any]) -> Any:
-        try:
-            return njit(signature, cache=True, **options)(function)
-        except RuntimeError:  # "cannot cache function ...: no locator available"
-            return njit(signature, cache=False, **options)(function)
-
-    return decorate
-
-
 # Compiled (or loaded from numba's cache) when this module is imported, not at the first call: a
 # process pool's fork server that imports it hands its workers the machine code.
-@_compiled(f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], int64, float64, boolean)", nogil=True)
+@njit_cached(f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], int64, float64, boolean)", nogil=True)
 def projected_sor_sweeps(
     x: np.ndarray,
     c_theta: np.ndarray,
@@ -145,13 +129,16 @@ def projected_sor_sweeps(
     return done
 
 
-@_compiled(f"float64({_GRID}, boolean[:, ::1], {_GRID}, int64, int64)", nogil=True, inline="always")
+@njit_cached(f"float64({_GRID}, boolean[:, ::1], {_GRID}, int64, int64)", nogil=True, inline="always")
 def _pressure(u: np.ndarray, fixed: np.ndarray, fixed_pressure: np.ndarray, j: int, i: int) -> float:
     """The pressure of a JFO node: its held value, or ``max(u, 0)`` (zero where cavitated)."""
     return fixed_pressure[j, i] if fixed[j, i] else max(u[j, i], 0.0)
 
 
-@_compiled(f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], {_GRID}, int64)", nogil=True)
+_JFO_SWEEPS = f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], {_GRID}, int64)"
+
+
+@njit_cached(_JFO_SWEEPS, nogil=True)
 def jfo_gauss_seidel_sweeps(
     u: np.ndarray,
     c_theta: np.ndarray,

@@ -15,10 +15,11 @@ imports it lazily, so that ``import shaftline.friction`` stays cheap).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from shaftline._compiled import njit_cached
 
 
-@njit(cache=True)
+@njit_cached()
 def stribeck_level(velocity, coulomb_force, static_force, stribeck_velocity):
     """Stribeck level g(v) = F_c + (F_s - F_c) exp(-(|v| / v_s)^2) (Eq. 4.14).
 
@@ -40,14 +41,14 @@ def stribeck_level(velocity, coulomb_force, static_force, stribeck_velocity):
     return coulomb_force + (static_force - coulomb_force) * np.exp(-((velocity / stribeck_velocity) ** 2))
 
 
-@njit(cache=True)
+@njit_cached()
 def stribeck_level_slope(velocity, coulomb_force, static_force, stribeck_velocity):
     """dg/dv of :func:`stribeck_level`, N s/m (N m s/rad); odd in v, zero at v = 0."""
     x = velocity / stribeck_velocity
     return -2.0 * x / stribeck_velocity * (static_force - coulomb_force) * np.exp(-(x**2))
 
 
-@njit(cache=True)
+@njit_cached()
 def stribeck_level_and_slope(velocity, coulomb_force, static_force, stribeck_velocity):
     """(g(v), dg/dv) of :func:`stribeck_level` and :func:`stribeck_level_slope` with one
     exponential, for an implicit integrator that needs both at every Newton iteration."""
@@ -56,7 +57,7 @@ def stribeck_level_and_slope(velocity, coulomb_force, static_force, stribeck_vel
     return coulomb_force + excess, -2.0 * x / stribeck_velocity * excess
 
 
-@njit(cache=True)
+@njit_cached()
 def lugre_state_rate(z, velocity, stiffness, level):
     """Bristle rate z' = v - sigma_0 |v| z / g(v) (Eq. 4.13 with g of Eq. 4.14; Dahl for g = F_c).
 
@@ -79,7 +80,7 @@ def lugre_state_rate(z, velocity, stiffness, level):
     return velocity - stiffness * np.abs(velocity) / level * z
 
 
-@njit(cache=True)
+@njit_cached()
 def lugre_state_rate_partials(z, velocity, stiffness, level, level_slope):
     """Partial derivatives of :func:`lugre_state_rate`: (dz'/dz in 1/s, dz'/dv dimensionless).
 
@@ -92,7 +93,7 @@ def lugre_state_rate_partials(z, velocity, stiffness, level, level_slope):
     return d_dz, d_dv
 
 
-@njit(cache=True)
+@njit_cached()
 def finite_slope_force(velocity, level, threshold_velocity):
     """Static law with a finite slope through zero velocity (Eq. 4.7; Eq. 4.8 for level = F_c).
 
@@ -115,7 +116,7 @@ def finite_slope_force(velocity, level, threshold_velocity):
     return level * np.minimum(np.maximum(velocity / threshold_velocity, -1.0), 1.0)
 
 
-@njit(cache=True)
+@njit_cached()
 def finite_slope_force_slope(velocity, level, level_slope, threshold_velocity):
     """dF/dv of :func:`finite_slope_force`, N s/m (N m s/rad).
 

@@ -27,8 +27,8 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from numba import njit
 
+from shaftline._compiled import njit_cached
 from shaftline.errors import InputError
 from shaftline.monitor.probes import ProbeLayout, Section
 
@@ -183,7 +183,7 @@ def _solver(section: Section, rotation: int, with_correction: bool) -> tuple[np.
     return np.linalg.pinv(matrix), along, normal
 
 
-@njit(cache=True, inline="always")
+@njit_cached(inline="always")
 def _circle_series(w: float, journal: float) -> float:
     """``R_j - sqrt(R_j^2 - w^2)`` by its series ``R_j (x/2 + x^2/8 + x^3/16)``, ``x = (w/R_j)^2``.
 
@@ -194,7 +194,7 @@ def _circle_series(w: float, journal: float) -> float:
     return journal * x * (0.5 + x * (0.125 + 0.0625 * x))
 
 
-@njit(cache=True)
+@njit_cached()
 def _orbit_kernel(
     gaps: np.ndarray,
     section_of_channel: np.ndarray,
