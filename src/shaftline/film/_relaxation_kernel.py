@@ -26,6 +26,19 @@ __all__ = ["projected_sor_sweeps"]
 _GRID = "float64[:, ::1]"
 
 
+@njit_cached("UniTuple(int64, 3)(int64, int64, int64)", nogil=True, inline="always")
+def _columns(colour: int, j: int, nt: int) -> tuple[int, int, int]:
+    """The columns of row ``j`` in ``colour`` as ``range(first, last, step)``: colours 0 and 1
+    are red and black ((i + j) even or odd), without the last column of an odd count, which
+    takes colours 2 (even rows) and 3 (odd rows); empty where the row has none."""
+    paired = nt - 1 if nt % 2 else nt
+    if colour < 2:
+        return (j + colour) % 2, paired, 2
+    if j % 2 == colour - 2:
+        return nt - 1, nt, 1
+    return 0, 0, 1
+
+
 # Compiled (or loaded from numba's cache) when this module is imported, not at the first call: a
 # process pool's fork server that imports it hands its workers the machine code.
 @njit_cached(f"int64({_GRID}, {_GRID}, {_GRID}, {_GRID}, boolean[:, ::1], int64, float64, boolean)", nogil=True)
@@ -73,17 +86,16 @@ def projected_sor_sweeps(
             if j > 0:
                 south[j, i] = scale * c_z[j - 1, i]
             source[j, i] = scale * rhs[j, i]
-    odd = nt % 2 == 1
-    paired = nt - 1 if odd else nt  # columns coloured red and black
     done = 0
     while done < sweeps:
         done += 1
         switched = False
-        for colour in range(2):
+        for colour in range(4 if nt % 2 else 2):
             for j in range(nz):
+                first, last, step = _columns(colour, j, nt)
                 up = j + 1 if j + 1 < nz else j  # its coefficient is zero on the edge rows
                 down = j - 1 if j > 0 else j
-                for i in range((j + colour) % 2, paired, 2):
+                for i in range(first, last, step):
                     if fixed[j, i]:
                         continue
                     e = i + 1 if i + 1 < nt else 0
@@ -94,28 +106,6 @@ def projected_sor_sweeps(
                         + source[j, i]
                         + east[j, i] * x[j, e]
                         + west[j, i] * x[j, w]
-                        + north[j, i] * x[up, i]
-                        + south[j, i] * x[down, i]
-                    )
-                    if new < 0.0:
-                        new = 0.0
-                    if (new <= 0.0) != (old <= 0.0):
-                        switched = True
-                    x[j, i] = new
-        if odd:
-            i = nt - 1
-            for colour in range(2):
-                for j in range(colour, nz, 2):
-                    if fixed[j, i]:
-                        continue
-                    up = j + 1 if j + 1 < nz else j
-                    down = j - 1 if j > 0 else j
-                    old = x[j, i]
-                    new = (
-                        keep * old
-                        + source[j, i]
-                        + east[j, i] * x[j, 0]
-                        + west[j, i] * x[j, i - 1]
                         + north[j, i] * x[up, i]
                         + south[j, i] * x[down, i]
                     )
@@ -163,20 +153,13 @@ def jfo_gauss_seidel_sweeps(
     Returns the number of sweeps done.
     """
     nz, nt = u.shape
-    odd = nt % 2 == 1
-    paired = nt - 1 if odd else nt
     done = 0
     while done < sweeps:
         done += 1
         switched = False
-        for colour in range(4 if odd else 2):
+        for colour in range(4 if nt % 2 else 2):
             for j in range(nz):
-                if colour < 2:
-                    first, last, step = (j + colour) % 2, paired, 2
-                elif j % 2 == colour - 2:
-                    first, last, step = nt - 1, nt, 1
-                else:
-                    continue
+                first, last, step = _columns(colour, j, nt)
                 for i in range(first, last, step):
                     if fixed[j, i]:
                         continue
