@@ -431,7 +431,7 @@ class ReynoldsSolver:
             return factor
         if factor is None or not factor.holds(free):
             self._factor = None  # a fine grid's factors need not fit in memory twice
-            factor = _NodeSetFactor.around(self.pattern, free, self.shape, NODE_SET_MARGIN)
+            factor = _NodeSetFactor.around(self.pattern, free, self.shape, NODE_SET_MARGIN, self.fixed.ravel())
         elif factor.switch(self._slot_values(stencil), stencil, free):
             return factor
         factor.factorise(self._slot_values(stencil), stencil, free)
@@ -822,15 +822,24 @@ class _NodeSetFactor:
     correction: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
 
     @classmethod
-    def around(cls, pattern: _Pattern, free: np.ndarray, shape: tuple[int, int], margin: int) -> _NodeSetFactor:
-        """A node set holding ``free`` (flat bool) and ``margin`` cells around it."""
+    def around(
+        cls,
+        pattern: _Pattern,
+        free: np.ndarray,
+        shape: tuple[int, int],
+        margin: int,
+        never_free: np.ndarray | None = None,
+    ) -> _NodeSetFactor:
+        """A node set holding ``free`` (flat bool) and ``margin`` cells around it, without the
+        nodes ``never_free`` (flat bool: the fixed nodes, which no set frees; in the set they
+        would only add fill, 3 % of the NTUA factorisation's time for the two edge rows)."""
         grid = free.reshape(shape)
         for _ in range(margin):
             grown = grid | np.roll(grid, 1, axis=1) | np.roll(grid, -1, axis=1)
             grown[1:] |= grid[:-1]
             grown[:-1] |= grid[1:]
             grid = grown
-        nodes = grid.ravel()
+        nodes = grid.ravel() if never_free is None else grid.ravel() & ~never_free
         slots = nodes[pattern.slot_row] & nodes[pattern.slot_col]
         index = np.cumsum(nodes) - 1
         size = int(index[-1]) + 1
