@@ -419,8 +419,8 @@ def relaxed_set(
     With its neighbours held, a node's residual is continuous, piecewise linear and increasing
     in its own unknown (slope ``diag(A)`` for ``u >= 0``, ``q`` for ``u < 0``), so it has one
     root: ``u = -R0 / diag(A)`` when the residual at ``u = 0``, ``R0``, is negative (full
-    film), else ``u = -R0 / q`` (cavitated). Nodes of one colour share no neighbour, so each
-    colour is updated at once. The sweeps remove the short-wavelength error of an interpolated
+    film), else ``u = -R0 / q`` (cavitated). Nodes of one colour share no neighbour, so the
+    order within a colour does not matter. The sweeps remove the short-wavelength error of an interpolated
     set (the smoothing property multigrid rests on), on both the rupture and the reformation
     boundary, where the Reynolds-condition sweeps (:mod:`shaftline.film.relaxation`) would
     move the reformation boundary to the Reynolds condition's. Stops early once a sweep leaves
@@ -442,8 +442,7 @@ def relaxed_set(
         np.ascontiguousarray(np.where(fixed, solver.fixed_pressure, 0.0), dtype=np.float64),
         int(sweeps),
     )
-    cavitated = (u < 0.0) & ~fixed
-    return cavitated
+    return (u < 0.0) & ~fixed
 
 
 def solve_jfo(

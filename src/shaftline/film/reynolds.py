@@ -648,12 +648,16 @@ class ReynoldsSolver:
         if solver.masked:
             return self.predicted_set(stencil, coarse.prolong(solver._swept_indicator(film_c, guess_c)))
         stencil_c = build_stencil(film_c, solver.d_theta, solver.d_z, rough=self.flow)
-        start_c = None if guess_c is None else solver.predicted_set(stencil_c, guess_c)
-        # Only a prediction: a coarse set a few nodes short of settling predicts the fine one as
-        # well (the sweeps below correct a node or two), without the coarse grid's last switch.
-        solution = solver._solve_reynolds_lcp(stencil_c, start_c, film_c, exact=False, settle=False)
-        indicator = _set_indicator(stencil_c, solution.pressure, solution.cavitated, solver.fixed)
-        return self.predicted_set(stencil, coarse.prolong(indicator))
+        return self.predicted_set(stencil, coarse.prolong(solver._solved_indicator(stencil_c, film_c, guess_c)))
+
+    def _solved_indicator(self, stencil: Stencil, film: np.ndarray, guess: np.ndarray | None) -> np.ndarray:
+        """The set indicator (:func:`_set_indicator`) of this grid's own active-set solution,
+        started from the swept set of ``guess`` (a pressure guess on this grid) if given. Only a
+        prediction: a set a few nodes short of settling predicts the finer one as well (its
+        sweeps correct a node or two), without this grid's last switch."""
+        start = None if guess is None else self.predicted_set(stencil, guess)
+        solution = self._solve_reynolds_lcp(stencil, start, film, exact=False, settle=False)
+        return _set_indicator(stencil, solution.pressure, solution.cavitated, self.fixed)
 
     def _swept_indicator(self, film: np.ndarray, guess: np.ndarray | None) -> np.ndarray:
         """The set indicator (:func:`_set_indicator`) of this grid's problem from
@@ -671,11 +675,8 @@ class ReynoldsSolver:
         coarse = self.coarse_grid()
         if coarse is None and max(self.shape) > CASCADE_COARSEST_SPAN:
             # Too long (the halving stopped at an odd column count or a short bore) for sweeps
-            # from nothing to carry the boundary across: its own active set, a prediction only
-            # (a few nodes short of settling), started from the guess's swept set if any.
-            start_set = None if guess is None else self.predicted_set(stencil, guess)
-            solution = self._solve_reynolds_lcp(stencil, start_set, film, exact=False, settle=False)
-            return _set_indicator(stencil, solution.pressure, solution.cavitated, self.fixed)
+            # from nothing to carry the boundary across: its own active set.
+            return self._solved_indicator(stencil, film, guess)
         if coarse is None:
             start = np.zeros(self.shape) if guess is None else guess
         else:
