@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from shaftline.outputs import MANIFEST
+from shaftline.outputs import MANIFEST, result_folder
 from tests.conftest import MINIMAL_CASE, invoke
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -130,3 +130,19 @@ def test_an_interrupt_leaves_nothing(case, tmp_path, monkeypatch):
     result = invoke("run", str(case), "--out", str(out), "--json", str(tmp_path / "r.json"))
     assert result.exit_code == 130 and result.stderr.strip() == "interrupted: nothing was written"
     assert not out.exists() and not (tmp_path / "r.json").exists()
+
+
+def test_the_manifest_says_which_files_the_latest_run_wrote(tmp_path):
+    # A folder reused for another verb keeps the first verb's files (not this run's to delete); the
+    # manifest lists every file shaftline wrote there and, apart, those of the latest run.
+    out = tmp_path / "out"
+    with result_folder(out) as staging:
+        (staging / "figures").mkdir()
+        (staging / "figures" / "gears_path.png").write_text("first verb")
+        (staging / "report.html").write_text("first")
+    with result_folder(out) as staging:
+        (staging / "report.html").write_text("second")
+    manifest = json.loads((out / MANIFEST).read_text())
+    assert manifest["files"] == ["figures/gears_path.png", "report.html"]
+    assert manifest["last_run"] == ["report.html"]
+    assert (out / "figures" / "gears_path.png").read_text() == "first verb"

@@ -142,6 +142,9 @@ def _manifest(out: Path, written: list[str]) -> dict[str, object]:
         "written_by": f"shaftline {shaftline.__version__}",
         "time": datetime.now(UTC).isoformat(timespec="seconds"),
         "files": sorted(set(written) | set(earlier)),
+        # Files of an earlier run stay (they are not this run's to delete); this list tells which
+        # of the folder's files the latest run wrote.
+        "last_run": sorted(written),
     }
 
 

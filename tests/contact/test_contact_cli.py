@@ -50,17 +50,10 @@ def test_example_runs_with_report_and_json(tmp_path):
             "contact.temperature = 220 degC: allowed in [-20, 200] degC",
         ),
         ('load_per_length = "300 N/mm"', 'load = "3 kN"', "contact.load"),
-        ('radius = "23.94 mm"\nspeed = "69.6 m/s"', 'radius = "23.94 mm"\nspeed = "-1 m/s"', "contact.body_1.speed"),
+        ('radius = "23.94 mm"\nspeed = "23.8 m/s"', 'radius = "23.94 mm"\nspeed = "-1 m/s"', "contact.body_1.speed"),
         ('roughness_ra = "0.4 um"', 'roughness_ra = "0.4 um"\nroughness_rq = "0.5 um"', "contact.body_1.roughness_ra"),
         ("speed_factors = [0.002, 2.0]", "speed_factors = [2.0, 0.002]", "contact.sweep.speed_factors"),
         ('geometry = "line"', 'geometry = "line"\nfilm_method = "hamrock_dowson"', "contact.film_method"),
-        # in the ester's data range but so cold and fast that Gupta's thermal factor would turn the film
-        # negative (Eq. 6 extrapolated so that the film is reached): the fit's limit is named
-        (
-            'temperature = "90 degC"',
-            'temperature = "-20 degC"\nextrapolate = true',
-            "contact.thermal loading L = 3232: allowed < 980.5, where Gupta's thermal reduction stays positive",
-        ),
     ],
 )
 def test_bad_input_one_line_exit_2_nothing_written(tmp_path, old, new, message):
@@ -74,6 +67,44 @@ def test_bad_input_one_line_exit_2_nothing_written(tmp_path, old, new, message):
         # inside the ester's data range: runs
         assert result.exit_code == 0, result.stderr
         return
+    assert result.exit_code == 2, result.stdout
+    assert message in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert not out.exists()
+
+
+@pytest.mark.parametrize(
+    ("replacements", "message"),
+    [
+        # in the ester's data range but so cold and fast that Gupta's thermal factor would turn the film
+        # negative (Eq. 6 extrapolated so that the film is reached): the fit's limit is named, with the
+        # case-file fields it comes from
+        (
+            [
+                ('temperature = "90 degC"', 'temperature = "-20 degC"\nextrapolate = true'),
+                ('speed = "23.8 m/s"', 'speed = "69.6 m/s"'),
+                ('speed = "26.3 m/s"', 'speed = "76.9 m/s"'),
+            ],
+            "contact.thermal loading L = beta eta0 u^2 / k_f (from the temperature and the speeds) = 3232: "
+            "allowed < 980.5, where Gupta's thermal reduction stays positive",
+        ),
+        # a load beyond the lubricant's pressure data: named as the mean Hertz pressure, in GPa, with
+        # the fields it comes from
+        (
+            [('load_per_length = "300 N/mm"', 'load_per_length = "6000 N/mm"')],
+            "contact.mean Hertz pressure p_m (from the load and the radii) = 3.33",
+        ),
+    ],
+)
+def test_a_derived_quantity_out_of_range_names_the_fields_it_comes_from(tmp_path, replacements, message):
+    text = EXAMPLE.read_text()
+    for old, new in replacements:
+        assert old in text
+        text = text.replace(old, new)
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    out = tmp_path / "out"
+    result = invoke("contact", "ehl", str(case), "--out", str(out))
     assert result.exit_code == 2, result.stdout
     assert message in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
@@ -95,8 +126,8 @@ def test_boundary_dominated_contact_is_a_design_finding(tmp_path):
     # 0.5 m/s leaves a film of a few nm: the film carries less than half the load (g < 0.5)
     text = (
         EXAMPLE.read_text()
-        .replace('speed = "69.6 m/s"', 'speed = "0.45 m/s"')
-        .replace('speed = "76.9 m/s"', 'speed = "0.5 m/s"')
+        .replace('speed = "23.8 m/s"', 'speed = "0.45 m/s"')
+        .replace('speed = "26.3 m/s"', 'speed = "0.5 m/s"')
     )
     case = tmp_path / "case.toml"
     case.write_text(text)
@@ -110,10 +141,10 @@ def test_boundary_dominated_contact_is_a_design_finding(tmp_path):
 
 
 def test_thermal_correction_clipped_to_zero_is_not_acceptable(tmp_path):
-    # issue 14 (g): the ester at 10 degC gives eta0 p_H u of about 7 Pa s GPa m/s, beyond Eq. 6's fit
-    # range, where its c is negative; extrapolate clips it to 0 and the friction comes out 0. A finding
+    # issue 14 (g): the ester at 0 degC gives an eta0 p_H u beyond Eq. 6's fit range, where its c is
+    # negative; extrapolate clips it to 0 and the friction comes out 0. A finding
     # that makes the run not acceptable (exit 3 without --strict), first in the output and in the JSON.
-    text = EXAMPLE.read_text().replace('temperature = "90 degC"', 'temperature = "10 degC"\nextrapolate = true')
+    text = EXAMPLE.read_text().replace('temperature = "90 degC"', 'temperature = "0 degC"\nextrapolate = true')
     case = tmp_path / "case.toml"
     case.write_text(text)
     result = invoke("contact", "ehl", str(case), "--json", str(tmp_path / "r.json"))

@@ -44,9 +44,11 @@ def test_thermal_correction_is_continuous_at_the_traction_peak():
     # The reading of Eq. 6 (c = (0.39 - 0.28 ln X) S^-(0.088 ln X + 0.220), X in Pa s GPa m/s)
     # gives c(S_m) = 1 within 8 % over X = 0.1-1.8 (found: 0.998 to 1.075) - the check that
     # supports the reading and its units; other sign readings or X in Pa s MPa m/s miss by far.
+    # The code's c just beyond S_m (where Eq. 6 applies), not a copy of the formula.
     x = np.linspace(0.1, 1.8, 200)
-    c_at_peak = (0.39 - 0.28 * np.log(x)) * friction.peak_slide_roll(x) ** -(0.088 * np.log(x) + 0.220)
+    c_at_peak = friction.thermal_correction(x, friction.peak_slide_roll(x) * (1.0 + 1e-9))
     assert np.all(np.abs(c_at_peak - 1.0) < 0.08)
+    assert np.abs(c_at_peak - 1.0).max() > 0.05  # the 7.5 % found: the branch beyond S_m was taken
     # c falls as sliding grows beyond the peak (the friction reduction Eq. 6 models)
     s = np.linspace(0.2, 2.0, 50)
     for value in (0.2, 0.5, 1.0, 1.8):
@@ -56,7 +58,11 @@ def test_thermal_correction_is_continuous_at_the_traction_peak():
 
 
 def test_thermal_correction_validity():
-    with pytest.raises(InputError, match=r"eta0 p_H u = 5 Pa s GPa m/s: allowed in \[0.1, 1.8\]"):
+    with pytest.raises(
+        InputError,
+        match=r"eta0 p_H u \(oil viscosity x peak Hertz pressure x rolling speed\) = 5 Pa s GPa m/s: "
+        r"allowed in \[0.1, 1.8\]",
+    ):
         friction.thermal_correction(5.0, 1.0)
     with pytest.warns(UserWarning, match="extrapolated"):
         c = friction.thermal_correction(5.0, 1.0, extrapolate=True)

@@ -1,6 +1,7 @@
 """Rheology: pressure-viscosity models, Vogel against ASTM D341, limiting shear stress, the
 Bair-Winer law, lubricant data and validity ranges."""
 
+import dataclasses
 import warnings
 
 import numpy as np
@@ -132,3 +133,24 @@ def test_fva_3_viscosity_against_a_second_public_source():
         ours = float(fva.viscosity.kinematic_viscosity(temperature)) * 1e6
         assert ours == pytest.approx(feup, rel=0.05), temperature
     assert float(fva.viscosity.density(15.0)) == pytest.approx(900.0, rel=0.02)
+
+
+@pytest.mark.parametrize(
+    ("change", "field"),
+    [
+        ({"pressure_viscosity": ()}, "pressure_viscosity"),
+        ({"pressure_viscosity": ((40.0, 2e-8), (40.0, 1e-8))}, "pressure_viscosity"),
+        ({"pressure_viscosity": ((40.0, 0.0),)}, "pressure_viscosity"),
+        ({"limiting_shear_ratio": 0.0}, "limiting_shear_ratio"),
+        ({"limiting_shear_stress_0": -1.0}, "limiting_shear_ratio"),
+        ({"thermal_conductivity": 0.0}, "thermal_conductivity"),
+        ({"temperature_range": (100.0, 20.0)}, "temperature_range"),
+        ({"max_pressure": 0.0}, "max_pressure"),
+    ],
+)
+def test_a_lubricant_lacking_data_is_refused_where_it_is_made(change, field):
+    # Through the API a lubricant without its pressure-viscosity data failed deep in a model
+    # (ValueError: not enough values to unpack), and tau_L = 0 silently gave no fluid friction.
+    with pytest.raises(InputError) as error:
+        dataclasses.replace(rheology.contact_lubricant("FVA 3"), **change)
+    assert error.value.field == field

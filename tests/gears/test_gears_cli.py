@@ -67,6 +67,16 @@ def test_fzg_case_ranks_the_stages_alike_and_calibrate_option_replaces_the_recor
             'tip_diameter = ["200 mm", "150 mm"]',
             "gears.pair.tip_diameter[0] = 0.2 m: allowed a pinion tip that meets the wheel flank",
         ),
+        # with tips given, the tips set the teeth's length: the message names them, not the addendum
+        (
+            'centre_distance = "140 mm"',
+            'tip_diameter = ["142 mm", "142 mm"]',
+            "gears.pair.tip_diameter[0] = 0.142 m: allowed teeth long enough for a transverse contact ratio >= 1",
+        ),
+        # angles in degrees, refused by the model's limits (no plausible range that sends the user
+        # to [case] unusual for a value the limits refuse anyway)
+        ('centre_distance = "140 mm"', 'helix_angle = "50 deg"', "gears.pair.helix_angle = 50 deg: allowed in [0, 45)"),
+        ('pressure_angle = "20 deg"', 'pressure_angle = "40 deg"', "gears.pair.pressure_angle = 40 deg: allowed in"),
         ('lubricant = "MIL-PRF-23699"', 'lubricant = "SAE 90"', "gears.lubricant = 'SAE 90': allowed one of"),
         (
             'oil_temperature = "90 degC"\ncritical_temperature = "126 degC"',
@@ -99,6 +109,32 @@ def test_bad_input_one_line_exit_2_nothing_written(tmp_path, old, new, message):
     result = invoke("gears", "scuffing", str(case), "--out", str(out))
     assert result.exit_code == 2, result.stdout
     assert message in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert not out.exists()
+
+
+def test_an_oil_above_its_iso_scuffing_temperature_is_refused(tmp_path):
+    # FVA 3 at 170 degC (extrapolated) is above the theta_S of about 158 degC that ISO/TS 6336-20 gives it
+    # from its failure stage: S_B = (theta_S - theta_oil)/(theta_B - theta_oil) would be negative (-6 was
+    # reported as an ordinary safety factor, exit 0). One line naming the field, exit 2, nothing written.
+    text = FZG.read_text()
+    for old, new in (
+        ('oil_temperature = "90 degC"', 'oil_temperature = "170 degC"'),
+        ('critical_temperature = "150 degC"', 'critical_temperature = "250 degC"'),
+    ):
+        assert old in text
+        text = text.replace(old, new)
+    if "extrapolate = true" not in text:
+        text = text.replace("[gears]\n", "[gears]\nextrapolate = true\n", 1)
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    shutil.copy(FZG.parent / "gears_fzg_a_test.csv", tmp_path)
+    out = tmp_path / "out"
+    result = invoke("gears", "scuffing", str(case), "--out", str(out))
+    assert result.exit_code == 2, result.stdout
+    assert "gears.oil_temperature = 170 degC: allowed below the scuffing temperature theta_S = 158 degC" in (
+        result.stderr
+    )
     assert len(result.stderr.strip().splitlines()) == 1
     assert not out.exists()
 

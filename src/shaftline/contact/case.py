@@ -42,8 +42,9 @@ CURVATURE_RADIUS = Plausible(
 SURFACE_SPEED = Plausible(
     0.0,
     200.0,
-    f"surface speeds of gears and bearings up to about 150 m/s (aerospace gears, {_SEED}: 18000 rpm on a 70 mm "
-    "radius, 132 m/s) (engineering judgement); mm/s written as m/s is above",
+    "surface speeds of gears and bearings (a flank rolls over the contact at omega x its radius of curvature: "
+    f"{_SEED}'s gears at 18000 rpm, 45 m/s at the pitch point, 68 m/s at a tip; pitch-line speeds of "
+    "aerospace gears reach about 150 m/s) (engineering judgement); mm/s written as m/s is above",
 )
 ROUGHNESS = Plausible(
     1e-9,

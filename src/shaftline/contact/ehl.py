@@ -208,7 +208,7 @@ def gupta(loading: ArrayLike, slide_roll: ArrayLike, pressure_ratio: ArrayLike) 
         value = float(np.broadcast_to(lo, bad.shape)[bad].flat[0])
         limit = float((13.2 * np.broadcast_to(ratio, bad.shape)[bad].flat[0]) ** (-1.0 / 0.42))
         raise InputError(
-            "thermal loading L",
+            "thermal loading L = beta eta0 u^2 / k_f (from the temperature and the speeds)",
             float(f"{value:.4g}"),
             "",
             f"< {limit:.4g}, where Gupta's thermal reduction stays positive (beyond it the fit gives a negative "

@@ -121,10 +121,10 @@ def thermal_correction(power: ArrayLike, slide_roll: ArrayLike, extrapolate: boo
         bounds = f"[{low}, {high}] Pa s GPa m/s where S > S_m (the fit range of seed 002 Eq. 6)"
         if not extrapolate:
             raise InputError(
-                "eta0 p_H u",
+                "eta0 p_H u (oil viscosity x peak Hertz pressure x rolling speed)",
                 value,
                 "Pa s GPa m/s",
-                f"in {bounds}, from viscosity, load and speed; extrapolate=true to go beyond",
+                f"in {bounds}: change the temperature, load or speed, or extrapolate=true to go beyond",
             )
         warnings.warn(
             f"eta0 p_H u = {value:g} Pa s GPa m/s is outside the validity range {bounds}: extrapolated, c clipped to "

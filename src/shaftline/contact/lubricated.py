@@ -20,6 +20,9 @@ from shaftline.errors import InputError, first_offending
 ArrayLike = float | np.ndarray
 Geometry = Literal["line", "point"]
 
+#: How an error names the mean Hertz pressure, which the user sets through the load and the radii.
+MEAN_PRESSURE = "mean Hertz pressure p_m (from the load and the radii)"
+
 
 @dataclass(frozen=True)
 class Surfaces:
@@ -104,8 +107,8 @@ class ContactState:
     half_width : ndarray
         Semi-width of the contact in the rolling direction, m.
     max_shear, max_shear_depth : ndarray
-        Largest subsurface shear stress (Pa) and its depth (m) (NaN for non-circular
-        elliptical contacts).
+        Largest subsurface shear stress (Pa) and its depth (m) on the contact's axis, for
+        line, circular and elliptical contacts.
     rolling_speed, sliding_speed, slide_roll : ndarray
         u = (u1 + u2)/2, Delta u = u2 - u1 (m/s) and S = Delta u / u.
     central_film, minimum_film : ndarray
@@ -214,9 +217,9 @@ def evaluate(
     friction = seed_friction(
         film_ratio=film_ratio,
         boundary=model.boundary_friction,
-        limiting_stress=lubricant.limiting_shear_stress(p_m, model.extrapolate),
+        limiting_stress=lubricant.limiting_shear_stress(p_m, model.extrapolate, MEAN_PRESSURE),
         viscosity_at_pressure=lubricant.viscosity_at(
-            p_m, temperature, model.pressure_viscosity_model, model.extrapolate
+            p_m, temperature, model.pressure_viscosity_model, model.extrapolate, MEAN_PRESSURE
         ),
         viscosity=eta0,
         rolling_speed=rolling,

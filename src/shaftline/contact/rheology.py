@@ -148,6 +148,35 @@ class ContactLubricant:
     source: str = ""
     notes: tuple[str, ...] = field(default=())
 
+    def __post_init__(self) -> None:
+        # A lubricant built through the API must carry every datum the contact models read:
+        # refused here in one line rather than failing deep inside a model (or, for tau_L = 0,
+        # silently giving no fluid friction).
+        points = self.pressure_viscosity
+        if not points or any(len(point) != 2 for point in points):
+            raise InputError("pressure_viscosity", list(points), "", "one or more (temperature degC, alpha 1/Pa) pairs")
+        temperatures = [float(t) for t, _ in points]
+        if any(not (a > 0.0) for _, a in points) or any(
+            b <= a for a, b in zip(temperatures, temperatures[1:], strict=False)
+        ):
+            raise InputError(
+                "pressure_viscosity", list(points), "", "alpha > 0 1/Pa at temperatures rising from pair to pair"
+            )
+        if not (self.limiting_shear_ratio > 0.0) or not (self.limiting_shear_stress_0 >= 0.0):
+            raise InputError(
+                "limiting_shear_ratio",
+                self.limiting_shear_ratio,
+                "",
+                "> 0 (with limiting_shear_stress_0 >= 0 Pa): the Bair-Winer stress needs tau_L(p) > 0",
+            )
+        if not (self.thermal_conductivity > 0.0):
+            raise InputError("thermal_conductivity", self.thermal_conductivity, "W/(m K)", "> 0")
+        low, high = self.temperature_range
+        if not (low < high):
+            raise InputError("temperature_range", list(self.temperature_range), "degC", "low < high")
+        if not (self.max_pressure > 0.0):
+            raise InputError("max_pressure", self.max_pressure, "Pa", "> 0")
+
     def check_temperature(self, temperature: ArrayLike, extrapolate: bool = False) -> np.ndarray:
         low, high = self.temperature_range
         return check_range("temperature", temperature, low, high, "degC", extrapolate, f"viscosity data of {self.name}")
@@ -170,19 +199,41 @@ class ContactLubricant:
         return np.asarray(lower - upper, dtype=float)
 
     def viscosity_at(
-        self, pressure: ArrayLike, temperature: ArrayLike, model: str = "roelands", extrapolate: bool = False
+        self,
+        pressure: ArrayLike,
+        temperature: ArrayLike,
+        model: str = "roelands",
+        extrapolate: bool = False,
+        quantity: str = "pressure",
     ) -> np.ndarray:
-        """Viscosity at pressure and temperature, Pa s (a key of :data:`PRESSURE_VISCOSITY_METHODS`)."""
+        """Viscosity at pressure and temperature, Pa s (a key of :data:`PRESSURE_VISCOSITY_METHODS`).
+        ``quantity`` names the pressure in an error (a caller passing a derived pressure says
+        what it comes from)."""
         if model not in PRESSURE_VISCOSITY_METHODS:
             raise InputError("pressure_viscosity_model", model, "", " or ".join(PRESSURE_VISCOSITY_METHODS))
-        p = check_range("pressure", pressure, 0.0, self.max_pressure, "Pa", extrapolate, f"data of {self.name}")
+        p = self._check_pressure(pressure, extrapolate, quantity)
         eta0 = self.dynamic_viscosity(temperature, extrapolate)
         return PRESSURE_VISCOSITY_METHODS[model](eta0, self.alpha(temperature), p)
 
-    def limiting_shear_stress(self, pressure: ArrayLike, extrapolate: bool = False) -> np.ndarray:
+    def limiting_shear_stress(
+        self, pressure: ArrayLike, extrapolate: bool = False, quantity: str = "pressure"
+    ) -> np.ndarray:
         """tau_L(p) = tau_L0 + gamma_L p, Pa."""
-        p = check_range("pressure", pressure, 0.0, self.max_pressure, "Pa", extrapolate, f"data of {self.name}")
+        p = self._check_pressure(pressure, extrapolate, quantity)
         return self.limiting_shear_stress_0 + self.limiting_shear_ratio * p
+
+    def _check_pressure(self, pressure: ArrayLike, extrapolate: bool, quantity: str) -> np.ndarray:
+        """The pressure in Pa, checked against the data's range in GPa (as a user reads it)."""
+        gpa = check_range(
+            quantity,
+            np.asarray(pressure, dtype=float) / 1e9,
+            0.0,
+            self.max_pressure / 1e9,
+            "GPa",
+            extrapolate,
+            f"data of {self.name}",
+        )
+        return gpa * 1e9
 
 
 def bair_winer_stress(viscosity: ArrayLike, shear_rate: ArrayLike, limiting_stress: ArrayLike) -> np.ndarray:

@@ -393,7 +393,7 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
             Paragraph(
                 "SP: seed 002 Eq. 7 as read in docs/theory.md 19.2; ISO: flash-temperature (S_B, TS 6336-20, "
                 f"{_flash_form(result)}) and "
-                "integral-temperature (S_intS, TS 6336-21; a ratio of absolute temperatures, < 1 high risk, 1-2 "
+                "integral-temperature (S_intS, TS 6336-21; a ratio of temperatures in °C, < 1 high risk, 1-2 "
                 "critical) methods with coefficients as transcribed (theory 19.3, 19.5).",
                 "note",
             ),

@@ -341,6 +341,16 @@ def iso_scuffing(
     bulk = oil_temperature + 0.47 * LUBRICATION_METHODS[data.lubrication] * mean_flash
     contact_max = bulk + flash.max(axis=-1)
     theta_s = scuffing_temperature(data, viscosity)
+    if np.any(~(np.asarray(theta_s) > oil_temperature)):
+        # S_B = (theta_S - theta_oil)/(theta_Bmax - theta_oil) would be negative or zero: an oil
+        # at or above its own scuffing temperature is outside what the method rates.
+        raise InputError(
+            "oil_temperature",
+            oil_temperature,
+            "degC",
+            f"below the scuffing temperature theta_S = {float(np.min(theta_s)):.0f} degC that ISO/TS 6336-20 gives "
+            "this oil from its FZG failure load stage; at or above it the method rates no load",
+        )
     safety = (theta_s - oil_temperature) / (contact_max - oil_temperature)
     mu = np.asarray(mu)
     if mu.ndim and mu.shape[-1] == 1:

@@ -153,10 +153,16 @@ class GearPair:
                 "a pinion tip that meets the wheel flank above its base circle (no interference)",
             )
         if self.transverse_contact_ratio < 1.0:
+            # The tips set the teeth's length where they are given; the addendum only otherwise.
+            field, value = "addendum", self.addendum
+            if self.tip_radius_1 is not None:
+                field, value = "tip_radius_1", self.tip_radius(1)
+            elif self.tip_radius_2 is not None:
+                field, value = "tip_radius_2", self.tip_radius(2)
             raise InputError(
-                "addendum",
-                self.addendum,
-                "",
+                field,
+                value,
+                "" if field == "addendum" else "m",
                 f"teeth long enough for a transverse contact ratio >= 1 (got {self.transverse_contact_ratio:.3f})",
             )
 
