@@ -18,9 +18,11 @@ measure).
    (its stencil is the smooth one: ``rough`` None takes the old code).
 3. 30-speed Stribeck curves, warm-started: seed 001's rig (examples/seed001_water_rig.toml,
    41 x 120, 3.5 to 350 rpm) and the NTUA bearing with the turned-steel / white-metal roughness
-   (100 x 60, the case's default 9 to 900 rpm), each by default (which runs serially below the
-   work estimate of ``stribeck.estimated_seconds``), explicitly serially (workers = 1) and on
-   the process pool (backend "process"), alternated run by run; ratio to the default.
+   (100 x 60, the case's default 9 to 900 rpm), and the rig on its polymer liner
+   (examples/seed001_water_rig_liner.toml, column model, the case's 9.5 to 950 rpm), each by
+   default (which runs serially below the work estimate of ``stribeck.estimated_seconds``),
+   explicitly serially (workers = 1) and on the process pool (backend "process"), alternated
+   run by run; ratio to the default.
    Target <= 5 s.
 4. Turbulence: seed 001's rig at 350 rpm (water, Re_h up to 7200), the equilibrium laminar and
    with the Ng-Pan coefficients (``[solver] turbulence = "on"``), smooth and rough; ratio to the
@@ -114,12 +116,18 @@ def main() -> None:
             f"{eq_on.state.max_reynolds_number:.0f}); ratio {t_on / t_off:.2f}"
         )
     ntua = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"]
+    lined = load_case(ROOT / "examples" / "seed001_water_rig_liner.toml").studies["bearing"]
     curves = (
         ("seed 001 rig, 3.5-350 rpm", rig, np.geomspace(3.5, 350.0, 30) * np.pi / 30.0),
         (
             "NTUA, white metal rough, 9-900 rpm",
             replace(ntua.cases[0], geometry=replace(ntua.cases[0].geometry, surface=surface)),
             np.asarray(ntua.stribeck_speeds),
+        ),
+        (
+            "seed 001 rig on its polymer liner (column), 9.5-950 rpm",
+            lined.cases[0],
+            np.asarray(lined.stribeck_speeds),
         ),
     )
     ways = (("default", {}), ("serial", {"workers": 1}), ("pool", {"backend": "process"}))
@@ -141,7 +149,7 @@ def main() -> None:
             print(
                 f"{name:8s} median {median:6.2f} s (runs {', '.join(f'{t:.2f}' for t in times[name])}), "
                 f"ratio to default {median / reference:5.2f}; transition {transition:.1f} rpm; "
-                f"{int(curve.contact.sum())} speeds in contact"
+                f"{int(curve.contact.sum())} speeds in contact, {int(curve.stalled.sum())} not converged"
             )
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from shaftline.film.stribeck import transition_speed
+from shaftline.film.stribeck import solved_transition, transition_speed
 from tests.conftest import invoke
 
 RIG = """
@@ -111,6 +111,61 @@ def test_transition_speed_interpolates_in_log_speed() -> None:
     assert transition_speed(speed, np.array([0.5, 0.02, 0.0])) == pytest.approx(np.sqrt(1000.0))
     assert transition_speed(speed, np.array([0.005, 0.0, 0.0])) is None  # lifted off from the start
     assert transition_speed(speed, np.array([0.5, 0.2, 0.1])) is None  # never lifts off
+
+
+def test_transition_speed_from_the_solved_speeds_only() -> None:
+    # A speed that did not converge is no solution: its share does not enter the transition. Solved:
+    # 2 % at 10, 0 % at 100 rpm-units; the stalled speed at 30 (share 0.5, nonsense) lies between
+    # them, so the transition (at sqrt(1000) from the solved pair) is uncertain.
+    speed = np.array([1.0, 10.0, 30.0, 100.0])
+    share = np.array([0.5, 0.02, 0.5, 0.0])
+    converged = np.array([True, True, False, True])
+    contact = np.zeros(4, bool)
+    transition, uncertain = solved_transition(speed, share, converged, contact)
+    assert transition == pytest.approx(np.sqrt(1000.0)) and uncertain
+    # the stalled speed below the solved bracket: the transition stands
+    converged = np.array([False, True, True, True])
+    share = np.array([0.5, 0.5, 0.02, 0.0])
+    transition, uncertain = solved_transition(np.array([1.0, 3.0, 10.0, 100.0]), share, converged, contact)
+    assert transition == pytest.approx(np.sqrt(1000.0)) and not uncertain
+    # a speed at the film floor counts as carried by the asperities alone (share 1)
+    contact = np.array([False, False, True, False])
+    share = np.array([0.5, 0.02, 0.0, 0.0])
+    transition, uncertain = solved_transition(speed, share, np.array([True, True, False, True]), contact)
+    assert transition == pytest.approx(30.0**0.01 * 100.0**0.99) and not uncertain
+    # stalled speeds below every solved one, all lifted off: the transition may be among them
+    transition, uncertain = solved_transition(
+        speed, np.array([0.5, 0.5, 0.0, 0.0]), np.array([False, False, True, True]), np.zeros(4, bool)
+    )
+    assert transition is None and uncertain
+
+
+def test_a_transition_among_unsolved_speeds_is_not_acceptable() -> None:
+    # The curve's finding is advisory while the transition rests on solved speeds, and makes the run
+    # not acceptable (criterion False: exit 3 without --strict) when it does not.
+    from shaftline.cases import load_case
+    from shaftline.film.capability import _stribeck_findings
+    from shaftline.film.stribeck import StribeckCurve
+
+    case = load_case(Path(__file__).parents[2] / "examples" / "seed001_water_rig.toml").studies["bearing"].cases[0]
+    rpm = np.array([10.0, 30.0, 100.0])
+    zeros = np.zeros(3)
+    flags = {"converged": np.array([True, False, True]), "contact": np.zeros(3, bool)}
+    for uncertain in (False, True):
+        curve = StribeckCurve(
+            rpm * np.pi / 30,
+            zeros,
+            zeros,
+            zeros,
+            zeros,
+            (None,) * 3,
+            **flags,
+            transition_speed=5.0,
+            transition_uncertain=uncertain,
+        )
+        (finding,) = _stribeck_findings(curve, case)
+        assert finding.criterion is not uncertain
+        assert ("transition speed rests on them" in " ".join(finding.text.split())) is uncertain
 
 
 @pytest.mark.parametrize(

@@ -1632,6 +1632,7 @@ class JournalBearing:
         initial: JournalPosition | None = None,
         progress: Callable[[int, float], None] | None = None,
         initial_cavitated: np.ndarray | None = None,
+        initial_deformation: np.ndarray | None = None,
     ) -> Equilibrium:
         """Find the mid-plane journal offsets at which the film carries the applied load.
 
@@ -1662,6 +1663,11 @@ class JournalBearing:
             a neighbouring equilibrium (a sweep); without it the set comes from the coarse
             grids. The solution of the cavitation problem is unique, so this changes the
             active-set iterations, not the result.
+        initial_deformation : ndarray (nz, nt), optional
+            Liner deformation (m) to start the first film-liner iteration from, e.g.
+            ``state.liner_deformation`` of a neighbouring equilibrium (a sweep); without it the
+            iteration starts from the undeformed liner. It changes the iterations and the result
+            only within the liner's tolerance. Ignored without a liner or on another grid.
 
         Raises
         ------
@@ -1678,7 +1684,7 @@ class JournalBearing:
         magnitude = float(np.hypot(*load))
         if magnitude == 0.0:
             raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
-        found = self._find_equilibrium(load, tilt_y, tilt_z, initial, progress, initial_cavitated)
+        found = self._find_equilibrium(load, tilt_y, tilt_z, initial, progress, initial_cavitated, initial_deformation)
         state = self._state(found.evaluation, load=load)
         contact = found.contact
         if found.started and not found.converged and self._at_floor(state.min_film_thickness):
@@ -1695,6 +1701,7 @@ class JournalBearing:
         initial: JournalPosition | None = None,
         progress: Callable[[int, float], None] | None = None,
         initial_cavitated: np.ndarray | None = None,
+        initial_deformation: np.ndarray | None = None,
     ) -> _Found:
         """The iteration of :meth:`equilibrium` (its arguments checked, ``load`` (2,) N) up to its
         last film solution, without the state: the coarse grid's and the rigid bore's equilibria,
@@ -1739,7 +1746,13 @@ class JournalBearing:
         settle_below = (
             REFINE_RESIDUAL if self.options.cavitation == "reynolds" else JFO_UNSETTLED_RESIDUAL
         ) * magnitude
-        evaluation, started = self._start_evaluation(position, start_set, start_pressure, settle=not loose)
+        deformation = None
+        if self.geometry.liner is not None and initial_deformation is not None:
+            if np.shape(initial_deformation) == (self.options.axial_nodes, self.options.circumferential_nodes):
+                deformation = np.array(initial_deformation, dtype=float)
+        evaluation, started = self._start_evaluation(
+            position, start_set, start_pressure, settle=not loose, deformation=deformation
+        )
         residual = evaluation.force + load
         if not started:
             # No position of the retreat settles the film-liner iteration: the start itself,
@@ -1859,6 +1872,7 @@ class JournalBearing:
         start: np.ndarray | None,
         start_pressure: np.ndarray | None = None,
         settle: bool = True,
+        deformation: np.ndarray | None = None,
     ) -> tuple[_Evaluation, bool]:
         """The equilibrium's first film solution, at ``position`` or, where an elastic liner's
         film-liner iteration does not settle there, at the first position of :meth:`_retreat`
@@ -1872,7 +1886,12 @@ class JournalBearing:
         takes it down to the equilibrium, with its line search rejecting trials that do not
         settle (docs/theory.md, "Starting a lined equilibrium")."""
         try:
-            return self._evaluate(position, start=start, start_pressure=start_pressure, settle=settle), True
+            return (
+                self._evaluate(
+                    position, start=start, start_pressure=start_pressure, settle=settle, deformation=deformation
+                ),
+                True,
+            )
         except LinerConvergenceError as failure:
             first = failure
         for lifted in self._retreat(position):
@@ -2334,11 +2353,12 @@ class JournalBearing:
             friction = float(np.sum(shear * weights))
             fluid_friction, boundary_friction = friction, 0.0
         else:
-            # Couette shear over the mean gap h_T (finite as h -> 0), Poiseuille part as smooth;
+            # Couette shear over the mean gap h_T (finite as h -> 0), the Poiseuille part over h_T
+            # too (the nominal h is negative past the mean plane and would turn its sign);
             # boundary friction on the asperity pressure (docs/theory.md, "Mixed lubrication").
             lam = film / surface.sigma
             gap = surface.sigma * mean_gap(lam)
-            shear = op.viscosity * speed * shearing * couette / gap + 0.5 * film * dp_dx
+            shear = op.viscosity * speed * shearing * couette / gap + 0.5 * gap * dp_dx
             fluid_friction = float(np.sum(shear * weights))
             assert contact is not None
             boundary_friction = float(np.sum(surface.boundary_friction * contact * weights))

@@ -274,7 +274,7 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
             for label, key in (
                 ("inlet temperature [°C]", "inlet_temperature"),
                 ("effective temperature [°C]", "effective_temperature"),
-                ("outlet temperature [°C]", "outlet_temperature"),
+                ("outlet (hottest) temperature [°C]", "outlet_temperature"),
             ):
                 rows.append(
                     [label]
@@ -470,6 +470,7 @@ def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
         "transition_speed_rpm": None
         if curve.transition_speed is None
         else float(curve.transition_speed * 30.0 / math.pi),
+        "transition_uncertain": curve.transition_uncertain,
     }
     if curve.max_reynolds_number is not None and curve.turbulent is not None:
         out["max_reynolds_number"] = clean(curve.max_reynolds_number)
@@ -480,8 +481,15 @@ def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
 def _stribeck_table(result: BearingStudyResult) -> Table:
     curve = result.stribeck
     assert curve is not None
-    lowest = int(curve.friction_coefficient.argmin())
+    # the lowest friction of the speeds that are solutions (not at the floor, converged)
+    solutions = curve.converged.astype(bool) & ~curve.contact.astype(bool)
+    friction = curve.friction_coefficient if not solutions.any() else curve.friction_coefficient.copy()
+    if solutions.any():
+        friction[~solutions] = math.inf
+    lowest = int(friction.argmin())
     transition = "-" if curve.transition_speed is None else fmt(curve.transition_speed * 30.0 / math.pi, 1, 4)
+    if curve.transition_uncertain:
+        transition += " (uncertain: among speeds not converged)"
     rows = [
         ["speeds [rpm]", f"{fmt(curve.speed[0] * 30 / math.pi)} to {fmt(curve.speed[-1] * 30 / math.pi)}"],
         ["transition speed, asperity share < 1 % [rpm]", transition],
@@ -491,7 +499,7 @@ def _stribeck_table(result: BearingStudyResult) -> Table:
     ]
     # A rough film that stalls above its boundary limit is not contact (docs/theory.md, "Boundary
     # lubrication"): said apart, so that a curve with such speeds is not read as all converged.
-    stalled = int((~curve.converged.astype(bool) & ~curve.contact.astype(bool)).sum())
+    stalled = int(curve.stalled.sum())
     if stalled:
         rows.append(["speeds not converged (above the contact limit)", str(stalled)])
     if curve.max_reynolds_number is not None and curve.turbulent is not None:
@@ -539,17 +547,24 @@ def _stribeck_findings(curve: StribeckCurve, case: BearingCase) -> list[Finding]
     near ε = 1 the zone (film within σ of its minimum) is 2 sqrt(2σ/c) wide (docs/theory.md, "Rigid
     rough bore at low speed"), so :data:`~shaftline.film.bearing.SETTLE_ZONE_NODES` + 1 nodes
     across it (one for the count's rounding) need that many times 2 pi over its width round the bore.
-    Advisory (``criterion``): the rest of the curve stands, and the table counts them too."""
+    Advisory (``criterion``) while the transition speed rests on solved speeds: the rest of the
+    curve stands, and the table counts them too; not acceptable when the transition lies among
+    them (``StribeckCurve.transition_uncertain``)."""
     from shaftline.film.bearing import SETTLE_ZONE_NODES
 
-    stalled = ~curve.converged.astype(bool) & ~curve.contact.astype(bool)
+    stalled = curve.stalled
     if not stalled.any():
         return []
     rpm = curve.speed[stalled] * 30.0 / math.pi
     text = (
         f"Stribeck curve: {int(stalled.sum())} of {curve.speed.size} speeds ({fmt(float(rpm.min()))} to "
-        f"{fmt(float(rpm.max()))} rpm) did not converge above the contact limit; their points are not solutions."
+        f"{fmt(float(rpm.max()))} rpm) did not converge above the contact limit; their points are not solutions "
+        "(drawn apart, without a regime)."
     )
+    if curve.transition_uncertain:
+        text += (
+            " The transition speed rests on them: it lies among speeds that did not converge, so it is not a result."
+        )
     geometry, nodes = case.geometry, case.options.circumferential_nodes
     if geometry.surface is not None and geometry.liner is None:
         width = 2.0 * math.sqrt(2.0 * geometry.surface.sigma / geometry.radial_clearance)  # rad, at ε = 1
@@ -562,4 +577,6 @@ def _stribeck_findings(curve: StribeckCurve, case: BearingCase) -> list[Finding]
                 f"{SETTLE_ZONE_NODES} needed for a root Newton can follow): [bearing.solver] circumferential_nodes "
                 f'of about {needed} resolve it, or model the liner (docs/theory.md, "Rigid rough bore at low speed").'
             )
-    return [Finding(text, criterion=True)]
+    # Advisory while the transition speed rests on solved speeds (the curve's other points
+    # stand); not acceptable when it does not.
+    return [Finding(text, criterion=not curve.transition_uncertain)]

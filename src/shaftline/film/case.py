@@ -793,7 +793,7 @@ FAR_BELOW_TRANSITION = 0.1
 
 
 def turbulence_note(
-    geometry: BearingGeometry, operating: OperatingPoint, speed: float, field: str = "solver"
+    geometry: BearingGeometry, operating: OperatingPoint, speed: float, field: str = "bearing.solver"
 ) -> str | None:
     """A note when turbulence is asked for with a film whose largest local Reynolds number
     (``2 Re_c``, a film of at most 2c) is far below the Taylor-vortex onset; None otherwise.
@@ -844,7 +844,7 @@ def turbulence_notes(
     options: SolverOptions,
     geometry: BearingGeometry,
     operating: OperatingPoint,
-    field: str = "solver",
+    field: str = "bearing.solver",
 ) -> list[str]:
     """The notes (not errors) on a film's turbulence settings, the same for ``[bearing.solver]``
     and ``[alignment.bearings.film.solver]``: turbulence on for a film far below transition
@@ -966,7 +966,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
     layer = layer_note(base_geometry, options.axial_nodes)
     if layer is not None:
         context.warnings.append(layer)
-    context.warnings.extend(turbulence_notes(section.solver, options, base_geometry, operating))
+    context.warnings.extend(turbulence_notes(section.solver, options, base_geometry, operating, "bearing.solver"))
     tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)
     tilt_z = _tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, length, clearance)
 

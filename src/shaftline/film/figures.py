@@ -115,16 +115,21 @@ def contact_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     assert state.asperity_pressure is not None and state.film_ratio is not None
     contact = state.asperity_pressure[:, order] / 1e6
     ratio = np.minimum(state.film_ratio[:, order], 10.0)
+    # A film below the asperities' mean plane (boundary lubrication, docs/theory.md) has λ < 0:
+    # the scale reaches down to it, with λ = 0 drawn too.
+    low = min(0.0, float(np.floor(ratio.min())))
     mesh = ax[0].contourf(theta, z, contact, levels=30, cmap="magma", rasterized=True)
     ax[0].figure.colorbar(mesh, ax=ax[0], label="asperity pressure p_a [MPa]")
-    mesh = ax[1].contourf(theta, z, ratio, levels=np.linspace(0.0, 10.0, 41), cmap="RdYlGn", rasterized=True)
+    mesh = ax[1].contourf(theta, z, ratio, levels=np.linspace(low, 10.0, 41), cmap="RdYlGn", rasterized=True)
     ax[1].figure.colorbar(mesh, ax=ax[1], label="λ = h/σ (capped at 10)")
-    ax[1].contour(theta, z, ratio, levels=[1.0, 3.0], colors="k", linewidths=0.8)
+    limits = [1.0, 3.0] if low == 0.0 else [0.0, 1.0, 3.0]
+    ax[1].contour(theta, z, ratio, levels=limits, colors="k", linewidths=0.8)
     for axes in ax:
         _unwrapped_axes(axes)
     head = f"{plain(title)}: " if title else ""
     ax[0].set_title(f"{head}asperities carry {100 * state.asperity_load_share:.2g} % of the load")
-    ax[1].set_title(f"λ_min = {state.min_film_ratio:.2f} ({state.lubrication_regime}); contours λ = 1, 3")
+    shown = ", ".join(f"{v:g}" for v in limits)
+    ax[1].set_title(f"λ_min = {state.min_film_ratio:.2f} ({state.lubrication_regime}); contours λ = {shown}")
     return ax
 
 
@@ -168,13 +173,21 @@ def stribeck(curve: Any, title: str = "", *, ax: Any) -> Any:
     from matplotlib.patches import Patch
 
     rpm = curve.speed * 30.0 / np.pi
-    ok = ~curve.contact
+    contact = curve.contact.astype(bool)
+    stalled = curve.stalled
+    ok = ~contact & ~stalled
     ax[0].loglog(rpm[ok], curve.friction_coefficient[ok], "o-", color="C0", ms=3, label="friction coefficient")
     ax[1].semilogx(rpm[ok], curve.min_film_thickness[ok] * 1e6, "o-", color="C2", ms=3, label="h_min")
-    if (~ok).any():
-        # The same speeds marked on both panels: a film at its floor is not an equilibrium's h_min.
-        for axes, values in ((ax[0], curve.friction_coefficient), (ax[1], curve.min_film_thickness * 1e6)):
-            axes.plot(rpm[~ok], values[~ok], "x", color="C3", label="contact: load not carried")
+    # The same speeds marked on both panels, off the curve: a film at its floor is not an
+    # equilibrium's h_min, and a speed that did not converge is no solution at all.
+    for axes, values in ((ax[0], curve.friction_coefficient), (ax[1], curve.min_film_thickness * 1e6)):
+        if contact.any():
+            axes.plot(rpm[contact], values[contact], "x", color="C3", label="contact: load not carried")
+        if stalled.any():
+            shown = stalled & (values > 0.0) if axes is ax[0] else stalled
+            axes.plot(
+                rpm[shown], values[shown], "o", mfc="none", color="0.45", ms=4, label="not converged: no solution"
+            )
     colours = {"boundary": "#f4cccc", "mixed": "#fff2cc", "full film": "#d9ead3"}
     edges = np.sqrt(rpm[1:] * rpm[:-1])
     lows = np.concatenate([[rpm[0]], edges])
@@ -184,8 +197,9 @@ def stribeck(curve: Any, title: str = "", *, ax: Any) -> Any:
             for axes in ax:
                 axes.axvspan(low, high, color=colours[regime], lw=0, zorder=0)
     if curve.transition_speed is not None:
+        label = "asperity share < 1 %" + (" (uncertain: speeds not converged)" if curve.transition_uncertain else "")
         for axes in ax:
-            axes.axvline(curve.transition_speed * 30.0 / np.pi, color="k", ls="--", lw=1, label="asperity share < 1 %")
+            axes.axvline(curve.transition_speed * 30.0 / np.pi, color="k", ls="--", lw=1, label=label)
     ax[0].set_ylabel("friction coefficient [-]")
     ax[1].set_ylabel("h_min [µm]")
     # The regimes' colours in the legend (they were named in a title too long for the axes).

@@ -28,6 +28,7 @@ __all__ = [
     "TRANSITION_SHARE",
     "StribeckCurve",
     "estimated_seconds",
+    "solved_transition",
     "stribeck_curve",
     "transition_speed",
 ]
@@ -47,10 +48,13 @@ LINER_FACTOR = 5.0
 #: (bench_liner_work.py, docs/validation.md "Elastic layer"): 2 on top of LINER_FACTOR.
 LAYER_FACTOR = 2.0
 #: A curve estimated below this many seconds serially runs serially by default: the pool's
-#: start-up (1-3 s: the workers import the solver and build their tables) and the cold start
-#: of every chunk pay off only on long curves. Measured on 30 speeds (docs/validation.md): pool
-#: of 2 workers 7.1 s, serial 4.1 s (seed 001's rig); 5.9 s against 2.8 s (NTUA, rough).
-POOL_MIN_SECONDS = 20.0
+#: start-up and the cold start of every chunk pay off only on longer curves. Measured on 30
+#: speeds when this was set to 20 s (docs/validation.md): pool of 2 workers 7.1 s, serial 4.1 s
+#: (seed 001's rig); 5.9 s against 2.8 s (NTUA, rough). Lowered to 10 s (2026-11-25): the pool
+#: now starts in well under a second, and the lined rig (estimate 14.8 s) took 5.4 s serially
+#: against 4.4 s on the pool through the CLI; the rigid rig (estimate 3 s) stays serial (1.6 s
+#: against 1.2-1.9 s on a fresh pool).
+POOL_MIN_SECONDS = 10.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -70,7 +74,13 @@ class StribeckCurve:
         Whether each equilibrium converged and whether it reached the film floor.
     transition_speed : float or None
         Speed above which the asperities carry less than :data:`TRANSITION_SHARE` of the load,
-        rad/s (:func:`transition_speed`); None when no speed of the range crosses it.
+        rad/s (:func:`transition_speed` over the speeds that were solved: converged, or at the
+        film floor, where the film does not carry the load, counted as a share of 1); None when
+        no speed of the range crosses it.
+    transition_uncertain : bool
+        A speed that did not converge lies where the transition could be (between the last
+        solved speed whose asperities carry the limit or more and the next solved speed): the
+        transition speed then rests on speeds that are not solutions.
     max_reynolds_number : ndarray (n,) or None
         Largest local Reynolds number at each speed (with ``options.turbulence`` on or auto;
         None when off).
@@ -89,6 +99,13 @@ class StribeckCurve:
     transition_speed: float | None
     max_reynolds_number: np.ndarray | None = None
     turbulent: np.ndarray | None = None
+    transition_uncertain: bool = False
+
+    @property
+    def stalled(self) -> np.ndarray:
+        """Speeds whose equilibrium did not converge and did not reach the film floor: their
+        points are not solutions."""
+        return np.asarray(~self.converged.astype(bool) & ~self.contact.astype(bool))
 
 
 def transition_speed(speed: np.ndarray, share: np.ndarray, limit: float = TRANSITION_SHARE) -> float | None:
@@ -105,6 +122,30 @@ def transition_speed(speed: np.ndarray, share: np.ndarray, limit: float = TRANSI
     s0, s1 = float(share[k]), float(share[k + 1])
     w = (s0 - limit) / (s0 - s1)
     return float(math.exp((1 - w) * math.log(speed[k]) + w * math.log(speed[k + 1])))
+
+
+def solved_transition(
+    speed: np.ndarray,
+    share: np.ndarray,
+    converged: np.ndarray,
+    contact: np.ndarray,
+    limit: float = TRANSITION_SHARE,
+) -> tuple[float | None, bool]:
+    """:func:`transition_speed` over the solved speeds (converged, or at the film floor, where
+    the film does not carry the load: counted as a share of 1), and whether a speed that did not
+    converge lies where the transition could be (between the last solved speed at or above
+    the limit and the next solved speed, or below the first solved speed if none is above).
+    """
+    solved = converged | contact
+    effective = np.where(contact, 1.0, share)
+    above = solved & (effective >= limit)
+    last_above = float(speed[above].max()) if above.any() else -math.inf
+    after = solved & (speed > last_above)
+    first_below = float(speed[after].min()) if after.any() else math.inf
+    stalled = ~solved & (speed > last_above) & (speed < first_below)
+    if solved.sum() < 2:
+        return None, bool((~solved).any())
+    return transition_speed(speed[solved], effective[solved], limit), bool(stalled.any())
 
 
 def estimated_seconds(case: BearingCase, speeds: int) -> float:
@@ -133,6 +174,7 @@ def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float
             tilt_z=case.tilt_z,
             initial=None if previous is None else previous.position,
             initial_cavitated=None if previous is None else previous.cavitated,
+            initial_deformation=None if previous is None else previous.liner_deformation,
         )
         if previous is not None and not (equilibrium.converged and not equilibrium.contact):
             # A warm start from a neighbour in boundary lubrication (its film below the mean plane)
@@ -203,17 +245,24 @@ def stribeck_curve(
     rows = np.array([row for chunk in solved for row in chunk])
     share = rows[:, 1]
     ratio = rows[:, 3]
+    converged, contact = rows[:, 4].astype(bool), rows[:, 5].astype(bool)
     rough = case.geometry.surface is not None
+    transition, uncertain = solved_transition(values, share, converged, contact) if rough else (None, False)
     return StribeckCurve(
         speed=values,
         friction_coefficient=rows[:, 0],
         asperity_load_share=share,
         min_film_thickness=rows[:, 2],
         min_film_ratio=ratio,
-        regime=tuple(lubrication_regime(float(v)) if rough else None for v in ratio),
-        converged=rows[:, 4].astype(bool),
-        contact=rows[:, 5].astype(bool),
-        transition_speed=transition_speed(values, share) if rough else None,
+        # no regime for a speed that is not a solution
+        regime=tuple(
+            lubrication_regime(float(v)) if rough and (c or t) else None
+            for v, c, t in zip(ratio, converged, contact, strict=True)
+        ),
+        converged=converged,
+        contact=contact,
+        transition_speed=transition,
         max_reynolds_number=rows[:, 6] if case.options.turbulence != "off" else None,
         turbulent=rows[:, 7].astype(bool) if case.options.turbulence != "off" else None,
+        transition_uncertain=uncertain,
     )
