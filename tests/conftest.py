@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import tempfile
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -56,6 +57,15 @@ def invoke(*args: str) -> Result:
     from shaftline.cli import make_app
 
     return CliRunner().invoke(make_app(), list(args))
+
+
+def assert_refused(result: Result, message: str, out: Path) -> None:
+    """The project's rule for bad input: exit 2, one line on standard error holding
+    ``message``, and nothing written to ``out``."""
+    assert result.exit_code == 2, result.stdout
+    assert message in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert not out.exists()
 
 
 # Unit conversions remembered by the tests go to a folder of the test run, not the user's.
