@@ -18,7 +18,7 @@ from shaftline.contact import ehl
 
 from .line_ehl_reference import solve_line_ehl
 
-STEEL = 2.27e11  # Pa, E' of two steel bodies (E 210 GPa, nu 0.3)
+STEEL = 2.27e11  # Pa, E' of two steel bodies (E 206.6 GPa, nu 0.3: E' = E/(1 - nu^2))
 
 # Gear and roller contacts: load per length N/m, reduced radius m, mean speed m/s, eta0 Pa s,
 # alpha 1/Pa. Hertz pressures 0.6-1.3 GPa, Moes' M 6-35 and L 5-18: elastic-piezoviscous.

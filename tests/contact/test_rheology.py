@@ -142,7 +142,8 @@ def test_fva_3_viscosity_against_a_second_public_source():
         ({"pressure_viscosity": ((40.0, 2e-8), (40.0, 1e-8))}, "pressure_viscosity"),
         ({"pressure_viscosity": ((40.0, 0.0),)}, "pressure_viscosity"),
         ({"limiting_shear_ratio": 0.0}, "limiting_shear_ratio"),
-        ({"limiting_shear_stress_0": -1.0}, "limiting_shear_ratio"),
+        ({"limiting_shear_ratio": -0.01, "limiting_shear_stress_0": 1e6}, "limiting_shear_ratio"),
+        ({"limiting_shear_stress_0": -1.0}, "limiting_shear_stress_0"),
         ({"thermal_conductivity": 0.0}, "thermal_conductivity"),
         ({"temperature_range": (100.0, 20.0)}, "temperature_range"),
         ({"max_pressure": 0.0}, "max_pressure"),
@@ -154,3 +155,13 @@ def test_a_lubricant_lacking_data_is_refused_where_it_is_made(change, field):
     with pytest.raises(InputError) as error:
         dataclasses.replace(rheology.contact_lubricant("FVA 3"), **change)
     assert error.value.field == field
+
+
+def test_a_lubricant_may_give_its_data_as_arrays_or_a_constant_limiting_stress():
+    # numpy arrays for the alpha table (as a user reading a file would pass them) and tau_L = tau_L0
+    # with gamma_L = 0 (a constant limiting stress, still > 0) are valid lubricants
+    oil = rheology.contact_lubricant("FVA 3")
+    as_array = dataclasses.replace(oil, pressure_viscosity=np.array(oil.pressure_viscosity))
+    assert float(as_array.alpha(60.0)) == float(oil.alpha(60.0))
+    constant = dataclasses.replace(oil, limiting_shear_ratio=0.0, limiting_shear_stress_0=5e6)
+    assert float(constant.limiting_shear_stress(1e9)) == 5e6

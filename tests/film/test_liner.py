@@ -348,6 +348,9 @@ def test_a_neighbours_deformation_starts_the_liner_and_leaves_the_equilibrium(mo
     assert abs(a.state.position.ey - b.state.position.ey) <= 1e-6 * c
     assert abs(a.state.position.ez - b.state.position.ez) <= 1e-6 * c
     assert found["neighbour solves"] < found["undeformed solves"]
+    for bad in (np.full_like(neighbour.state.liner_deformation, np.nan), neighbour.state.liner_deformation.T):
+        with pytest.raises(InputError, match="initial_deformation"):
+            bearing.equilibrium(case.load_y, case.load_z, initial_deformation=bad)
 
 
 def test_soft_liner_lowers_and_flattens_the_pressure_under_the_same_load(ntua) -> None:  # noqa: ANN001

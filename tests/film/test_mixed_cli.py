@@ -140,6 +140,31 @@ def test_transition_speed_from_the_solved_speeds_only() -> None:
     assert transition is None and uncertain
 
 
+def test_a_real_curve_keeps_its_unsolved_speeds_apart() -> None:
+    # seed 001's rigid rig on 120 nodes stalls below about 21 rpm (contact zone unresolved, docs/
+    # validation.md "Rigid rough bore at low speed"): on 5, 30, 100 rpm the 5 rpm speed is no
+    # solution. It has no regime, the transition (between 30 and 100 rpm, solved) is certain, and
+    # the figure draws it as its own series, off the curve (whose line breaks there).
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from shaftline.cases import load_case
+    from shaftline.film import figures
+    from shaftline.film.stribeck import stribeck_curve
+
+    case = load_case(Path(__file__).parents[2] / "examples" / "seed001_water_rig.toml").studies["bearing"].cases[0]
+    curve = stribeck_curve(case, np.array([5.0, 30.0, 100.0]) * np.pi / 30, backend="serial")
+    assert list(curve.stalled) == [True, False, False]
+    assert curve.regime[0] is None and curve.regime[1] is not None
+    assert curve.transition_speed is not None and 30 < curve.transition_speed * 30 / np.pi < 100
+    assert not curve.transition_uncertain
+    ax = figures.stribeck(curve)
+    labels = {line.get_label(): line for line in ax[0].get_lines()}
+    apart = labels["not converged: no solution"]
+    assert list(apart.get_xdata()) == pytest.approx([5.0])
+    assert np.isnan(labels["friction coefficient"].get_ydata()[0])
+
+
 def test_a_transition_among_unsolved_speeds_is_not_acceptable() -> None:
     # The curve's finding is advisory while the transition rests on solved speeds, and makes the run
     # not acceptable (criterion False: exit 3 without --strict) when it does not.

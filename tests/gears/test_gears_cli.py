@@ -73,10 +73,16 @@ def test_fzg_case_ranks_the_stages_alike_and_calibrate_option_replaces_the_recor
             'tip_diameter = ["142 mm", "142 mm"]',
             "gears.pair.tip_diameter[0] = 0.142 m: allowed teeth long enough for a transverse contact ratio >= 1",
         ),
-        # angles in degrees, refused by the model's limits (no plausible range that sends the user
-        # to [case] unusual for a value the limits refuse anyway)
-        ('centre_distance = "140 mm"', 'helix_angle = "50 deg"', "gears.pair.helix_angle = 50 deg: allowed in [0, 45)"),
-        ('pressure_angle = "20 deg"', 'pressure_angle = "40 deg"', "gears.pair.pressure_angle = 40 deg: allowed in"),
+        # angles in degrees against the model's limits, with no offer of [case] unusual (which the
+        # limits would refuse again) and no unit suggestion for a unit the user wrote; a bare number
+        # (radians) gets the unit that fits
+        (
+            'centre_distance = "140 mm"',
+            'helix_angle = "50 deg"',
+            "gears.pair.helix_angle = 50 deg: allowed 0 to 45 deg",
+        ),
+        ('pressure_angle = "20 deg"', 'pressure_angle = "40 deg"', "pressure_angle = 40 deg: allowed 11.5 to 34.4 deg"),
+        ('pressure_angle = "20 deg"', "pressure_angle = 20", "allowed 11.5 to 34.4 deg; did you mean 20 deg?"),
         ('lubricant = "MIL-PRF-23699"', 'lubricant = "SAE 90"', "gears.lubricant = 'SAE 90': allowed one of"),
         (
             'oil_temperature = "90 degC"\ncritical_temperature = "126 degC"',

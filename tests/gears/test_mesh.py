@@ -108,8 +108,14 @@ def test_bad_gear_input():
     # a pinion tip reaching past T2 (rho_2 < 0 at E): named, not a negative radius downstream
     with pytest.raises(InputError, match="tip_radius_1 = 0.1 m: allowed a pinion tip that meets the wheel flank"):
         GearPair(28, 28, 5e-3, 20 * DEG, 20e-3, tip_radius_1=0.1)
-    with pytest.raises(InputError, match="contact ratio >= 1"):
+    with pytest.raises(
+        InputError, match="addendum = 0.5: allowed teeth long enough for a transverse contact ratio >= 1"
+    ):
         GearPair(20, 40, 5e-3, 20 * DEG, 20e-3, addendum=0.5)
+    # with tips given, the tip furthest below the addendum rule's is named (here the wheel's:
+    # 102 mm against 110 mm), not the pinion's, which is right
+    with pytest.raises(InputError, match=r"tip_radius_2 = 0.051 m: allowed teeth long enough"):
+        GearPair(20, 20, 5e-3, 20 * DEG, 20e-3, tip_radius_1=0.055, tip_radius_2=0.051)
     with pytest.raises(InputError, match="teeth_1"):
         GearPair(3, 40, 5e-3, 20 * DEG, 20e-3)
     with pytest.raises(InputError, match="pinion_speed"):

@@ -110,6 +110,14 @@ def _written_number(raw: Any) -> str | None:
     return None
 
 
+def _has_unit(raw: Any) -> bool:
+    """Whether the file wrote a unit after the number (``"50 deg"``, not ``50``)."""
+    if not isinstance(raw, str):
+        return False
+    match = _WRITTEN.match(raw)
+    return bool(match and match.group(2))
+
+
 def suggestions(kind: str, raw: Any, value: float, fits: Any) -> list[str]:
     """The number as written in the usual units of ``kind`` that ``fits`` accepts (a callable
     taking the SI value), in the order of :data:`ALTERNATIVES`, one per distinct value, other
@@ -145,23 +153,29 @@ class ImplausibleInput(InputError):
         plausible: str,
         suggested: Iterable[str] = (),
         detail: str = "",
+        limit: bool = False,
     ) -> None:
         super().__init__(field, value, unit)
         head = self.args[0]  # "bearing.length = 1050 m"
         self.plausible = plausible
         self.suggestions = tuple(suggested)
         self.detail = detail
-        tail = f"{detail}, plausible {plausible}" if detail else f"plausible {plausible}"
+        self.limit = limit
+        word = "allowed" if limit else "plausible"
+        tail = f"{detail}, {word} {plausible}" if detail else f"{word} {plausible}"
         if self.suggestions:
             tail += f"; did you mean {' or '.join(self.suggestions)}?"
-        shown = head.partition(" = ")[2]
-        tail += f' (if {shown} is right, add "{field}" to [case] unusual)'
+        if not limit:  # a model's limit: [case] unusual could not let the value through
+            shown = head.partition(" = ")[2]
+            tail += f' (if {shown} is right, add "{field}" to [case] unusual)'
         self.allowed = tail
         self.args = (f"{head}: {tail}",)
 
     def within(self, prefix: str, renames: Mapping[str, str] | None = None) -> InputError:
         moved = super().within(prefix, renames)
-        return ImplausibleInput(moved.field, self.value, self.unit, self.plausible, self.suggestions, self.detail)
+        return ImplausibleInput(
+            moved.field, self.value, self.unit, self.plausible, self.suggestions, self.detail, self.limit
+        )
 
 
 # --- walking a validated table -------------------------------------------------------------
@@ -357,7 +371,12 @@ def check_table(section: BaseModel, raw: Any, table: str, unusual: Iterable[tupl
 
         unit = item.quantity.unit
         suggested = suggestions(item.quantity.kind, item.raw, item.value, fits)
-        raise ImplausibleInput(item.path, item.value, unit, item.plausible.text(unit), suggested)
+        if item.plausible.limit and _has_unit(item.raw):
+            suggested = []  # beyond a model's limit in a unit the user chose: no slip to suggest
+        value, shown_unit = item.plausible.shown(item.value, unit)
+        raise ImplausibleInput(
+            item.path, value, shown_unit, item.plausible.text(unit), suggested, limit=item.plausible.limit
+        )
     for ratio in ratios:
         if not _lowered(ratio.where, lowered):
             ratio.check_with(walk)

@@ -118,6 +118,13 @@ class Plausible:
     low: float
     high: float
     source: str
+    #: Unit the message shows the value and the range in, with its size in SI (degrees for
+    #: angles a user writes in degrees); none: the SI unit.
+    shown_unit: str = ""
+    shown_factor: float = 1.0
+    #: The range is also the model's limit: the message says "allowed" and does not offer
+    #: ``[case] unusual``, which could not let the value through.
+    limit: bool = False
 
     def __post_init__(self) -> None:
         if not self.low < self.high:
@@ -133,8 +140,17 @@ class Plausible:
         return not self.low <= 0.0 <= self.high or abs(value) >= 1e-3 * max(-self.low, self.high)
 
     def text(self, unit: str) -> str:
-        """The range in words, ``"0.02 to 4 m"``."""
+        """The range in words, ``"0.02 to 4 m"`` (in ``shown_unit`` where one is set)."""
+        if self.shown_unit:
+            low, high, unit = self.low / self.shown_factor, self.high / self.shown_factor, self.shown_unit
+            return f"{float(f'{low:.6g}'):g} to {float(f'{high:.6g}'):g} {unit}"
         return f"{_number(self.low)} to {_number(self.high)}{' ' + unit if unit else ''}"
+
+    def shown(self, value: float, unit: str) -> tuple[float, str]:
+        """``value`` (SI, of ``unit``) as the message shows it."""
+        if self.shown_unit:
+            return float(f"{value / self.shown_factor:.10g}"), self.shown_unit
+        return value, unit
 
     def __get_pydantic_json_schema__(
         self, schema: core_schema.CoreSchema, handler: GetJsonSchemaHandler

@@ -152,22 +152,25 @@ class ContactLubricant:
         # A lubricant built through the API must carry every datum the contact models read:
         # refused here in one line rather than failing deep inside a model (or, for tau_L = 0,
         # silently giving no fluid friction).
-        points = self.pressure_viscosity
-        if not points or any(len(point) != 2 for point in points):
-            raise InputError("pressure_viscosity", list(points), "", "one or more (temperature degC, alpha 1/Pa) pairs")
+        points = [tuple(point) for point in self.pressure_viscosity]
+        if len(points) == 0 or any(len(point) != 2 for point in points):
+            raise InputError("pressure_viscosity", points, "", "one or more (temperature degC, alpha 1/Pa) pairs")
         temperatures = [float(t) for t, _ in points]
-        if any(not (a > 0.0) for _, a in points) or any(
-            b <= a for a, b in zip(temperatures, temperatures[1:], strict=False)
-        ):
+        rising = all(b > a for a, b in zip(temperatures, temperatures[1:], strict=False))
+        if any(not (float(a) > 0.0) for _, a in points) or not rising:
             raise InputError(
-                "pressure_viscosity", list(points), "", "alpha > 0 1/Pa at temperatures rising from pair to pair"
+                "pressure_viscosity", points, "", "alpha > 0 1/Pa at temperatures rising from pair to pair"
             )
-        if not (self.limiting_shear_ratio > 0.0) or not (self.limiting_shear_stress_0 >= 0.0):
+        if not (self.limiting_shear_stress_0 >= 0.0):
+            raise InputError("limiting_shear_stress_0", self.limiting_shear_stress_0, "Pa", ">= 0")
+        if not (self.limiting_shear_ratio >= 0.0) or not (
+            self.limiting_shear_ratio > 0.0 or self.limiting_shear_stress_0 > 0.0
+        ):
             raise InputError(
                 "limiting_shear_ratio",
                 self.limiting_shear_ratio,
                 "",
-                "> 0 (with limiting_shear_stress_0 >= 0 Pa): the Bair-Winer stress needs tau_L(p) > 0",
+                ">= 0, and > 0 where limiting_shear_stress_0 is 0: the Bair-Winer stress needs tau_L(p) > 0",
             )
         if not (self.thermal_conductivity > 0.0):
             raise InputError("thermal_conductivity", self.thermal_conductivity, "W/(m K)", "> 0")
@@ -224,16 +227,9 @@ class ContactLubricant:
 
     def _check_pressure(self, pressure: ArrayLike, extrapolate: bool, quantity: str) -> np.ndarray:
         """The pressure in Pa, checked against the data's range in GPa (as a user reads it)."""
-        gpa = check_range(
-            quantity,
-            np.asarray(pressure, dtype=float) / 1e9,
-            0.0,
-            self.max_pressure / 1e9,
-            "GPa",
-            extrapolate,
-            f"data of {self.name}",
-        )
-        return gpa * 1e9
+        pascal = np.asarray(pressure, dtype=float)
+        check_range(quantity, pascal / 1e9, 0.0, self.max_pressure / 1e9, "GPa", extrapolate, f"data of {self.name}")
+        return pascal
 
 
 def bair_winer_stress(viscosity: ArrayLike, shear_rate: ArrayLike, limiting_stress: ArrayLike) -> np.ndarray:

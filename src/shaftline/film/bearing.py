@@ -1667,14 +1667,17 @@ class JournalBearing:
             Liner deformation (m) to start the first film-liner iteration from, e.g.
             ``state.liner_deformation`` of a neighbouring equilibrium (a sweep); without it the
             iteration starts from the undeformed liner. It changes the iterations and the result
-            only within the liner's tolerance. Ignored without a liner or on another grid.
+            only within the liner's tolerance (a grid that turns with the journal,
+            ``film_start = "max_film"``, takes it node by node: a start, not a map). Ignored
+            without a liner.
 
         Raises
         ------
         InputError
             Naming the parameter: ``"load_y"``, ``"load_z"``, ``"tilt_y"`` or ``"tilt_z"``
-            for a value that is not finite, ``"load_y"`` for no load at all, and the
-            larger tilt for a misalignment that does not fit in the clearance.
+            for a value that is not finite, ``"load_y"`` for no load at all, the
+            larger tilt for a misalignment that does not fit in the clearance, and
+            ``"initial_deformation"`` for one that is not finite or not on the grid.
         """
         load_y = require_finite("load_y", load_y, "N")
         load_z = require_finite("load_z", load_z, "N")
@@ -1748,8 +1751,15 @@ class JournalBearing:
         ) * magnitude
         deformation = None
         if self.geometry.liner is not None and initial_deformation is not None:
-            if np.shape(initial_deformation) == (self.options.axial_nodes, self.options.circumferential_nodes):
-                deformation = np.array(initial_deformation, dtype=float)
+            deformation = np.array(initial_deformation, dtype=float)
+            shape = (self.options.axial_nodes, self.options.circumferential_nodes)
+            if deformation.shape != shape or not np.all(np.isfinite(deformation)):
+                raise InputError(
+                    "initial_deformation",
+                    f"an array of shape {deformation.shape}",
+                    "m",
+                    f"finite values on the bearing's grid, shape {shape}",
+                )
         evaluation, started = self._start_evaluation(
             position, start_set, start_pressure, settle=not loose, deformation=deformation
         )

@@ -487,14 +487,16 @@ def _stribeck_table(result: BearingStudyResult) -> Table:
     if solutions.any():
         friction[~solutions] = math.inf
     lowest = int(friction.argmin())
+    lowest_friction = fmt(float(curve.friction_coefficient[lowest])) if solutions.any() else "- (no speed converged)"
+    lowest_speed = fmt(curve.speed[lowest] * 30 / math.pi) if solutions.any() else "-"
     transition = "-" if curve.transition_speed is None else fmt(curve.transition_speed * 30.0 / math.pi, 1, 4)
     if curve.transition_uncertain:
         transition += " (uncertain: among speeds not converged)"
     rows = [
         ["speeds [rpm]", f"{fmt(curve.speed[0] * 30 / math.pi)} to {fmt(curve.speed[-1] * 30 / math.pi)}"],
         ["transition speed, asperity share < 1 % [rpm]", transition],
-        ["lowest friction coefficient [-]", fmt(float(curve.friction_coefficient[lowest]))],
-        ["at [rpm]", fmt(curve.speed[lowest] * 30 / math.pi)],
+        ["lowest friction coefficient [-]", lowest_friction],
+        ["at [rpm]", lowest_speed],
         ["speeds in contact (load not carried)", str(int(curve.contact.sum()))],
     ]
     # A rough film that stalls above its boundary limit is not contact (docs/theory.md, "Boundary

@@ -120,7 +120,8 @@ def contact_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     low = min(0.0, float(np.floor(ratio.min())))
     mesh = ax[0].contourf(theta, z, contact, levels=30, cmap="magma", rasterized=True)
     ax[0].figure.colorbar(mesh, ax=ax[0], label="asperity pressure p_a [MPa]")
-    mesh = ax[1].contourf(theta, z, ratio, levels=np.linspace(low, 10.0, 41), cmap="RdYlGn", rasterized=True)
+    # quarter steps from a whole number: the colour bands break at λ = 0, 1 and 3
+    mesh = ax[1].contourf(theta, z, ratio, levels=np.arange(low, 10.125, 0.25), cmap="RdYlGn", rasterized=True)
     ax[1].figure.colorbar(mesh, ax=ax[1], label="λ = h/σ (capped at 10)")
     limits = [1.0, 3.0] if low == 0.0 else [0.0, 1.0, 3.0]
     ax[1].contour(theta, z, ratio, levels=limits, colors="k", linewidths=0.8)
@@ -176,8 +177,11 @@ def stribeck(curve: Any, title: str = "", *, ax: Any) -> Any:
     contact = curve.contact.astype(bool)
     stalled = curve.stalled
     ok = ~contact & ~stalled
-    ax[0].loglog(rpm[ok], curve.friction_coefficient[ok], "o-", color="C0", ms=3, label="friction coefficient")
-    ax[1].semilogx(rpm[ok], curve.min_film_thickness[ok] * 1e6, "o-", color="C2", ms=3, label="h_min")
+    # the curve breaks (NaN) at a speed that is no solution rather than bridging it
+    ax[0].loglog(
+        rpm, np.where(ok, curve.friction_coefficient, np.nan), "o-", color="C0", ms=3, label="friction coefficient"
+    )
+    ax[1].semilogx(rpm, np.where(ok, curve.min_film_thickness * 1e6, np.nan), "o-", color="C2", ms=3, label="h_min")
     # The same speeds marked on both panels, off the curve: a film at its floor is not an
     # equilibrium's h_min, and a speed that did not converge is no solution at all.
     for axes, values in ((ax[0], curve.friction_coefficient), (ax[1], curve.min_film_thickness * 1e6)):

@@ -223,7 +223,11 @@ STRIBECK_FIELDS: list[tuple[str, str, str]] = [
     ("stribeck.asperity_load_share", "-", "share of the load on the asperities at each speed"),
     ("stribeck.min_film_thickness", "m", "h_min at each speed"),
     ("stribeck.min_film_ratio", "-", "h_min / sigma at each speed (null for smooth surfaces)"),
-    ("stribeck.lubrication_regime", "-", "boundary, mixed or full film at each speed (null when smooth)"),
+    (
+        "stribeck.lubrication_regime",
+        "-",
+        "boundary, mixed or full film at each speed (null when smooth, and at a speed that did not converge)",
+    ),
     ("stribeck.converged", "-", "equilibrium reached at each speed"),
     ("stribeck.contact", "-", "load not carried within the clearance at each speed"),
     (
@@ -239,7 +243,14 @@ STRIBECK_FIELDS: list[tuple[str, str, str]] = [
     (
         "stribeck.transition_speed_rpm",
         "rpm",
-        "speed above which the asperities carry less than 1 % of the load (null: not crossed in the range)",
+        "speed above which the asperities carry less than 1 % of the load, from the converged speeds and "
+        "those in contact (share 1) (null: not crossed in the range)",
+    ),
+    (
+        "stribeck.transition_uncertain",
+        "-",
+        "true where a speed that did not converge lies where the transition could be: the transition "
+        "speed is then not a result (exit 3)",
     ),
 ]
 

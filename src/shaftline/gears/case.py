@@ -42,9 +42,26 @@ MODULE = Plausible(
 FACE_WIDTH = Plausible(1e-3, 1.5, "from instrument gears to the widest marine gears (engineering judgement)")
 CENTRE_DISTANCE = Plausible(0.01, 10.0, f"{_SEED} 140 mm, {_FZG} 91.5 mm; marine gearboxes up to a few metres")
 TIP_DIAMETER = Plausible(5e-3, 10.0, "tip diameters of gears from 5 mm to 10 m")
-# The pressure and helix angles have no plausible range beside their hard limits (GearPair:
-# (11.5, 34.4) deg, [0, 45) deg): a range equal to the limits sent the user to [case] unusual,
-# whence the hard limit refused the same value; GearPair's message gives them in degrees.
+# The pressure and helix angles' plausible ranges are the model's limits (GearPair: (11.5,
+# 34.4) deg, [0, 45) deg), shown in degrees: a bare number (radians) gets the unit that fits,
+# and no offer of [case] unusual, which the limit would refuse again.
+_DEG = math.radians(1.0)
+PRESSURE_ANGLE = Plausible(
+    math.radians(11.5),
+    math.radians(34.4),
+    "normal pressure angles of 14.5-30 deg in use; the model's range",
+    shown_unit="deg",
+    shown_factor=_DEG,
+    limit=True,
+)
+HELIX_ANGLE = Plausible(
+    0.0,
+    math.radians(45.0),
+    "spur (0) to double-helical gears (about 40 deg); the model's range",
+    shown_unit="deg",
+    shown_factor=_DEG,
+    limit=True,
+)
 ROUGHNESS = Plausible(
     1e-9, 2e-5, f"superfinished (Ra 0.01 um) to rough machined (Ra 6 um) flanks ({_SEED} Table 1: 0.4 and 0.1 um)"
 )
@@ -81,11 +98,11 @@ class PairSection(Section):
     """Teeth of pinion and wheel."""
     module: Annotated[PositiveLength, MODULE]
     """Normal module."""
-    pressure_angle: Annotated[float, Quantity("angle", gt=0)]
+    pressure_angle: Annotated[float, Quantity("angle", gt=0), PRESSURE_ANGLE]
     """Normal pressure angle of the loaded flanks, 11.5-34.4 deg."""
     face_width: Annotated[PositiveLength, FACE_WIDTH]
     """Common face width."""
-    helix_angle: Annotated[float, Quantity("angle", ge=0)] = 0.0
+    helix_angle: Annotated[float, Quantity("angle", ge=0), HELIX_ANGLE] = 0.0
     """Helix angle (0: spur), below 45 deg."""
     shift: Annotated[
         list[Annotated[float, Quantity("dimensionless", ge=-2, le=2)]], Field(min_length=2, max_length=2)

@@ -153,12 +153,17 @@ class GearPair:
                 "a pinion tip that meets the wheel flank above its base circle (no interference)",
             )
         if self.transverse_contact_ratio < 1.0:
-            # The tips set the teeth's length where they are given; the addendum only otherwise.
+            # The tips set the teeth's length where they are given, the addendum otherwise; of two
+            # given tips, the one furthest below its tip by the addendum rule.
             field, value = "addendum", self.addendum
-            if self.tip_radius_1 is not None:
-                field, value = "tip_radius_1", self.tip_radius(1)
-            elif self.tip_radius_2 is not None:
-                field, value = "tip_radius_2", self.tip_radius(2)
+            short = {
+                k: self.pitch_radius(k) + self.module * (self.addendum + shift) - given
+                for k, given, shift in ((1, self.tip_radius_1, self.shift_1), (2, self.tip_radius_2, self.shift_2))
+                if given is not None
+            }
+            if short:
+                k = max(short, key=lambda gear: short[gear])
+                field, value = f"tip_radius_{k}", self.tip_radius(k)
             raise InputError(
                 field,
                 value,
