@@ -169,9 +169,12 @@ def test_stribeck_figure_titles_fit_and_contact_speeds_are_marked_on_both_panels
             "mixed (1-3)",
             "full film (λ > 3)",
         ], labels
-    # The h_min line joins the equilibria only (as the friction line).
+    # The h_min line joins the equilibria only (as the friction line): it has no value (NaN, a
+    # break in the line) at the speeds in contact.
     (line,) = [line for line in ax[1].lines if line.get_label() == "h_min"]
-    assert list(line.get_xdata()) == pytest.approx(curve.speed[2:] * 30 / np.pi)
+    values = np.asarray(line.get_ydata(), dtype=float)
+    assert np.isnan(values[:2]).all() and np.isfinite(values[2:]).all()
+    assert list(np.asarray(line.get_xdata())[2:]) == pytest.approx(curve.speed[2:] * 30 / np.pi)
 
 
 def test_a_title_cut_at_the_figures_edge_is_wrapped():
