@@ -23,6 +23,14 @@ def test_version():
     assert result.returncode == 0 and result.stdout.startswith("shaftline ")
 
 
+def test_python_dash_m_shaftline_is_the_command_line():
+    # for an environment whose scripts folder is not on the PATH
+    result = subprocess.run(
+        [sys.executable, "-m", "shaftline", "--version"], capture_output=True, text=True, timeout=120
+    )
+    assert result.returncode == 0 and result.stdout.startswith("shaftline ")
+
+
 def test_run_writes_json_and_report(tmp_path):
     (tmp_path / "case.toml").write_text(MINIMAL_CASE)
     result = shaftline("run", "case.toml", "--json", "-", cwd=tmp_path)
