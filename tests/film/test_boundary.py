@@ -203,6 +203,19 @@ def test_seed001_rigid_rig_carries_its_load_below_the_mean_plane_at_15_rpm() -> 
     assert seed.min_film_ratio == pytest.approx(0.497, abs=1e-3)
     assert slow.max_asperity_pressure > float(asperity_pressure(surface, np.zeros(1))[0])
     assert slow.asperity_load_share > seed.asperity_load_share
+    # The lambda map shows the film below the mean plane: its colours reach below 0 and lambda = 0
+    # is drawn beside 1 and 3 (the scale stopped at 0 and left that part blank).
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.contour import ContourSet
+
+    from shaftline.film import figures
+
+    ax = figures.contact_maps(slow)
+    filled, lines = (c for c in ax[1].collections if isinstance(c, ContourSet))
+    assert filled.levels[0] <= slow.min_film_ratio < 0.0 and {0.0, 1.0, 3.0} <= set(filled.levels)
+    assert list(lines.levels) == [0.0, 1.0, 3.0]
 
 
 def test_a_stagnating_liner_trial_is_given_up_early(monkeypatch: pytest.MonkeyPatch) -> None:
