@@ -65,6 +65,8 @@ SI_UNITS: dict[str, str] = {
     "sensitivity": "V/m",
     # C of seed 002's scuffing parameter (issue 14)
     "thermal_conductivity": "W/(m*K)",
+    # asperities per unit area of a rough surface (Greenwood-Williamson's eta, issue 15)
+    "areal_density": "1/m**2",
 }
 
 #: How an SI unit is written in messages and tables.
@@ -79,6 +81,7 @@ UNIT_TEXT: dict[str, str] = {
     "m**3/(N*m)": "m^3/(N m)",
     "m**3": "m^3",
     "m**2": "m^2",
+    "1/m**2": "1/m^2",
     "kg*m**2": "kg m^2",
     "N*m": "N m",
     "N*m*s": "N m s",
@@ -159,7 +162,10 @@ def to_si(value: Any, kind: str, field: str = "") -> float:
 #: "<number> <unit>" where the unit starts with a letter: pint reads it as the number
 #: times the unit (or, for an offset unit such as degC, the number in that unit), so its
 #: conversion is the same affine map for every number.
-_NUMBER_AND_UNIT = re.compile(r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*([A-Za-zµμ°Ω%][\w\s*/^().µμ°Ω%-]*)$")
+# The unit may not start with an exponent: "5e9 /m^2" is 5e9 per square metre, not 5 "e9 /m^2".
+_NUMBER_AND_UNIT = re.compile(
+    r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(?![eE][+-]?\d)([A-Za-zµμ°Ω%][\w\s*/^().µμ°Ω%-]*)$"
+)
 
 
 def cache_path() -> Path | None:

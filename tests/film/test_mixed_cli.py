@@ -204,6 +204,23 @@ def test_a_transition_among_unsolved_speeds_is_not_acceptable() -> None:
         (('bore_modulus = "2320 MPa"\n', ""), "bearing.surface.bore_modulus"),
         (('highest = "300 rpm"', 'highest = "10 rpm"'), "bearing.stribeck.highest"),
         (("[bearing.surface]", 'surface_roughness = "2 um"\n[bearing.surface]'), "bearing.surface_roughness"),
+        # measured asperity radius and density: one of each pair, density with a radius, in range
+        (
+            ("bore_poisson = 0.327", 'bore_poisson = 0.327\nasperity_radius = "50 um"\nsigma_over_beta = 0.01'),
+            "bearing.surface.asperity_radius",
+        ),
+        (("bore_poisson = 0.327", 'bore_poisson = 0.327\nasperity_radius = "1 um"'), "bearing.surface.asperity_radius"),
+        (
+            ("bore_poisson = 0.327", 'bore_poisson = 0.327\nasperity_density = "2000 1/mm^2"'),
+            "bearing.surface.asperity_density",
+        ),
+        (
+            (
+                "bore_poisson = 0.327",
+                'bore_poisson = 0.327\nasperity_radius = "50 um"\nasperity_density = "1e8 1/mm^2"',
+            ),
+            "bearing.surface.asperity_density",
+        ),
     ],
 )
 def test_bad_surface_input_exit_2_one_line_no_output(
@@ -224,6 +241,25 @@ def test_bad_surface_input_exit_2_one_line_no_output(
     assert len(lines) == 1 and lines[0].startswith(f"error: {field} = "), lines
     assert result.stdout == ""
     assert not out.exists() and not (tmp_path / "r.json").exists()
+
+
+def test_measured_asperity_radius_and_density_give_greenwood_trips_parameters(rig: Path) -> None:
+    # beta and eta measured (Greenwood & Williamson 1966's inputs) in place of sigma beta eta and
+    # sigma / beta: with sigma the composite Rq, sigma / beta = sigma / beta and sigma beta eta =
+    # sigma beta eta exactly (1.25 * hypot(0.8, 1.6) um = 2.236 um; beta 50 um, eta 400 per mm^2).
+    from shaftline.cases import load_case
+
+    rig.write_text(
+        RIG.replace(
+            "bore_poisson = 0.327", 'bore_poisson = 0.327\nasperity_radius = "50 um"\nasperity_density = "400 1/mm^2"'
+        )
+    )
+    surface = load_case(rig).studies["bearing"].cases[0].geometry.surface
+    assert surface is not None
+    sigma = surface.sigma
+    assert sigma == pytest.approx(1.25 * np.hypot(0.8e-6, 1.6e-6), rel=1e-12)  # Rq = 1.25 Ra (seed 001 Eq. 10)
+    assert surface.sigma_over_beta == pytest.approx(sigma / 50e-6, rel=1e-12)
+    assert surface.sigma_beta_eta == pytest.approx(sigma * 50e-6 * 400e6, rel=1e-12)
 
 
 def test_a_roughness_near_the_clearance_is_refused(rig: Path, tmp_path: Path) -> None:

@@ -80,6 +80,7 @@ ALTERNATIVES: dict[str, tuple[Alternative, ...]] = {
     "frequency": _units(("mHz", 1e-3), ("1/min", 1.0 / 60.0), ("Hz", 1.0)),
     "volume": _units(("l", 1e-3), ("cm^3", 1e-6), ("m^3", 1.0)),
     "area": _units(("cm^2", 1e-4), ("mm^2", 1e-6), ("m^2", 1.0)),
+    "areal_density": _units(("1/mm^2", 1e6), ("1/um^2", 1e12), ("1/m^2", 1.0)),
     "inertia": _units(("t*m^2", 1e3), ("kg*m^2", 1.0)),
     "rotational_stiffness": _units(("kN*m", 1e3), ("MN*m", 1e6), ("N*m", 1.0)),
     "rotational_damping": _units(("kN*m*s", 1e3), ("N*m*s", 1.0)),

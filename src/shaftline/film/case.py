@@ -370,6 +370,15 @@ _SURFACE_ROUGHNESS = (
     "machined journals and bores: Ra 0.1 um (lapped) to 6.3 um (rough turned); seed 001: polymer liner Ra 1.6 um, "
     "sleeve Ra 0.8 um; 20 um keeps a value in um written as mm out (engineering judgement)"
 )
+_ASPERITY_RADIUS = (
+    "asperity tip radii from profiles of machined surfaces, about 1 um to 1 mm (Greenwood & Williamson 1966: "
+    "tens of um; sigma/beta = 0.001 on Ra 1 um is about 1 mm); mm written as m is above (engineering judgement)"
+)
+_ASPERITY_DENSITY = (
+    "asperities per m^2 from profiles of machined surfaces, about 1e8 to 1e12 (Greenwood & Williamson 1966: "
+    "1e9-1e11; sigma beta eta 0.04 with sigma 1 um and beta 1 mm is 4e7); per mm^2 written as per m^2 is "
+    "below (engineering judgement)"
+)
 _MODULUS = (
     "nitrile rubber liners about 3-10 MPa, polymer composites 1-10 GPa (seed 001: 2320 MPa), white metal about "
     "50 GPa, steel 206 GPa; 3 MPa to 500 GPa keeps GPa written as MPa and MPa as kPa out (engineering judgement)"
@@ -402,6 +411,14 @@ class SurfaceSection(Section):
     """Roughness parameter sigma beta eta (default 0.04)."""
     sigma_over_beta: Annotated[float, Quantity("dimensionless", gt=0, lt=1)] | None = None
     """RMS roughness over asperity tip radius (default 0.001)."""
+    asperity_radius: Annotated[PositiveLength, Plausible(1e-7, 0.01, _ASPERITY_RADIUS)] | None = None
+    """Mean asperity tip radius beta, measured (in place of sigma_over_beta: sigma / beta with
+    sigma the composite Rq)."""
+    asperity_density: (
+        Annotated[float, Quantity("areal_density", gt=0), Plausible(1e6, 1e14, _ASPERITY_DENSITY)] | None
+    ) = None
+    """Asperities per unit area eta, measured (with asperity_radius, in place of sigma_beta_eta:
+    sigma beta eta with sigma the composite Rq)."""
     boundary_friction: Annotated[float, Quantity("dimensionless", ge=0, lt=1)] | None = None
     """Coefficient of friction on the asperity load (default 0.1)."""
 
@@ -438,19 +455,51 @@ def surface_roughness(section: SurfaceSection) -> SurfaceRoughness:
         bore_e, bore_nu = section.bore_modulus, section.bore_poisson
     journal_e = 206e9 if section.journal_modulus is None else section.journal_modulus
     journal_nu = 0.3 if section.journal_poisson is None else section.journal_poisson
+    sigma_beta_eta, sigma_over_beta = _asperity_parameters(section, math.hypot(journal_rq, bore_rq))
     names = {"journal_rq": "journal_roughness", "bore_rq": "bore_roughness", "contact_modulus": "bore_modulus"}
     with located("", names):
         defaults = SurfaceRoughness(journal_rq=1.0, bore_rq=1.0)
         return SurfaceRoughness(
             journal_rq=journal_rq,
             bore_rq=bore_rq,
-            sigma_beta_eta=section.sigma_beta_eta or defaults.sigma_beta_eta,
-            sigma_over_beta=section.sigma_over_beta or defaults.sigma_over_beta,
+            sigma_beta_eta=sigma_beta_eta or defaults.sigma_beta_eta,
+            sigma_over_beta=sigma_over_beta or defaults.sigma_over_beta,
             contact_modulus=contact_modulus(journal_e, journal_nu, bore_e, bore_nu),
             boundary_friction=defaults.boundary_friction
             if section.boundary_friction is None
             else section.boundary_friction,
         )
+
+
+def _asperity_parameters(section: SurfaceSection, sigma: float) -> tuple[float | None, float | None]:
+    """Greenwood-Tripp's sigma beta eta and sigma / beta of a ``surface`` table: as given, or
+    from a measured asperity radius beta and density eta with sigma the composite Rq (m; the
+    spread of the asperity heights taken as the surfaces', docs/theory.md Sect. 17)."""
+    sigma_beta_eta, sigma_over_beta = section.sigma_beta_eta, section.sigma_over_beta
+    radius, density = section.asperity_radius, section.asperity_density
+    if radius is not None:
+        if sigma_over_beta is not None:
+            raise InputError("asperity_radius", radius, "m", "sigma_over_beta or asperity_radius, not both")
+        sigma_over_beta = sigma / radius
+        if not sigma_over_beta < 1.0:
+            raise InputError(
+                "asperity_radius", radius, "m", f"above the composite roughness {sigma:.3g} m (sigma / beta < 1)"
+            )
+    if density is not None:
+        if radius is None:
+            raise InputError("asperity_density", density, "1/m^2", "with asperity_radius (sigma beta eta needs both)")
+        if sigma_beta_eta is not None:
+            raise InputError("asperity_density", density, "1/m^2", "sigma_beta_eta or asperity_density, not both")
+        sigma_beta_eta = sigma * radius * density
+        if not sigma_beta_eta < 1.0:
+            raise InputError(
+                "asperity_density",
+                density,
+                "1/m^2",
+                f"below {1.0 / (sigma * radius):.3g} 1/m^2 (sigma beta eta < 1 with sigma {sigma:.3g} m and beta "
+                f"{radius:.3g} m)",
+            )
+    return sigma_beta_eta, sigma_over_beta
 
 
 def checked_surface(section: SurfaceSection, clearance: float) -> SurfaceRoughness:
