@@ -25,6 +25,11 @@ from shaftline.units import to_si
         ("309.86 kN", "force", 309860.0),
         ("0.3 mrad", "angle", 3e-4),
         ("2 bar", "pressure", 2e5),
+        # an exponent before a unit that does not start with a letter (was read as 5 "e9 /m^2")
+        ("5e9 /m^2", "areal_density", 5e9),
+        ("4e2 1/mm^2", "areal_density", 4e8),
+        ("3e2 1/min", "frequency", 5.0),
+        ("1.5e-3 m", "length", 1.5e-3),
     ],
 )
 def test_conversion(value, kind, expected):

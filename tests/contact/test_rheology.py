@@ -147,6 +147,8 @@ def test_fva_3_viscosity_against_a_second_public_source():
         ({"thermal_conductivity": 0.0}, "thermal_conductivity"),
         ({"temperature_range": (100.0, 20.0)}, "temperature_range"),
         ({"max_pressure": 0.0}, "max_pressure"),
+        ({"pressure_viscosity": np.array([40.0, 2e-8])}, "pressure_viscosity"),
+        ({"limiting_shear_ratio": float("inf")}, "limiting_shear_ratio"),
     ],
 )
 def test_a_lubricant_lacking_data_is_refused_where_it_is_made(change, field):
@@ -163,5 +165,6 @@ def test_a_lubricant_may_give_its_data_as_arrays_or_a_constant_limiting_stress()
     oil = rheology.contact_lubricant("FVA 3")
     as_array = dataclasses.replace(oil, pressure_viscosity=np.array(oil.pressure_viscosity))
     assert float(as_array.alpha(60.0)) == float(oil.alpha(60.0))
+    assert as_array == oil and hash(as_array) == hash(oil)  # kept as tuples: a frozen value
     constant = dataclasses.replace(oil, limiting_shear_ratio=0.0, limiting_shear_stress_0=5e6)
     assert float(constant.limiting_shear_stress(1e9)) == 5e6

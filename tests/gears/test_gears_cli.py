@@ -79,10 +79,16 @@ def test_fzg_case_ranks_the_stages_alike_and_calibrate_option_replaces_the_recor
         (
             'centre_distance = "140 mm"',
             'helix_angle = "50 deg"',
-            "gears.pair.helix_angle = 50 deg: allowed 0 to 45 deg",
+            "gears.pair.helix_angle = 50 deg: allowed in [0, 45) deg",
         ),
-        ('pressure_angle = "20 deg"', 'pressure_angle = "40 deg"', "pressure_angle = 40 deg: allowed 11.5 to 34.4 deg"),
-        ('pressure_angle = "20 deg"', "pressure_angle = 20", "allowed 11.5 to 34.4 deg; did you mean 20 deg?"),
+        (
+            'pressure_angle = "20 deg"',
+            'pressure_angle = "40 deg"',
+            "pressure_angle = 40 deg: allowed in (11.5, 34.4) deg",
+        ),
+        ('pressure_angle = "20 deg"', "pressure_angle = 20", "allowed in (11.5, 34.4) deg; did you mean 20 deg?"),
+        # at the open end: the range refuses what the model would (34.4 deg), and passes 34.39
+        ('pressure_angle = "20 deg"', 'pressure_angle = "34.4 deg"', "pressure_angle = 34.4 deg: allowed in (11.5"),
         ('lubricant = "MIL-PRF-23699"', 'lubricant = "SAE 90"', "gears.lubricant = 'SAE 90': allowed one of"),
         (
             'oil_temperature = "90 degC"\ncritical_temperature = "126 degC"',
@@ -114,6 +120,24 @@ def test_bad_input_one_line_exit_2_nothing_written(tmp_path, old, new, message):
     out = tmp_path / "out"
     result = invoke("gears", "scuffing", str(case), "--out", str(out))
     assert_refused(result, message, out)
+
+
+def test_an_angle_beyond_the_models_limit_offers_neither_unusual_nor_another_unit(tmp_path):
+    # the gear angles' plausible ranges are the model's limits: a value beyond them written with its
+    # unit gets the limit in degrees, and neither "[case] unusual" (which could not let it through) nor
+    # a unit suggestion ("50 mrad?"); listing such a field in [case] unusual is refused itself
+    text = SEED.read_text().replace('centre_distance = "140 mm"', 'helix_angle = "50 deg"')
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    shutil.copy(SEED.parent / "gears_scuffing_test.csv", tmp_path)
+    result = invoke("gears", "scuffing", str(case), "--out", str(tmp_path / "out"))
+    assert_refused(result, "gears.pair.helix_angle = 50 deg: allowed in [0, 45) deg", tmp_path / "out")
+    assert "unusual" not in result.stderr and "did you mean" not in result.stderr
+    case.write_text(text.replace("[case]\n", '[case]\nunusual = ["gears.pair.helix_angle"]\n', 1))
+    result = invoke("gears", "scuffing", str(case), "--out", str(tmp_path / "out"))
+    assert_refused(
+        result, "case.unusual[0] = 'gears.pair.helix_angle': allowed a field whose range is not", tmp_path / "out"
+    )
 
 
 def test_an_oil_above_its_iso_scuffing_temperature_is_refused(tmp_path):

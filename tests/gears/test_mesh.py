@@ -116,6 +116,9 @@ def test_bad_gear_input():
     # 102 mm against 110 mm), not the pinion's, which is right
     with pytest.raises(InputError, match=r"tip_radius_2 = 0.051 m: allowed teeth long enough"):
         GearPair(20, 20, 5e-3, 20 * DEG, 20e-3, tip_radius_1=0.055, tip_radius_2=0.051)
+    # one tip given, longer than the rule's, and a short addendum on the other gear: the addendum
+    with pytest.raises(InputError, match="addendum = 0.3: allowed teeth long enough"):
+        GearPair(20, 40, 5e-3, 20 * DEG, 20e-3, addendum=0.3, tip_radius_1=0.0525)
     with pytest.raises(InputError, match="teeth_1"):
         GearPair(3, 40, 5e-3, 20 * DEG, 20e-3)
     with pytest.raises(InputError, match="pinion_speed"):

@@ -314,10 +314,14 @@ def _lowered(path: str, unusual: set[str]) -> bool:
 
 
 def _check_unusual(unusual: Iterable[tuple[int, str]], walk: _Walk) -> None:
+    limits = {item.path for item in walk.values if item.plausible.limit}
     for k, path in unusual:
+        where = f"case.unusual[{k}]"
+        if path in limits:
+            # its range is the model's own limit: lowering the guard could not let a value through
+            raise InputError(where, path, "", "a field whose range is not the model's limit (this one's is)")
         if path in walk.guarded:
             continue
-        where = f"case.unusual[{k}]"
         if "*" in path or "?" in path:
             raise InputError(where, path, "", "one field per entry (no wildcards)")
         inside = sorted(p for p in walk.guarded if p.startswith(path + ".") or p.startswith(path + "["))

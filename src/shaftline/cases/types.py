@@ -125,6 +125,9 @@ class Plausible:
     #: The range is also the model's limit: the message says "allowed" and does not offer
     #: ``[case] unusual``, which could not let the value through.
     limit: bool = False
+    #: Brackets of a limit whose ends are excluded, written as the model's own message writes
+    #: them ("()", "[)"); none: "low to high".
+    ends: str = ""
 
     def __post_init__(self) -> None:
         if not self.low < self.high:
@@ -143,7 +146,10 @@ class Plausible:
         """The range in words, ``"0.02 to 4 m"`` (in ``shown_unit`` where one is set)."""
         if self.shown_unit:
             low, high, unit = self.low / self.shown_factor, self.high / self.shown_factor, self.shown_unit
-            return f"{float(f'{low:.6g}'):g} to {float(f'{high:.6g}'):g} {unit}"
+            low_text, high_text = f"{float(f'{low:.6g}'):g}", f"{float(f'{high:.6g}'):g}"
+            if self.ends:
+                return f"in {self.ends[0]}{low_text}, {high_text}{self.ends[1]} {unit}"
+            return f"{low_text} to {high_text} {unit}"
         return f"{_number(self.low)} to {_number(self.high)}{' ' + unit if unit else ''}"
 
     def shown(self, value: float, unit: str) -> tuple[float, str]:

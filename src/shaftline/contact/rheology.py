@@ -152,25 +152,35 @@ class ContactLubricant:
         # A lubricant built through the API must carry every datum the contact models read:
         # refused here in one line rather than failing deep inside a model (or, for tau_L = 0,
         # silently giving no fluid friction).
-        points = [tuple(point) for point in self.pressure_viscosity]
+        try:
+            points = tuple(tuple(float(value) for value in point) for point in self.pressure_viscosity)
+        except (TypeError, ValueError):
+            points = ()
         if len(points) == 0 or any(len(point) != 2 for point in points):
-            raise InputError("pressure_viscosity", points, "", "one or more (temperature degC, alpha 1/Pa) pairs")
+            raise InputError(
+                "pressure_viscosity",
+                str(self.pressure_viscosity),
+                "",
+                "one or more (temperature degC, alpha 1/Pa) pairs",
+            )
+        # kept as tuples of floats: the frozen dataclass stays hashable and comparable
+        object.__setattr__(self, "pressure_viscosity", points)
         temperatures = [float(t) for t, _ in points]
         rising = all(b > a for a, b in zip(temperatures, temperatures[1:], strict=False))
         if any(not (float(a) > 0.0) for _, a in points) or not rising:
             raise InputError(
                 "pressure_viscosity", points, "", "alpha > 0 1/Pa at temperatures rising from pair to pair"
             )
-        if not (self.limiting_shear_stress_0 >= 0.0):
-            raise InputError("limiting_shear_stress_0", self.limiting_shear_stress_0, "Pa", ">= 0")
-        if not (self.limiting_shear_ratio >= 0.0) or not (
+        if not (0.0 <= self.limiting_shear_stress_0 < math.inf):
+            raise InputError("limiting_shear_stress_0", self.limiting_shear_stress_0, "Pa", ">= 0, finite")
+        if not (0.0 <= self.limiting_shear_ratio < math.inf) or not (
             self.limiting_shear_ratio > 0.0 or self.limiting_shear_stress_0 > 0.0
         ):
             raise InputError(
                 "limiting_shear_ratio",
                 self.limiting_shear_ratio,
                 "",
-                ">= 0, and > 0 where limiting_shear_stress_0 is 0: the Bair-Winer stress needs tau_L(p) > 0",
+                ">= 0 and finite, and > 0 where limiting_shear_stress_0 is 0: the Bair-Winer stress needs tau_L(p) > 0",
             )
         if not (self.thermal_conductivity > 0.0):
             raise InputError("thermal_conductivity", self.thermal_conductivity, "W/(m K)", "> 0")

@@ -487,7 +487,9 @@ def _stribeck_table(result: BearingStudyResult) -> Table:
     if solutions.any():
         friction[~solutions] = math.inf
     lowest = int(friction.argmin())
-    lowest_friction = fmt(float(curve.friction_coefficient[lowest])) if solutions.any() else "- (no speed converged)"
+    lowest_friction = (
+        fmt(float(curve.friction_coefficient[lowest])) if solutions.any() else "- (no speed carried by the film)"
+    )
     lowest_speed = fmt(curve.speed[lowest] * 30 / math.pi) if solutions.any() else "-"
     transition = "-" if curve.transition_speed is None else fmt(curve.transition_speed * 30.0 / math.pi, 1, 4)
     if curve.transition_uncertain:

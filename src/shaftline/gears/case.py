@@ -29,6 +29,7 @@ from shaftline.cases.types import (
     field_error,
 )
 from shaftline.errors import InputError
+from shaftline.gears.mesh import HELIX_ANGLE_LIMIT_DEG, PRESSURE_ANGLE_LIMITS_DEG
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
@@ -46,21 +47,25 @@ TIP_DIAMETER = Plausible(5e-3, 10.0, "tip diameters of gears from 5 mm to 10 m")
 # 34.4) deg, [0, 45) deg), shown in degrees: a bare number (radians) gets the unit that fits,
 # and no offer of [case] unusual, which the limit would refuse again.
 _DEG = math.radians(1.0)
+# the same numbers as GearPair's checks; the open ends one ulp inside, so that a value the range
+# passes is one the model takes
 PRESSURE_ANGLE = Plausible(
-    math.radians(11.5),
-    math.radians(34.4),
+    math.nextafter(math.radians(PRESSURE_ANGLE_LIMITS_DEG[0]), 1.0),
+    math.nextafter(math.radians(PRESSURE_ANGLE_LIMITS_DEG[1]), 0.0),
     "normal pressure angles of 14.5-30 deg in use; the model's range",
     shown_unit="deg",
     shown_factor=_DEG,
     limit=True,
+    ends="()",
 )
 HELIX_ANGLE = Plausible(
     0.0,
-    math.radians(45.0),
+    math.nextafter(math.radians(HELIX_ANGLE_LIMIT_DEG), 0.0),
     "spur (0) to double-helical gears (about 40 deg); the model's range",
     shown_unit="deg",
     shown_factor=_DEG,
     limit=True,
+    ends="[)",
 )
 ROUGHNESS = Plausible(
     1e-9, 2e-5, f"superfinished (Ra 0.01 um) to rough machined (Ra 6 um) flanks ({_SEED} Table 1: 0.4 and 0.1 um)"

@@ -37,6 +37,10 @@ from shaftline.errors import InputError, first_offending, require_positive
 #: Tolerance on the centre distance against the one the profile shifts give, in normal
 #: modules: more is backlash no gear is cut for (or interference when smaller).
 CENTRE_DISTANCE_TOLERANCE = 0.05
+#: Normal pressure angles the model takes, degrees (open interval): 14.5-30 deg are in use.
+PRESSURE_ANGLE_LIMITS_DEG = (11.5, 34.4)
+#: Helix angles the model takes, degrees: [0, 45).
+HELIX_ANGLE_LIMIT_DEG = 45.0
 
 
 def involute(angle: float | np.ndarray) -> float | np.ndarray:
@@ -105,10 +109,18 @@ class GearPair:
                 raise InputError(name, teeth, "", "a whole number >= 5")
         require_positive("module", self.module, "m")
         require_positive("face_width", self.face_width, "m")
-        if not 0.2 < self.pressure_angle < 0.6:
-            raise InputError("pressure_angle", math.degrees(self.pressure_angle), "deg", "in (11.5, 34.4) deg")
-        if not 0.0 <= self.helix_angle < math.radians(45.0):
-            raise InputError("helix_angle", math.degrees(self.helix_angle), "deg", "in [0, 45) deg")
+        low, high = (math.radians(a) for a in PRESSURE_ANGLE_LIMITS_DEG)
+        if not low < self.pressure_angle < high:
+            raise InputError(
+                "pressure_angle",
+                math.degrees(self.pressure_angle),
+                "deg",
+                "in ({:g}, {:g}) deg".format(*PRESSURE_ANGLE_LIMITS_DEG),
+            )
+        if not 0.0 <= self.helix_angle < math.radians(HELIX_ANGLE_LIMIT_DEG):
+            raise InputError(
+                "helix_angle", math.degrees(self.helix_angle), "deg", f"in [0, {HELIX_ANGLE_LIMIT_DEG:g}) deg"
+            )
         for name, teeth, shift in (("shift_1", self.teeth_1, self.shift_1), ("shift_2", self.teeth_2, self.shift_2)):
             smallest = self.addendum - teeth * math.sin(self.transverse_pressure_angle) ** 2 / (
                 2.0 * math.cos(self.helix_angle)
@@ -161,7 +173,8 @@ class GearPair:
                 for k, given, shift in ((1, self.tip_radius_1, self.shift_1), (2, self.tip_radius_2, self.shift_2))
                 if given is not None
             }
-            if short:
+            if short and max(short.values()) > 0.0:
+                # a given tip at or above the rule's leaves the addendum of the other gear to blame
                 k = max(short, key=lambda gear: short[gear])
                 field, value = f"tip_radius_{k}", self.tip_radius(k)
             raise InputError(
