@@ -146,3 +146,23 @@ def test_the_manifest_says_which_files_the_latest_run_wrote(tmp_path):
     assert manifest["files"] == ["figures/gears_path.png", "report.html"]
     assert manifest["last_run"] == ["report.html"]
     assert (out / "figures" / "gears_path.png").read_text() == "first verb"
+
+
+def test_a_special_file_is_written_into_not_replaced(case, tmp_path):
+    # `--json /dev/null` replaced the device with a plain file (the staged write's rename), which broke
+    # every later use of /dev/null on the machine (found when PostgreSQL's initdb failed). A FIFO stands
+    # for the device here: it must still be a FIFO after the run, and its reader gets the JSON.
+    import stat
+    import threading
+
+    fifo = tmp_path / "results.fifo"
+    os.mkfifo(fifo)
+    received: list[bytes] = []
+    reader = threading.Thread(target=lambda: received.append(fifo.read_bytes()), daemon=True)
+    reader.start()
+    result = invoke("bearing", "solve", str(case), "--json", str(fifo))
+    reader.join(timeout=60)
+    assert result.exit_code == 0, result.output
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode)
+    assert json.loads(received[0])["bearing"]["cases"][0]["converged"] is True
+    assert not list(tmp_path.glob(".results.fifo.*"))

@@ -105,20 +105,38 @@ def check_file(path: Path, inputs: Iterable[Path] = (), field: str = "--json") -
             raise InputError(field, str(path), "", "a file other than the run's inputs")
     if path.exists() and not os.access(path, os.W_OK):
         raise InputError(field, str(path), "", "a file that can be written")
+    if _special(path):
+        return  # written into, not replaced (staged_file): its folder need not take new files
     _writable(path.parent, field, path)
+
+
+def _special(path: Path) -> bool:
+    """An existing path that is no regular file or folder: a device such as /dev/null, a FIFO,
+    a socket. Such a file is written into; replacing it would put a plain file in its place."""
+    return path.exists() and not path.is_file() and not path.is_dir()
 
 
 @contextmanager
 def staged_file(path: Path) -> Iterator[Path]:
-    """Yield a temporary file beside ``path`` that replaces it when the block completes."""
+    """Yield a temporary file beside ``path`` that replaces it when the block completes. A
+    special file (``/dev/null``, a FIFO) is not replaced: the temporary file, made in the
+    system's temporary folder, is copied into it."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    special = _special(path)
+    if not special:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    folder = None if special else path.parent
+    fd, temporary = tempfile.mkstemp(dir=folder, prefix=f".{path.name}.", suffix=".tmp")
     os.close(fd)
     try:
         yield Path(temporary)
-        _share(Path(temporary))
-        os.replace(temporary, path)
+        if special:
+            with open(temporary, "rb") as source, open(path, "wb") as target:
+                shutil.copyfileobj(source, target)
+            Path(temporary).unlink()
+        else:
+            _share(Path(temporary))
+            os.replace(temporary, path)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
         raise
