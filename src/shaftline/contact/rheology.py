@@ -165,9 +165,9 @@ class ContactLubricant:
             )
         # kept as tuples of floats: the frozen dataclass stays hashable and comparable
         object.__setattr__(self, "pressure_viscosity", points)
-        temperatures = [float(t) for t, _ in points]
+        temperatures = [t for t, _ in points]
         rising = all(b > a for a, b in zip(temperatures, temperatures[1:], strict=False))
-        if any(not (float(a) > 0.0) for _, a in points) or not rising:
+        if any(not (a > 0.0) for _, a in points) or not rising:
             raise InputError(
                 "pressure_viscosity", points, "", "alpha > 0 1/Pa at temperatures rising from pair to pair"
             )

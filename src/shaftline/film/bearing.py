@@ -1687,7 +1687,18 @@ class JournalBearing:
         magnitude = float(np.hypot(*load))
         if magnitude == 0.0:
             raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
-        found = self._find_equilibrium(load, tilt_y, tilt_z, initial, progress, initial_cavitated, initial_deformation)
+        deformation = None
+        if self.geometry.liner is not None and initial_deformation is not None:
+            deformation = np.array(initial_deformation, dtype=float)
+            shape = (self.options.axial_nodes, self.options.circumferential_nodes)
+            if deformation.shape != shape or not np.all(np.isfinite(deformation)):
+                raise InputError(
+                    "initial_deformation",
+                    f"an array of shape {deformation.shape}",
+                    "m",
+                    f"finite values on the bearing's grid, shape {shape}",
+                )
+        found = self._find_equilibrium(load, tilt_y, tilt_z, initial, progress, initial_cavitated, deformation)
         state = self._state(found.evaluation, load=load)
         contact = found.contact
         if found.started and not found.converged and self._at_floor(state.min_film_thickness):
@@ -1749,19 +1760,8 @@ class JournalBearing:
         settle_below = (
             REFINE_RESIDUAL if self.options.cavitation == "reynolds" else JFO_UNSETTLED_RESIDUAL
         ) * magnitude
-        deformation = None
-        if self.geometry.liner is not None and initial_deformation is not None:
-            deformation = np.array(initial_deformation, dtype=float)
-            shape = (self.options.axial_nodes, self.options.circumferential_nodes)
-            if deformation.shape != shape or not np.all(np.isfinite(deformation)):
-                raise InputError(
-                    "initial_deformation",
-                    f"an array of shape {deformation.shape}",
-                    "m",
-                    f"finite values on the bearing's grid, shape {shape}",
-                )
         evaluation, started = self._start_evaluation(
-            position, start_set, start_pressure, settle=not loose, deformation=deformation
+            position, start_set, start_pressure, settle=not loose, deformation=initial_deformation
         )
         residual = evaluation.force + load
         if not started:

@@ -479,18 +479,17 @@ def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
 
 
 def _stribeck_table(result: BearingStudyResult) -> Table:
+    import numpy as np
+
     curve = result.stribeck
     assert curve is not None
-    # the lowest friction of the speeds that are solutions (not at the floor, converged)
-    solutions = curve.converged.astype(bool) & ~curve.contact.astype(bool)
-    friction = curve.friction_coefficient if not solutions.any() else curve.friction_coefficient.copy()
+    # the lowest friction of the speeds that are solutions (converged, not at the floor)
+    solutions = ~curve.stalled & ~curve.contact.astype(bool)
+    lowest_friction, lowest_speed = "- (no speed carried by the film)", "-"
     if solutions.any():
-        friction[~solutions] = math.inf
-    lowest = int(friction.argmin())
-    lowest_friction = (
-        fmt(float(curve.friction_coefficient[lowest])) if solutions.any() else "- (no speed carried by the film)"
-    )
-    lowest_speed = fmt(curve.speed[lowest] * 30 / math.pi) if solutions.any() else "-"
+        lowest = int(np.where(solutions, curve.friction_coefficient, np.inf).argmin())
+        lowest_friction = fmt(float(curve.friction_coefficient[lowest]))
+        lowest_speed = fmt(curve.speed[lowest] * 30 / math.pi)
     transition = "-" if curve.transition_speed is None else fmt(curve.transition_speed * 30.0 / math.pi, 1, 4)
     if curve.transition_uncertain:
         transition += " (uncertain: among speeds not converged)"
@@ -507,8 +506,6 @@ def _stribeck_table(result: BearingStudyResult) -> Table:
     if stalled:
         rows.append(["speeds not converged (above the contact limit)", str(stalled)])
     if curve.max_reynolds_number is not None and curve.turbulent is not None:
-        import numpy as np
-
         # turbulence on or auto: where the coefficients applied, so the curve's change of slope
         # there is not read as a regime change of the asperity contact.
         turbulent = np.flatnonzero(curve.turbulent)

@@ -43,12 +43,11 @@ MODULE = Plausible(
 FACE_WIDTH = Plausible(1e-3, 1.5, "from instrument gears to the widest marine gears (engineering judgement)")
 CENTRE_DISTANCE = Plausible(0.01, 10.0, f"{_SEED} 140 mm, {_FZG} 91.5 mm; marine gearboxes up to a few metres")
 TIP_DIAMETER = Plausible(5e-3, 10.0, "tip diameters of gears from 5 mm to 10 m")
-# The pressure and helix angles' plausible ranges are the model's limits (GearPair: (11.5,
-# 34.4) deg, [0, 45) deg), shown in degrees: a bare number (radians) gets the unit that fits,
-# and no offer of [case] unusual, which the limit would refuse again.
+# The pressure and helix angles' plausible ranges are GearPair's own limits, shown in degrees: a
+# bare number (radians) gets the unit that fits, and no offer of [case] unusual, which the limit
+# would refuse again. The open ends sit one ulp inside, so that a value the range passes is one
+# the model takes.
 _DEG = math.radians(1.0)
-# the same numbers as GearPair's checks; the open ends one ulp inside, so that a value the range
-# passes is one the model takes
 PRESSURE_ANGLE = Plausible(
     math.nextafter(math.radians(PRESSURE_ANGLE_LIMITS_DEG[0]), 1.0),
     math.nextafter(math.radians(PRESSURE_ANGLE_LIMITS_DEG[1]), 0.0),

@@ -169,8 +169,8 @@ class GearPair:
             # given tips, the one furthest below its tip by the addendum rule.
             field, value = "addendum", self.addendum
             short = {
-                k: self.pitch_radius(k) + self.module * (self.addendum + shift) - given
-                for k, given, shift in ((1, self.tip_radius_1, self.shift_1), (2, self.tip_radius_2, self.shift_2))
+                k: self._addendum_tip_radius(k) - given
+                for k, given in ((1, self.tip_radius_1), (2, self.tip_radius_2))
                 if given is not None
             }
             if short and max(short.values()) > 0.0:
@@ -211,8 +211,10 @@ class GearPair:
 
     def tip_radius(self, gear: int) -> float:
         given = self.tip_radius_1 if gear == 1 else self.tip_radius_2
-        if given is not None:
-            return given
+        return self._addendum_tip_radius(gear) if given is None else given
+
+    def _addendum_tip_radius(self, gear: int) -> float:
+        """The tip radius the addendum and the profile shift give, m."""
         shift = self.shift_1 if gear == 1 else self.shift_2
         return self.pitch_radius(gear) + self.module * (self.addendum + shift)
 
