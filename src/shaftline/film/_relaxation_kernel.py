@@ -3,12 +3,12 @@ of the Reynolds complementarity problem, and nonlinear Gauss-Seidel of the mass-
 equations.
 
 The film solvers' loops over grid nodes (:func:`shaftline.film.relaxation.projected_sor` and
-:func:`shaftline.film.jfo.relaxed_set` wrap them). A sweep updates each free node from its four
-neighbours; the nodes are coloured so that no two neighbours share a colour — red and black,
-(i + j) even or odd, and on a grid with an odd number of columns the last column (a neighbour of
-the first across theta = 0) in two colours of its own by row parity — and visited colour by
-colour, so the sweep is Gauss-Seidel in that order and its result does not depend on the order
-within a colour.
+:meth:`shaftline.film.cavitation.jfo.MassConserving.relaxed_set` wrap them). A sweep updates
+each free node from its four neighbours; the nodes are coloured so that no two neighbours share
+a colour — red and black, (i + j) even or odd, and on a grid with an odd number of columns the
+last column (a neighbour of the first across theta = 0) in two colours of its own by row parity
+— and visited colour by colour, so the sweep is Gauss-Seidel in that order and its result does
+not depend on the order within a colour.
 
 This module imports numba; the film solvers import it when they first sweep, so that importing
 the film package stays cheap for callers that never solve.
@@ -146,8 +146,8 @@ def jfo_gauss_seidel_sweeps(
     With its neighbours held, a node's residual is piecewise linear and increasing in its own
     ``u``, with one root: ``-R0 / diag(A)`` when the residual at ``u = 0``, ``R0``, is negative,
     else ``-R0 / q`` (``q = couette_face``, the Couette flux out through the node's east face;
-    :func:`shaftline.film.jfo.relaxed_set`). ``R0`` is the inflow of the western face's void
-    share ``q_west max(-u_west, 0)`` minus the pressure inflow from the four neighbours (their
+    :meth:`~shaftline.film.cavitation.jfo.MassConserving.relaxed_set`). ``R0`` is the inflow of
+    the western face's void share ``q_west max(-u_west, 0)`` minus the pressure inflow from the four neighbours (their
     ``max(u, 0)``, or ``fixed_pressure`` on fixed nodes) minus ``rhs``. Fixed nodes keep
     ``u``. Stops after the first sweep that changes no node's side of zero (``u < 0``).
     Returns the number of sweeps done.

@@ -70,30 +70,6 @@ MIXED_TABLE_ROWS = [
 ]
 
 
-#: Units of a case's ``thermal`` entry (with [bearing.thermal]).
-THERMAL_UNITS = {
-    "thermal.inlet_temperature": "degC",
-    "thermal.effective_temperature": "degC",
-    "thermal.outlet_temperature": "degC",
-    "thermal.viscosity": "Pa s",
-    "thermal.heat_to_lubricant": "-",
-}
-
-
-def thermal_json(run: Any) -> dict[str, Any]:
-    """The heat balance of a case's result (``run.thermal``) for results.json."""
-    balance = run.thermal
-    return {
-        "inlet_temperature": balance.inlet_temperature,
-        "effective_temperature": balance.effective_temperature,
-        "outlet_temperature": balance.outlet_temperature,
-        "viscosity": balance.viscosity,
-        "heat_to_lubricant": run.case.thermal.heat_to_lubricant,
-        "converged": balance.converged,
-        "film_solutions": balance.evaluations,
-    }
-
-
 #: ``--strict`` of ``bearing solve`` and ``bearing stribeck``: the findings of
 #: :meth:`BearingFilm.findings` with and without ``criterion``.
 BEARING_STRICT = strict_help(
@@ -136,7 +112,7 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
 
     def solve(self, study: BearingStudy, progress: Progress = no_progress, **options: Any) -> BearingStudyResult:
         """The cases with :func:`shaftline.film.sweep` (``workers``, ``scheduler``: where)."""
-        from shaftline.film.study import solve_study
+        from shaftline.film.solve import solve_study
 
         return solve_study(
             study,
@@ -147,40 +123,7 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
         )
 
     def to_json(self, result: BearingStudyResult) -> dict[str, Any]:
-        import numpy as np
-
-        from shaftline.film.summary import EXTRA_UNITS, equilibrium_summary, units
-
-        mixed = any(run.case.geometry.surface is not None for run in result.cases)
-        lined = any(run.case.geometry.liner is not None for run in result.cases)
-        turbulence = any(run.case.options.turbulence != "off" for run in result.cases)
-        extra = {"liner_deformation_map": "m"} if lined else {}
-        if turbulence:
-            extra["reynolds_number_map"] = "-"
-        if any(run.thermal is not None for run in result.cases):
-            extra.update(THERMAL_UNITS)
-        out: dict[str, Any] = {
-            "units": {**units(mixed, lined, turbulence), **EXTRA_UNITS, **extra},
-            "cases": [
-                {"name": run.case.name, **equilibrium_summary(run.equilibrium, run.coefficients)}
-                for run in result.cases
-            ],
-        }
-        for entry, run in zip(out["cases"], result.cases, strict=True):
-            if run.thermal is not None:
-                entry["thermal"] = thermal_json(run)
-            deformation = run.equilibrium.state.liner_deformation
-            if deformation is not None:
-                # Rows along the bearing from the aft edge, columns around the bore from the grid's
-                # first angle (theta of the state), metres.
-                entry["liner_deformation_map"] = np.round(deformation, 12).tolist()
-            reynolds = run.equilibrium.state.reynolds_number
-            if reynolds is not None:
-                # Rows and columns as the liner deformation map's.
-                entry["reynolds_number_map"] = np.round(reynolds, 3).tolist()
-        if result.stribeck is not None:
-            out["stribeck"] = stribeck_json(result.stribeck)
-        return out
+        return result.to_dict()
 
     def findings(self, result: BearingStudyResult) -> list[Finding]:
         out: list[Finding] = []
@@ -210,18 +153,19 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                     )
                 )
             roughness = run.case.surface_roughness
-            if state.lubrication_regime is not None and not equilibrium.contact:
-                if state.lubrication_regime != "full film":
+            rough = state.rough
+            if rough is not None and not equilibrium.contact:
+                if rough.lubrication_regime != "full film":
                     out.append(
                         Finding(
-                            f"{name}: {state.lubrication_regime} lubrication — h_min/σ = {state.min_film_ratio:.3g}; "
-                            f"the asperities carry {100 * state.asperity_load_share:.3g} % of the load (peak "
-                            f"{state.max_asperity_pressure / 1e6:.3g} MPa) and give "
-                            f"{100 * state.boundary_friction_force / max(state.friction_force, 1e-300):.3g} % of the "
+                            f"{name}: {rough.lubrication_regime} lubrication — h_min/σ = {rough.min_film_ratio:.3g}; "
+                            f"the asperities carry {100 * rough.asperity_load_share:.3g} % of the load (peak "
+                            f"{rough.max_asperity_pressure / 1e6:.3g} MPa) and give "
+                            f"{100 * rough.boundary_friction_force / max(state.friction_force, 1e-300):.3g} % of the "
                             "friction (Greenwood-Tripp contact with Patir-Cheng flow factors): "
                             + (
                                 "wear is expected (seed 001, Sect. 5.3)."
-                                if state.asperity_load_share >= 0.01
+                                if rough.asperity_load_share >= 0.01
                                 else "light asperity contact, below the 1 % of the load that defines the "
                                 "transition speed: wear is possible."
                             ),
@@ -404,7 +348,7 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                     caption=f"{name}: film and pressure",
                 )
             )
-            if state.asperity_pressure is not None:
+            if state.rough is not None:
                 blocks.append(
                     Figure(
                         f"bearing_{index}_contact.png",
@@ -413,7 +357,7 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                         caption=f"{name}: asperity contact pressure and film-thickness ratio λ = h/σ",
                     )
                 )
-            if state.liner_deformation is not None:
+            if state.liner is not None:
                 model = run.case.geometry.liner.model if run.case.geometry.liner is not None else "column"
                 blocks.append(
                     Figure(
@@ -423,14 +367,14 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                         caption=f"{name}: liner deformation ({model} model) and the film including it",
                     )
                 )
-            if state.reynolds_number is not None:
+            if state.turbulence is not None:
                 blocks.append(
                     Figure(
                         f"bearing_{index}_reynolds.png",
                         figures.reynolds_map,
                         (state, name),
                         caption=f"{name}: local Reynolds number ρωRh/μ of the film (turbulence coefficients "
-                        f"{'applied' if state.turbulent else 'not applied'})",
+                        f"{'applied' if state.turbulence.turbulent else 'not applied'})",
                     )
                 )
             blocks.append(
@@ -450,32 +394,6 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
                 )
             )
         return blocks
-
-
-def stribeck_json(curve: StribeckCurve) -> dict[str, Any]:
-    """The Stribeck curve of ``bearing stribeck`` for results.json (speeds in rpm)."""
-
-    def clean(values: Any) -> list[Any]:
-        return [float(v) if math.isfinite(v) else None for v in values]
-
-    out: dict[str, Any] = {
-        "speed_rpm": clean(curve.speed * 30.0 / math.pi),
-        "friction_coefficient": clean(curve.friction_coefficient),
-        "asperity_load_share": clean(curve.asperity_load_share),
-        "min_film_thickness": clean(curve.min_film_thickness),
-        "min_film_ratio": clean(curve.min_film_ratio),
-        "lubrication_regime": list(curve.regime),
-        "converged": [bool(v) for v in curve.converged],
-        "contact": [bool(v) for v in curve.contact],
-        "transition_speed_rpm": None
-        if curve.transition_speed is None
-        else float(curve.transition_speed * 30.0 / math.pi),
-        "transition_uncertain": curve.transition_uncertain,
-    }
-    if curve.max_reynolds_number is not None and curve.turbulent is not None:
-        out["max_reynolds_number"] = clean(curve.max_reynolds_number)
-        out["turbulent"] = [bool(v) for v in curve.turbulent]
-    return out
 
 
 def _stribeck_table(result: BearingStudyResult) -> Table:
@@ -525,19 +443,20 @@ def _unresolved_contact_zone(case: BearingCase, film: np.ndarray) -> str:
     nodes than the settling needs, what a user can change ("" otherwise): on such a grid the
     discrete film force jumps as the minimum moves between nodes and Newton stalls (docs/theory.md,
     "Rigid rough bore at low speed")."""
-    from shaftline.film.bearing import SETTLE_ZONE_NODES, contact_zone_nodes, nodes_to_resolve_contact_zone
+    from shaftline.film.surfaces import contact_zone_nodes, nodes_to_resolve_contact_zone
 
     surface = case.geometry.surface
     if surface is None or case.geometry.liner is not None:
         return ""
+    needed = case.options.settling.zone_nodes
     zone = contact_zone_nodes(film, surface.sigma)
-    if zone >= SETTLE_ZONE_NODES:
+    if zone >= needed:
         return ""
     return (
         f" The rough contact zone (film within σ of its minimum) spans {zone} of the {film.shape[1]} nodes round "
         f"the bore, too few for the discrete film force to have a root Newton can follow (at least "
-        f"{SETTLE_ZONE_NODES} needed): set [bearing.solver] circumferential_nodes to about "
-        f"{nodes_to_resolve_contact_zone(film, surface.sigma)}, or model the liner ([bearing.liner]), which "
+        f"{needed} needed): set [bearing.solver] circumferential_nodes to about "
+        f"{nodes_to_resolve_contact_zone(film, surface.sigma, needed)}, or model the liner ([bearing.liner]), which "
         'widens the zone (docs/theory.md, "Rigid rough bore at low speed").'
     )
 
@@ -546,13 +465,11 @@ def _stribeck_findings(curve: StribeckCurve, case: BearingCase) -> list[Finding]
     """The speeds of a Stribeck curve whose equilibrium stalled above the contact limit (their
     points are not solutions), with what would resolve a rigid rough bore's contact zone there:
     near ε = 1 the zone (film within σ of its minimum) is 2 sqrt(2σ/c) wide (docs/theory.md, "Rigid
-    rough bore at low speed"), so :data:`~shaftline.film.bearing.SETTLE_ZONE_NODES` + 1 nodes
+    rough bore at low speed"), so ``SettleOptions.zone_nodes`` + 1 nodes
     across it (one for the count's rounding) need that many times 2 pi over its width round the bore.
     Advisory (``criterion``) while the transition speed rests on solved speeds: the rest of the
     curve stands, and the table counts them too; not acceptable when the transition lies among
     them (``StribeckCurve.transition_uncertain``)."""
-    from shaftline.film.bearing import SETTLE_ZONE_NODES
-
     stalled = curve.stalled
     if not stalled.any():
         return []
@@ -567,15 +484,16 @@ def _stribeck_findings(curve: StribeckCurve, case: BearingCase) -> list[Finding]
             " The transition speed rests on them: it lies among speeds that did not converge, so it is not a result."
         )
     geometry, nodes = case.geometry, case.options.circumferential_nodes
+    zone_nodes = case.options.settling.zone_nodes
     if geometry.surface is not None and geometry.liner is None:
         width = 2.0 * math.sqrt(2.0 * geometry.surface.sigma / geometry.radial_clearance)  # rad, at ε = 1
-        needed = math.ceil((SETTLE_ZONE_NODES + 1) * 2.0 * math.pi / width)
+        needed = math.ceil((zone_nodes + 1) * 2.0 * math.pi / width)
         needed += needed % 2
         if needed > nodes:
             text += (
                 f" Near ε = 1 the rough contact zone (film within σ of its minimum) is {math.degrees(width):.2g}° "
                 f"wide, {nodes * width / (2.0 * math.pi):.2g} of the {nodes} nodes round the bore (at least "
-                f"{SETTLE_ZONE_NODES} needed for a root Newton can follow): [bearing.solver] circumferential_nodes "
+                f"{zone_nodes} needed for a root Newton can follow): [bearing.solver] circumferential_nodes "
                 f'of about {needed} resolve it, or model the liner (docs/theory.md, "Rigid rough bore at low speed").'
             )
     # Advisory while the transition speed rests on solved speeds (the curve's other points

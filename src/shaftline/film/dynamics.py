@@ -13,10 +13,20 @@ linearised with its void-fraction transport (docs/theory.md, Eq. C4).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from shaftline.film.bearing import BearingState, JournalBearing
+from shaftline import export
+from shaftline.export import quantity
+
+if TYPE_CHECKING:
+    from shaftline.film.bearing import JournalBearing
+    from shaftline.film.results import BearingState
+
+
+def _listed(matrix: np.ndarray) -> list[Any]:
+    return matrix.tolist()
 
 
 @dataclass(frozen=True, eq=False)
@@ -38,10 +48,41 @@ class DynamicCoefficients:
     Equality is identity: the fields hold arrays, which have no single truth value.
     """
 
-    stiffness: np.ndarray
-    damping: np.ndarray
-    stiffness_4x4: np.ndarray | None = None
-    damping_4x4: np.ndarray | None = None
+    stiffness: np.ndarray = quantity(
+        "N/m, [[Kyy, Kyz], [Kzy, Kzz]]",
+        "film stiffness matrix in (y, z); null where the film fails",
+        convert=_listed,
+    )
+    damping: np.ndarray = quantity(
+        "N s/m, [[Cyy, Cyz], [Czy, Czz]]",
+        "film damping matrix in (y, z); null where the film fails",
+        convert=_listed,
+    )
+    stiffness_4x4: np.ndarray | None = quantity(
+        "rows (Fy, Fz) in N, (My, Mz) in N m; columns (ey, ez) per m, (tilt_y, tilt_z) per rad",
+        "-d(Fy, Fz, My, Mz)/d(ey, ez, tilt_y, tilt_z): film stiffness with the tilt (moment) terms, "
+        "M the first moments about mid-plane as moment_y, moment_z; `stiffness` is its top-left block; "
+        "null where the film fails",
+        convert=_listed,
+        default=None,
+    )
+    damping_4x4: np.ndarray | None = quantity(
+        "as stiffness_4x4, per m/s and per rad/s",
+        "-d(Fy, Fz, My, Mz)/d(vy, vz, tilt rates): film damping with the tilt terms; `damping` is "
+        "its top-left block; null where the film fails",
+        convert=_listed,
+        default=None,
+    )
+
+    def to_dict(self) -> dict[str, Any]:
+        """The four matrices as nested lists (None where not computed)."""
+        return export.to_dict(self)
+
+    @staticmethod
+    def absent() -> dict[str, None]:
+        """The keys of :meth:`to_dict` with null values: where the film does not carry the load
+        there is no linearisation."""
+        return dict.fromkeys(export.units(DynamicCoefficients))
 
     def dimensionless(self, load: float, clearance: float, speed: float) -> tuple[np.ndarray, np.ndarray]:
         """``K c / W`` and ``C c omega / W``, the usual design-chart groups."""

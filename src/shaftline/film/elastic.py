@@ -20,7 +20,7 @@ rigid film change ``dH_r`` with the liner following: the liner equation linearis
 ``(A + B K/M) dP = -B (dH_r / M)``.
 
 ``B`` is assembled face by face from the same conductance and transport derivatives as
-:func:`~shaftline.film.reynolds.stencil_derivative`, the film's own directional derivative
+:func:`~shaftline.film.stencil.stencil_derivative`, the film's own directional derivative
 (checked against it in tests/film/test_liner.py).
 """
 
@@ -35,16 +35,17 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from threadpoolctl import ThreadpoolController
 
+from shaftline.film.cavitation.base import SolverCounts
 from shaftline.film.layer import ElasticLayer
-from shaftline.film.reynolds import Stencil
+from shaftline.film.options import LinerOptions
 from shaftline.film.roughness import FilmFlow
+from shaftline.film.stencil import Stencil, film_operator
 
 __all__ = [
     "CoupledLiner",
     "CoupledOrderings",
     "LayerSystem",
     "LinerSystem",
-    "film_operator",
     "film_residual_jacobian",
     "grid_splu",
 ]
@@ -136,7 +137,7 @@ def film_residual_jacobian(
     film_rate: np.ndarray | None,
 ) -> sp.csc_matrix:
     """``B = dr/dH`` (n x n, n = nz nt, row-major), the film residual's change with the film at
-    fixed pressure: the derivative of :func:`~shaftline.film.reynolds.stencil_derivative` (smooth
+    fixed pressure: the derivative of :func:`~shaftline.film.stencil.stencil_derivative` (smooth
     or rough, with the squeeze factor) assembled face by face.
 
     A face between nodes ``a`` and ``b`` with conductance ``g(h_f)`` and Couette transport
@@ -148,19 +149,6 @@ def film_residual_jacobian(
     row_a, row_b, squeeze = _face_derivatives(film, relative_pressure, d_theta, d_z, rough, film_rate)
     diagonal = np.zeros(pattern.size) if squeeze is None else squeeze
     return pattern.matrix(np.concatenate([row_a, row_a, row_b, row_b, diagonal]))
-
-
-def film_operator(stencil: Stencil) -> sp.csr_matrix:
-    """The film operator ``A`` (n x n) of a stencil: ``A @ P = apply_operator(P)``."""
-    nz, nt = stencil.c_theta.shape
-    node = np.arange(nz * nt).reshape(nz, nt)
-    a = np.concatenate([node.ravel(), node[:-1].ravel()])
-    b = np.concatenate([np.roll(node, -1, axis=1).ravel(), node[1:].ravel()])
-    c = np.concatenate([stencil.c_theta.ravel(), stencil.c_z.ravel()])
-    rows = np.concatenate([a, b, a, b])
-    cols = np.concatenate([a, b, b, a])
-    vals = np.concatenate([c, c, -c, -c])
-    return sp.csr_matrix((vals, (rows, cols)), shape=(nz * nt, nz * nt))
 
 
 def _coupled_matrix(
@@ -228,10 +216,9 @@ class CoupledLiner(Protocol):
         ...
 
 
-#: SuperLU's panel width and supernode relaxation of the grids' factors (:func:`grid_splu`).
+#: SuperLU's panel width and supernode relaxation of the grids' factors (:func:`grid_splu`): a
+#: setting of the library call for the narrow supernodes of a 2-D grid, not a tuning of the method.
 SUPERLU_PANEL = 4
-#: Kept orderings of the coupled matrix (free sets) per solver state: an equilibrium meets 2 to 8.
-ORDERING_SETS = 16
 
 
 class CoupledOrderings:
@@ -243,11 +230,15 @@ class CoupledOrderings:
     once it settles) is factorised in the ordering found the first time, with the sub-matrix
     permuted to it and SuperLU told to keep that order (``NATURAL``). The factor is the same
     up to round-off (the same pivots: diagonal, no pivoting); the owner clears the orderings
-    where its results must not depend on earlier calls (:meth:`clear`).
+    where its results must not depend on earlier calls (:meth:`clear`). At most ``kept`` free
+    sets are kept (``LinerOptions.kept_orderings``), the oldest dropped first; every
+    factorisation is counted in ``counts.factorisations``.
     """
 
-    def __init__(self) -> None:
+    def __init__(self, kept: int = LinerOptions.kept_orderings, counts: SolverCounts | None = None) -> None:
         self._sets: dict[bytes, tuple[np.ndarray, tuple[np.ndarray, np.ndarray, np.ndarray] | None]] = {}
+        self.kept = kept
+        self.counts = SolverCounts() if counts is None else counts
 
     def clear(self) -> None:
         self._sets.clear()
@@ -260,10 +251,11 @@ class CoupledOrderings:
         nodes (flat numbers) of its rows and columns, in order."""
         key = np.packbits(free).tobytes()
         kept = self._sets.get(key)
+        self.counts.factorisations += 1
         if kept is None:
             nodes = np.flatnonzero(free)
             factor = _factorise(pattern, values, nodes, "MMD_AT_PLUS_A")
-            if len(self._sets) >= ORDERING_SETS:
+            if len(self._sets) >= self.kept:
                 self._sets.pop(next(iter(self._sets)))
             # The elimination order: the sub-matrix's column perm_c[j] is eliminated j-th.
             self._sets[key] = (nodes[np.argsort(factor.perm_c)], None)
@@ -430,19 +422,6 @@ class LinerSystem:
         return (rigid_change + self.coupling * d_pressure) / self.diagonal.reshape(d_pressure.shape)
 
 
-#: Relative residual of the Krylov solve of a layer-model Newton step: an inexact Newton step
-#: (Dembo, Eisenstat & Steihaug 1982): the film-liner iteration converges linearly at about this
-#: rate once its quadratic phase is over, and tests its own residual.
-LAYER_STEP_RTOL = 1e-6
-#: Relative residual of the layer model's film response (the equilibrium's Jacobian and the
-#: stiffness): close enough to the exact linearisation for Newton's quadratic convergence and
-#: for the stiffness against central differences (tests/film/test_liner.py).
-LAYER_RESPONSE_RTOL = 1e-10
-#: Krylov iterations allowed per solve (restarted GMRES: RESTART per cycle).
-LAYER_RESTART = 40
-LAYER_CYCLES = 5
-
-
 @lru_cache(maxsize=1)
 def _threadpools() -> ThreadpoolController:
     """The BLAS thread pools loaded (numpy's and scipy's), found once."""
@@ -479,6 +458,9 @@ class LayerSystem:
         The film's pressure scale ``p_ref``, Pa.
     clearance : float
         Radial clearance ``c``, m.
+    options : LinerOptions
+        The Krylov solves' tolerances and iteration limits (``layer_step_rtol``,
+        ``layer_response_rtol``, ``layer_restart``, ``layer_cycles``).
     krylov_iterations : int
         GMRES iterations spent in this system's solves so far.
     """
@@ -489,6 +471,7 @@ class LayerSystem:
     slope: np.ndarray
     scale: float
     clearance: float
+    options: LinerOptions = LinerOptions()
     krylov_iterations: int = 0
 
     @classmethod
@@ -507,10 +490,11 @@ class LayerSystem:
         scale: float,
         clearance: float,
         orderings: CoupledOrderings | None = None,
+        options: LinerOptions = LinerOptions(),
     ) -> LayerSystem:
         """Assemble the operator and factorise the preconditioner for the film ``film``
         (dimensionless) with the ``held`` nodes out; ``slope`` = ``dp_a/dh`` (Pa/m);
-        ``orderings`` as in :meth:`LinerSystem.build`."""
+        ``orderings`` as in :meth:`LinerSystem.build`; ``options`` the Krylov solves'."""
         k_self = layer.self_compliance
         diagonal = 1.0 - k_self * slope
         column = LinerSystem.build(
@@ -528,7 +512,7 @@ class LayerSystem:
         )
         free = column.free
         operator = film_operator(stencil)[free][:, free].tocsr()
-        return cls(column, operator, layer, slope.ravel(), scale, clearance)
+        return cls(column, operator, layer, slope.ravel(), scale, clearance, options)
 
     @property
     def free(self) -> np.ndarray:
@@ -577,8 +561,8 @@ class LayerSystem:
                 rhs,
                 rtol=rtol,
                 atol=0.0,
-                restart=LAYER_RESTART,
-                maxiter=LAYER_CYCLES,
+                restart=self.options.layer_restart,
+                maxiter=self.options.layer_cycles,
                 callback=counter,
                 callback_type="pr_norm",
             )
@@ -590,7 +574,7 @@ class LayerSystem:
     def step(self, liner_residual: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Newton step ``(dP, dD)`` (flat, n) for the liner residual ``R`` (film residual zero)."""
         r = liner_residual.ravel()
-        return self.solve(np.zeros(int(self.free.sum())), -r, LAYER_STEP_RTOL)
+        return self.solve(np.zeros(int(self.free.sum())), -r, self.options.layer_step_rtol)
 
     def film_direction(self, rigid_change: np.ndarray) -> np.ndarray:
         """``dH_r`` itself: the layer's solve (:meth:`response`) takes the asperity load's share."""
@@ -607,7 +591,8 @@ class LayerSystem:
         d_deformation = np.zeros_like(flat)
         for j in range(shape[0]):  # one Krylov solve per direction (2 to 8 of them)
             liner_rhs = self._deflection(self.clearance * self.slope * rigid[j])
-            d_pressure[j], d_deformation[j] = self.solve(-flat[j, self.free], liner_rhs, LAYER_RESPONSE_RTOL)
+            rtol = self.options.layer_response_rtol
+            d_pressure[j], d_deformation[j] = self.solve(-flat[j, self.free], liner_rhs, rtol)
         return d_pressure.reshape(shape), d_deformation.reshape(shape)
 
     def deformation_change(self, rigid_change: np.ndarray, d_pressure: np.ndarray) -> np.ndarray:
@@ -627,7 +612,12 @@ class LayerSystem:
         matrix = spla.LinearOperator((rhs.size, rhs.size), matvec=product, dtype=float)
         with _threadpools().limit(limits=1, user_api="blas"):
             w, _ = spla.gmres(
-                matrix, rhs, rtol=LAYER_RESPONSE_RTOL, atol=0.0, restart=LAYER_RESTART, maxiter=LAYER_CYCLES
+                matrix,
+                rhs,
+                rtol=self.options.layer_response_rtol,
+                atol=0.0,
+                restart=self.options.layer_restart,
+                maxiter=self.options.layer_cycles,
             )
         return (w / diagonal).reshape(shape)
 

@@ -14,7 +14,7 @@ import numpy as np
 from shaftline.report.plotting import figure_function, plain
 
 if TYPE_CHECKING:
-    from shaftline.film.bearing import BearingState
+    from shaftline.film.results import BearingState
 
 
 def _unwrapped(state: BearingState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -110,11 +110,12 @@ def comparison(names: Sequence[str], states: Sequence[BearingState], *, ax: Any)
 @figure_function(layout=(1, 2), size=(11, 4.2))
 def contact_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     """Unwrapped asperity contact pressure and film-thickness ratio lambda = h/sigma maps of a
-    rough film (``state.asperity_pressure``), with the regime limits 1 and 3 as contours."""
+    rough film (``state.rough``), with the regime limits 1 and 3 as contours."""
     theta, order, z = _unwrapped(state)
-    assert state.asperity_pressure is not None and state.film_ratio is not None
-    contact = state.asperity_pressure[:, order] / 1e6
-    ratio = np.minimum(state.film_ratio[:, order], 10.0)
+    rough = state.rough
+    assert rough is not None
+    contact = rough.asperity_pressure[:, order] / 1e6
+    ratio = np.minimum(rough.film_ratio[:, order], 10.0)
     # A film below the asperities' mean plane (boundary lubrication, docs/theory.md) has λ < 0:
     # the scale reaches down to it, with λ = 0 drawn too.
     low = min(0.0, float(np.floor(ratio.min())))
@@ -128,42 +129,44 @@ def contact_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     for axes in ax:
         _unwrapped_axes(axes)
     head = f"{plain(title)}: " if title else ""
-    ax[0].set_title(f"{head}asperities carry {100 * state.asperity_load_share:.2g} % of the load")
+    ax[0].set_title(f"{head}asperities carry {100 * rough.asperity_load_share:.2g} % of the load")
     shown = ", ".join(f"{v:g}" for v in limits)
-    ax[1].set_title(f"λ_min = {state.min_film_ratio:.2f} ({state.lubrication_regime}); contours λ = {shown}")
+    ax[1].set_title(f"λ_min = {rough.min_film_ratio:.2f} ({rough.lubrication_regime}); contours λ = {shown}")
     return ax
 
 
 @figure_function(layout=(1, 2), size=(11, 4.2))
 def liner_maps(state: BearingState, title: str = "", *, ax: Any) -> Any:
     """Unwrapped liner deformation and film (deformation included) maps of a bore with an
-    elastic liner (``state.liner_deformation``)."""
+    elastic liner (``state.liner``)."""
     theta, order, z = _unwrapped(state)
-    assert state.liner_deformation is not None
-    mesh = ax[0].contourf(theta, z, state.liner_deformation[:, order] * 1e6, levels=30, cmap="viridis", rasterized=True)
+    liner = state.liner
+    assert liner is not None
+    mesh = ax[0].contourf(theta, z, liner.deformation[:, order] * 1e6, levels=30, cmap="viridis", rasterized=True)
     ax[0].figure.colorbar(mesh, ax=ax[0], label="liner deformation u [µm]")
     mesh = ax[1].contourf(theta, z, state.film[:, order] * 1e6, levels=30, cmap="Blues", rasterized=True)
     ax[1].figure.colorbar(mesh, ax=ax[1], label="film h with deformation [µm]")
     for axes in ax:
         _unwrapped_axes(axes)
     head = f"{plain(title)}: " if title else ""
-    ax[0].set_title(f"{head}liner deformation, max {state.max_liner_deformation * 1e6:.3g} µm")
+    ax[0].set_title(f"{head}liner deformation, max {liner.max_deformation * 1e6:.3g} µm")
     ax[1].set_title(f"film with deformation, h_min {state.min_film_thickness * 1e6:.3g} µm")
     return ax
 
 
 @figure_function(size=(7, 4.2))
 def reynolds_map(state: BearingState, title: str = "", *, ax: Any) -> Any:
-    """Unwrapped map of the local Reynolds number ``rho omega R h / mu`` (``state.reynolds_number``,
+    """Unwrapped map of the local Reynolds number ``rho omega R h / mu`` (``state.turbulence``,
     with ``[solver] turbulence`` on or auto)."""
     theta, order, z = _unwrapped(state)
-    assert state.reynolds_number is not None
-    mesh = ax.contourf(theta, z, state.reynolds_number[:, order], levels=30, cmap="cividis", rasterized=True)
+    turbulence = state.turbulence
+    assert turbulence is not None
+    mesh = ax.contourf(theta, z, turbulence.reynolds_number[:, order], levels=30, cmap="cividis", rasterized=True)
     ax.figure.colorbar(mesh, ax=ax, label="local Reynolds number Re_h [-]")
     _unwrapped_axes(ax)
     head = f"{plain(title)}: " if title else ""
-    kind = "turbulent" if state.turbulent else "laminar"
-    ax.set_title(f"{head}Re_h max {state.max_reynolds_number:.4g} ({kind} film)")
+    kind = "turbulent" if turbulence.turbulent else "laminar"
+    ax.set_title(f"{head}Re_h max {turbulence.max_reynolds_number:.4g} ({kind} film)")
     return ax
 
 

@@ -28,6 +28,7 @@ from typing import Any, Literal, get_args
 import numpy as np
 
 from shaftline.errors import InputError, require_finite, require_positive
+from shaftline.export import quantity
 from shaftline.film.liner import MAX_THICKNESS_RATIO, Liner
 from shaftline.film.roughness import SurfaceRoughness
 
@@ -389,10 +390,10 @@ class JournalPosition:
         Velocities of the journal centre, m/s (squeeze film; zero at steady state).
     """
 
-    ey: float = 0.0
-    ez: float = 0.0
-    tilt_y: float = 0.0
-    tilt_z: float = 0.0
+    ey: float = quantity("m", "vertical offset of the journal centre at mid-plane from the nominal bore axis", default=0.0)
+    ez: float = quantity("m", "horizontal (starboard) offset of the journal centre at mid-plane", default=0.0)
+    tilt_y: float = quantity("rad", "journal tilt in the vertical plane (dy/dx)", default=0.0)
+    tilt_z: float = quantity("rad", "journal tilt in the horizontal plane (dz/dx)", default=0.0)
     vy: float = 0.0
     vz: float = 0.0
 

@@ -19,6 +19,7 @@ from functools import lru_cache
 from typing import Literal, get_args
 
 from shaftline.errors import InputError, require_finite, require_positive
+from shaftline.film.cavitation import CAVITATION_MODELS, CavitationModel, cavitation_model
 from shaftline.film.geometry import (
     BORE_ANCHORS,
     MIN_AXIAL_NODES,
@@ -34,16 +35,24 @@ from shaftline.film.geometry import (
     coarse_shape,
     require_nodes,
 )
+from shaftline.film.options import (
+    ActiveSetOptions,
+    ContinuationOptions,
+    JfoOptions,
+    LinerOptions,
+    NewtonOptions,
+    SettleOptions,
+)
 from shaftline.film.turbulence import TURBULENCE_MODELS, TURBULENCE_MODES, TurbulenceMode, TurbulenceModel
 
-#: Cavitation model of the film (see :mod:`shaftline.film.reynolds`).
+#: The cavitation models a case file names (:data:`shaftline.film.cavitation.CAVITATION_MODELS`
+#: holds their classes; a class of one's own serves from Python).
 Cavitation = Literal["reynolds", "jfo", "half_sommerfeld"]
 #: Where the film starts when no supply groove fixes it.
 FilmStart = Literal["periodic", "max_film"]
 #: What shears in the cavitated zone.
 CavitatedShear = Literal["film_fraction", "full_film"]
 
-CAVITATION_MODELS: tuple[Cavitation, ...] = get_args(Cavitation)
 FILM_STARTS: tuple[FilmStart, ...] = get_args(FilmStart)
 CAVITATED_SHEARS: tuple[CavitatedShear, ...] = get_args(CavitatedShear)
 
@@ -53,6 +62,7 @@ __all__ = [
     "CAVITATION_MODELS",
     "FILM_STARTS",
     "ROTATIONS",
+    "ActiveSetOptions",
     "BearingGeometry",
     "BearingProblem",
     "BentJournal",
@@ -60,11 +70,16 @@ __all__ = [
     "BoreSegment",
     "CavitatedShear",
     "Cavitation",
+    "ContinuationOptions",
     "FilmProfile",
     "FilmStart",
+    "JfoOptions",
     "JournalPosition",
+    "LinerOptions",
+    "NewtonOptions",
     "OperatingPoint",
     "Rotation",
+    "SettleOptions",
     "SolverOptions",
     "SupplyGroove",
     "default_memory_limit",
@@ -100,15 +115,6 @@ _FACTOR_BYTES = 22.0
 #: times the free nodes) the share is 0.85: measured peaks had reached 0.97-1.04 of the
 #: estimate with 0.7 and 700 bytes a node (1.12 once, on 81 x 240 in a CI run).
 _FREE_FACTOR_SHARE = 0.85
-#: Further bytes per fine-grid node of the mass-conserving ("jfo") model: its Jacobian in the
-#: fixed 5-point pattern, the residual arrays and its own coarse grids ... Re-measured when its
-#: SuperLU factors took narrow panels and kept elimination orders (issue 10), at a light load
-#: (5 kN, little cavitation: the most fill) and at 300 kN: peaks of an equilibrium with
-#: stiffness and damping at 0.79-0.95 of the estimate lightly loaded (81 x 120, 161 x 240,
-#: 321 x 240, 161 x 480; three runs each), 0.72-0.83 at 300 kN (docs/validation.md).
-_JFO_DENSE_BYTES = 500.0
-#: ... and its SuperLU factors, per nonzero of the LDL^T factor of the fine grid.
-_JFO_FACTOR_BYTES = 12.0
 #: Default grid of SolverOptions (the refusal names the node count furthest above it).
 _DEFAULT_AXIAL_NODES = 41
 _DEFAULT_CIRCUMFERENTIAL_NODES = 120
@@ -132,7 +138,9 @@ def _factor_fill(axial_nodes: int, circumferential_nodes: int) -> float:
     return axial_nodes * circumferential_nodes * max(8.5 * math.log2(width + 8.0) - 22.0, 1.0)
 
 
-def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: Cavitation = "reynolds") -> int:
+def estimated_memory(
+    axial_nodes: int, circumferential_nodes: int, cavitation: Cavitation | type[CavitationModel] = "reynolds"
+) -> int:
     """Peak memory of one film solution on a grid, bytes, estimated before anything is allocated.
 
     Counts what :class:`shaftline.film.bearing.JournalBearing` holds while it finds an
@@ -151,8 +159,10 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
     ----------
     axial_nodes, circumferential_nodes : int
         The grid (:class:`SolverOptions`).
-    cavitation : Cavitation
-        The cavitation model; ``"jfo"`` needs about 1.5 times the memory of the others.
+    cavitation : Cavitation or CavitationModel class
+        The cavitation model, which adds what it keeps (its ``dense_bytes`` a node and
+        ``factor_bytes`` a nonzero of the fine LDL^T factor); ``"jfo"`` needs about 1.5 times
+        the memory of the others.
 
     Returns
     -------
@@ -171,9 +181,10 @@ def estimated_memory(axial_nodes: int, circumferential_nodes: int, cavitation: C
     while shape is not None:
         total += _DENSE_BYTES * shape[0] * shape[1] + _FREE_FACTOR_SHARE * _FACTOR_BYTES * _factor_fill(*shape)
         shape = coarse_shape(shape)
-    if cavitation == "jfo":
+    model = cavitation_model(cavitation)
+    if model.dense_bytes or model.factor_bytes:
         nodes = int(axial_nodes) * int(circumferential_nodes)
-        total += _JFO_DENSE_BYTES * nodes + _JFO_FACTOR_BYTES * _factor_fill(axial_nodes, circumferential_nodes)
+        total += model.dense_bytes * nodes + model.factor_bytes * _factor_fill(axial_nodes, circumferential_nodes)
     return int(total)
 
 
@@ -301,9 +312,11 @@ class SolverOptions:
     ----------
     axial_nodes, circumferential_nodes : int
         Grid nodes along the bearing (edges included, >= 5) and around the bore (>= 16).
-    cavitation : Cavitation
+    cavitation : Cavitation or CavitationModel class
         ``"reynolds"`` (Swift-Stieber, default), ``"jfo"`` (mass-conserving) or
-        ``"half_sommerfeld"`` (comparison only).
+        ``"half_sommerfeld"`` (comparison only): a name of
+        :data:`shaftline.film.cavitation.CAVITATION_MODELS`, or a class that meets
+        :class:`shaftline.film.cavitation.CavitationModel`.
     film_start : FilmStart
         ``"periodic"`` (default: the film is continuous all round) or ``"max_film"``
         (the classical design-chart assumption of Raimondi & Boyd: ambient pressure
@@ -335,6 +348,14 @@ class SolverOptions:
         (:func:`estimated_memory`); a finer grid is refused when the options are made, before
         anything is allocated. ``None`` (default): :func:`default_memory_limit`, half the
         machine's memory.
+    active_set, jfo, continuation, newton, settling, liner : option dataclasses
+        How the solver's steps go: :class:`~shaftline.film.options.ActiveSetOptions` (the
+        Reynolds condition's active set and set prediction), :class:`~shaftline.film.options.JfoOptions`
+        (the mass-conserving model), :class:`~shaftline.film.options.ContinuationOptions` (the
+        start from the coarse grid's equilibrium), :class:`~shaftline.film.options.NewtonOptions`
+        (the equilibrium's iteration), :class:`~shaftline.film.options.SettleOptions` (a stalled
+        rough bore settled) and :class:`~shaftline.film.options.LinerOptions` (the film-liner
+        iteration), each with the defaults they were tuned to.
 
     The time of a solution grows faster than the node count, as the memory does: on a 2-core
     machine an equilibrium with stiffness and damping took 0.05 s on the default 41 x 120
@@ -361,12 +382,31 @@ class SolverOptions:
     memory_limit: float | None = None
     turbulence: TurbulenceMode = "off"
     turbulence_model: TurbulenceModel = "ng_pan"
+    active_set: ActiveSetOptions = ActiveSetOptions()
+    jfo: JfoOptions = JfoOptions()
+    continuation: ContinuationOptions = ContinuationOptions()
+    newton: NewtonOptions = NewtonOptions()
+    settling: SettleOptions = SettleOptions()
+    liner: LinerOptions = LinerOptions()
 
     def __post_init__(self) -> None:
         require_nodes("axial_nodes", self.axial_nodes, MIN_AXIAL_NODES)
         require_nodes("circumferential_nodes", self.circumferential_nodes, MIN_CIRCUMFERENTIAL_NODES)
-        if self.cavitation not in CAVITATION_MODELS:
-            raise InputError("cavitation", self.cavitation, "", _one_of(CAVITATION_MODELS))
+        try:
+            cavitation_model(self.cavitation)
+        except ValueError as exc:
+            raise InputError("cavitation", self.cavitation, "", str(exc)) from None
+        groups = {
+            "active_set": ActiveSetOptions,
+            "jfo": JfoOptions,
+            "continuation": ContinuationOptions,
+            "newton": NewtonOptions,
+            "settling": SettleOptions,
+            "liner": LinerOptions,
+        }
+        for name, kind in groups.items():
+            if not isinstance(getattr(self, name), kind):
+                raise InputError(name, getattr(self, name), "", f"a {kind.__name__}")
         if self.film_start not in FILM_STARTS:
             raise InputError("film_start", self.film_start, "", _one_of(FILM_STARTS))
         if self.cavitated_shear not in CAVITATED_SHEARS:
@@ -392,6 +432,11 @@ class SolverOptions:
         (:func:`estimated_memory` of the grid and the cavitation model)."""
         return estimated_memory(self.axial_nodes, self.circumferential_nodes, self.cavitation)
 
+    @property
+    def cavitation_model(self) -> type[CavitationModel]:
+        """The class of :attr:`cavitation` (:func:`shaftline.film.cavitation.cavitation_model`)."""
+        return cavitation_model(self.cavitation)
+
     def _check_memory(self) -> None:
         """Refuse a grid whose film solution would not fit in the memory limit."""
         needed = self.estimated_memory
@@ -410,7 +455,7 @@ class SolverOptions:
             getattr(self, name),
             "",
             f"a grid that fits in memory: {self.axial_nodes} x {self.circumferential_nodes} nodes "
-            f"({self.cavitation}) need about {_bytes(needed)} for a film solution, above the limit of "
+            f"({self.cavitation_model.name}) need about {_bytes(needed)} for a film solution, above the limit of "
             f"{_bytes(limit)} ({source})",
         )
 
@@ -458,26 +503,22 @@ class BearingProblem:
 
     def __post_init__(self) -> None:
         self._check_cell_shape()
-        if self.geometry.surface is not None and self.options.cavitation == "jfo":
-            # The JFO void transport rides on the smooth Couette flux (jfo.py); its rough form
-            # (mean gap and shear flow factor) is not derived yet.
+        model = self.options.cavitation_model
+        if self.geometry.surface is not None and not model.rough_surfaces:
+            able = " or ".join(name for name, kind in CAVITATION_MODELS.items() if kind.rough_surfaces)
             raise InputError(
                 "options.cavitation",
                 self.options.cavitation,
                 "",
-                "reynolds or half_sommerfeld with rough surfaces ([bearing.surface] in a case, "
-                "BearingGeometry.surface in Python): the mass-conserving model has no flow factors yet",
+                f"{able} with rough surfaces ([bearing.surface] in a case, BearingGeometry.surface in Python)"
+                + (f": {model.refusal}" if model.refusal else ""),
             )
-        if self.geometry.liner is not None and self.options.cavitation != "reynolds":
+        if self.geometry.liner is not None and not model.liners:
             # The film-liner Newton matrix is built on the Reynolds condition's frozen set
             # (film/elastic.py); the other models' linearisations are not coupled to a liner.
-            raise InputError(
-                "options.cavitation",
-                self.options.cavitation,
-                "",
-                "reynolds with an elastic liner (geometry.liner)",
-            )
-        if self.options.cavitation == "jfo" and self.operating.feed_pressure <= self.operating.cavitation_pressure:
+            able = " or ".join(name for name, kind in CAVITATION_MODELS.items() if kind.liners)
+            raise InputError("options.cavitation", self.options.cavitation, "", f"{able} with an elastic liner (geometry.liner)")
+        if model.needs_feed_pressure and self.operating.feed_pressure <= self.operating.cavitation_pressure:
             raise InputError(
                 "operating.cavitation_pressure",
                 self.operating.cavitation_pressure,

@@ -24,15 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["PREDICTION_OMEGA", "PREDICTION_SWEEPS", "projected_sor"]
-
-#: Over-relaxation factor and sweeps of the set prediction on the grid being solved. On the
-#: NTUA case (100 x 60) the set interpolated from 50 x 30 is 50 nodes off the final one; ten
-#: red-black sweeps leave 0-2 at 1.5-1.8 (9, 3 and 8 after six). Over 27 equilibria (grids
-#: 60 x 36, 100 x 60, 200 x 120; three tilts, three loads) the fine-grid active-set iterations
-#: fell from 467 without sweeps to about 300 with ten.
-PREDICTION_OMEGA = 1.7
-PREDICTION_SWEEPS = 10
+__all__ = ["projected_sor"]
 
 
 def projected_sor(
@@ -41,8 +33,8 @@ def projected_sor(
     c_z: np.ndarray,
     rhs: np.ndarray,
     fixed: np.ndarray,
-    sweeps: int = PREDICTION_SWEEPS,
-    omega: float = PREDICTION_OMEGA,
+    sweeps: int,
+    omega: float,
     until_settled: bool = True,
 ) -> np.ndarray:
     """Red-black projected SOR sweeps of ``A P = b, P >= 0`` from ``pressure``.
@@ -52,14 +44,15 @@ def projected_sor(
     pressure : ndarray (nz, nt)
         Starting dimensionless pressure, with the fixed nodes' values.
     c_theta, c_z, rhs : ndarray
-        The stencil (:class:`shaftline.film.reynolds.Stencil`): link conductances, (nz, nt)
+        The stencil (:class:`shaftline.film.stencil.Stencil`): link conductances, (nz, nt)
         round the bore (periodic) and (nz - 1, nt) along it, and right-hand side (nz, nt).
     fixed : ndarray of bool (nz, nt)
         Nodes whose pressure is held.
     sweeps : int
-        Most sweeps over every colour.
+        Most sweeps over every colour (``ActiveSetOptions.prediction_sweeps`` where a set is
+        sharpened, ``cascade_sweeps`` on the coarse grids).
     omega : float
-        Over-relaxation factor, in (0, 2).
+        Over-relaxation factor, in (0, 2) (``prediction_omega``, ``cascade_omega``).
     until_settled : bool
         Stop after the first sweep that moves no node across zero: only the set of zero
         nodes is wanted, and once a sweep leaves it unchanged the remaining error is smooth,

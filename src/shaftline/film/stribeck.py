@@ -17,11 +17,18 @@ import functools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from shaftline import export
 from shaftline.errors import InputError
+from shaftline.export import quantity
 from shaftline.film.study import BearingCase
+
+if TYPE_CHECKING:
+    import pandas as pd
+    from matplotlib.axes import Axes
 
 __all__ = [
     "POOL_MIN_SECONDS",
@@ -57,6 +64,22 @@ LAYER_FACTOR = 2.0
 POOL_MIN_SECONDS = 10.0
 
 
+def _numbers(values: np.ndarray) -> list[float | None]:
+    return [float(v) if math.isfinite(v) else None for v in values]
+
+
+def _flags(values: np.ndarray) -> list[bool]:
+    return [bool(v) for v in values]
+
+
+def _rpm(speed: float) -> float:
+    return float(speed * 30.0 / math.pi)
+
+
+def _rpm_list(speeds: np.ndarray) -> list[float | None]:
+    return _numbers(speeds * 30.0 / math.pi)
+
+
 @dataclass(frozen=True, eq=False)
 class StribeckCurve:
     """Equilibria of one bearing case over a range of speeds (the case's load and tilt).
@@ -88,18 +111,71 @@ class StribeckCurve:
         Whether the turbulence coefficients applied at each speed (None when off).
     """
 
-    speed: np.ndarray
-    friction_coefficient: np.ndarray
-    asperity_load_share: np.ndarray
-    min_film_thickness: np.ndarray
-    min_film_ratio: np.ndarray
-    regime: tuple[str | None, ...]
-    converged: np.ndarray
-    contact: np.ndarray
-    transition_speed: float | None
-    max_reynolds_number: np.ndarray | None = None
-    turbulent: np.ndarray | None = None
-    transition_uncertain: bool = False
+    speed: np.ndarray = quantity(
+        "rpm", "speeds of the sweep (the base case's load and tilt)", key="speed_rpm", convert=_rpm_list
+    )
+    friction_coefficient: np.ndarray = quantity(
+        "-", "friction force / load at each speed (the Stribeck curve)", convert=_numbers
+    )
+    asperity_load_share: np.ndarray = quantity("-", "share of the load on the asperities at each speed", convert=_numbers)
+    min_film_thickness: np.ndarray = quantity("m", "h_min at each speed", convert=_numbers)
+    min_film_ratio: np.ndarray = quantity(
+        "-", "h_min / sigma at each speed (null for smooth surfaces)", convert=_numbers
+    )
+    regime: tuple[str | None, ...] = quantity(
+        "-",
+        "boundary, mixed or full film at each speed (null when smooth, and at a speed that did not converge)",
+        key="lubrication_regime",
+        convert=list,
+    )
+    converged: np.ndarray = quantity("-", "equilibrium reached at each speed", convert=_flags)
+    contact: np.ndarray = quantity("-", "load not carried within the clearance at each speed", convert=_flags)
+    transition_speed: float | None = quantity(
+        "rpm",
+        "speed above which the asperities carry less than 1 % of the load, from the converged speeds and "
+        "those in contact (share 1) (null: not crossed in the range)",
+        key="transition_speed_rpm",
+        convert=_rpm,
+    )
+    max_reynolds_number: np.ndarray | None = quantity(
+        "-",
+        "largest local Reynolds number at each speed (with [bearing.solver] turbulence on or auto only)",
+        convert=_numbers,
+        optional=True,
+        default=None,
+    )
+    turbulent: np.ndarray | None = quantity(
+        "-",
+        "whether the turbulence coefficients applied at each speed (with turbulence on or auto only)",
+        convert=_flags,
+        optional=True,
+        default=None,
+    )
+    transition_uncertain: bool = quantity(
+        "-",
+        "true where a speed that did not converge lies where the transition could be: the transition "
+        "speed is then not a result (exit 3)",
+        default=False,
+    )
+
+    def to_dict(self) -> dict[str, Any]:
+        """The curve for results.json (speeds in rpm, non-finite values as null)."""
+        return export.to_dict(self)
+
+    def to_pandas(self) -> pd.DataFrame:
+        """One row per speed (rpm, the index) with friction, asperity share, h_min (m), lambda, the
+        regime and the flags (with the local Reynolds numbers where the turbulence model is on)."""
+        import pandas as pd
+
+        columns = {key: value for key, value in self.to_dict().items() if isinstance(value, list)}
+        return pd.DataFrame(columns).set_index("speed_rpm")
+
+    def plot(self, ax: Axes | tuple[Axes, ...] | None = None, name: str = "") -> Any:
+        """The Stribeck figure (:func:`shaftline.film.figures.stribeck`: friction and h_min against
+        speed with the regimes) into ``ax`` (a new figure without it); returns the axes."""
+        from shaftline.film.figures import stribeck
+
+        return stribeck(self, name, ax=ax)
 
     @property
     def stalled(self) -> np.ndarray:
@@ -174,7 +250,7 @@ def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float
             tilt_z=case.tilt_z,
             initial=None if previous is None else previous.position,
             initial_cavitated=None if previous is None else previous.cavitated,
-            initial_deformation=None if previous is None else previous.liner_deformation,
+            initial_deformation=None if previous is None or previous.liner is None else previous.liner.deformation,
         )
         if previous is not None and not (equilibrium.converged and not equilibrium.contact):
             # A warm start from a neighbour in boundary lubrication (its film below the mean plane)
@@ -186,6 +262,7 @@ def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float
         state = equilibrium.state
         if equilibrium.converged and not equilibrium.contact:
             previous = state
+        turbulence = state.turbulence
         out.append(
             (
                 state.friction_coefficient,
@@ -194,8 +271,8 @@ def _solve_chunk(case: BearingCase, speeds: Sequence[float]) -> list[tuple[float
                 state.min_film_ratio,
                 float(equilibrium.converged),
                 float(equilibrium.contact),
-                state.max_reynolds_number,
-                float(state.turbulent),
+                0.0 if turbulence is None else turbulence.max_reynolds_number,
+                float(turbulence is not None and turbulence.turbulent),
             )
         )
     return out

@@ -1,30 +1,41 @@
-"""A bearing study: a stern-tube bearing under its load, with variants (other bores or
-tilts) solved beside it, each at equilibrium with its stiffness and damping.
+"""A bearing study as data: a stern-tube bearing under its load, with variants (other bores or
+tilts) solved beside it, each at equilibrium with its stiffness and damping, and the results
+that export themselves (``to_dict`` for results.json, ``to_pandas`` for a table).
 
-This is what ``[bearing]`` in a case file becomes; notebooks can build one directly::
+This is what ``[bearing]`` in a case file becomes; notebooks can build one directly and solve
+it with :func:`shaftline.film.solve.solve_study`::
 
     study = BearingStudy((BearingCase("base", geometry, operating, SolverOptions(), load_y=-3e5),))
     result = solve_study(study)
+    result.to_pandas()
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from shaftline.film.geometry import BearingGeometry
 from shaftline.film.problem import OperatingPoint, SolverOptions
 
 if TYPE_CHECKING:
-    import numpy as np
+    import pandas as pd
 
-    from shaftline.film.bearing import Equilibrium, JournalBearing
     from shaftline.film.dynamics import DynamicCoefficients
-    from shaftline.film.geometry import JournalPosition
+    from shaftline.film.results import Equilibrium
     from shaftline.film.stribeck import StribeckCurve
     from shaftline.film.thermal import ThermalOptions, ThermalResult
     from shaftline.lubricants import Lubricant
+
+#: Units of a case's ``thermal`` entry (with [bearing.thermal]).
+THERMAL_UNITS = {
+    "thermal.inlet_temperature": "degC",
+    "thermal.effective_temperature": "degC",
+    "thermal.outlet_temperature": "degC",
+    "thermal.viscosity": "Pa s",
+    "thermal.heat_to_lubricant": "-",
+}
 
 
 @dataclass(frozen=True, eq=False)
@@ -96,6 +107,40 @@ class BearingResult:
     coefficients: DynamicCoefficients | None
     thermal: ThermalResult | None = None
 
+    def to_dict(self) -> dict[str, Any]:
+        """The case's results for results.json: its name, the equilibrium's scalars, the stiffness
+        and damping (null where the film does not carry the load), the heat balance, and the
+        liner deformation and local Reynolds number maps where they apply (rows along the bearing
+        from the aft edge, columns around the bore from the grid's first angle)."""
+        import numpy as np
+
+        from shaftline.film.dynamics import DynamicCoefficients
+
+        coefficients = DynamicCoefficients.absent() if self.coefficients is None else self.coefficients.to_dict()
+        out: dict[str, Any] = {"name": self.case.name, **self.equilibrium.to_dict(), **coefficients}
+        if self.thermal is not None:
+            out["thermal"] = self.thermal_dict()
+        state = self.equilibrium.state
+        if state.liner is not None:
+            out["liner_deformation_map"] = np.round(state.liner.deformation, 12).tolist()  # m
+        if state.turbulence is not None:
+            out["reynolds_number_map"] = np.round(state.turbulence.reynolds_number, 3).tolist()
+        return out
+
+    def thermal_dict(self) -> dict[str, Any]:
+        """The heat balance (``thermal``) for results.json, in :data:`THERMAL_UNITS`."""
+        balance = self.thermal
+        assert balance is not None and self.case.thermal is not None
+        return {
+            "inlet_temperature": balance.inlet_temperature,
+            "effective_temperature": balance.effective_temperature,
+            "outlet_temperature": balance.outlet_temperature,
+            "viscosity": balance.viscosity,
+            "heat_to_lubricant": self.case.thermal.heat_to_lubricant,
+            "converged": balance.converged,
+            "film_solutions": balance.evaluations,
+        }
+
 
 @dataclass(frozen=True, eq=False)
 class BearingStudyResult:
@@ -105,128 +150,39 @@ class BearingStudyResult:
     cases: tuple[BearingResult, ...]
     stribeck: StribeckCurve | None = None
 
+    def units(self) -> dict[str, str]:
+        """The unit of every key of a case's :meth:`BearingResult.to_dict` in this study."""
+        from shaftline.film.dynamics import DynamicCoefficients
+        from shaftline.film.results import BearingState, Equilibrium
+        from shaftline.export import units
 
-def solve_case(
-    case: BearingCase,
-    progress: Callable[[str], None] | None = None,
-    bearing: JournalBearing | None = None,
-    initial: JournalPosition | None = None,
-    coefficients: bool = True,
-    initial_cavitated: np.ndarray | None = None,
-) -> BearingResult:
-    """Equilibrium under the case load, then stiffness and damping there (not at contact).
+        runs = self.cases
+        rough = any(run.case.geometry.surface is not None for run in runs)
+        lined = any(run.case.geometry.liner is not None for run in runs)
+        turbulence = any(run.case.options.turbulence != "off" for run in runs)
+        out = {**BearingState.units(rough, lined, turbulence), **Equilibrium.units(), **units(DynamicCoefficients)}
+        if lined:
+            out["liner_deformation_map"] = "m"
+        if turbulence:
+            out["reynolds_number_map"] = "-"
+        if any(run.thermal is not None for run in runs):
+            out.update(THERMAL_UNITS)
+        return out
 
-    ``progress``, when given, is told each Newton iteration of the equilibrium
-    (``"base: Newton iteration 3, force residual 2.1e-04 of the load"``) and the start of the
-    stiffness and damping: on a fine grid each takes seconds to minutes.
+    def to_dict(self) -> dict[str, Any]:
+        """The study for results.json: the units, each case's results, the Stribeck curve."""
+        out: dict[str, Any] = {"units": self.units(), "cases": [run.to_dict() for run in self.cases]}
+        if self.stribeck is not None:
+            out["stribeck"] = self.stribeck.to_dict()
+        return out
 
-    ``bearing`` is a :class:`~shaftline.film.JournalBearing` of the case's problem to reuse
-    (its factorisation pattern and coarse grids; :func:`shaftline.film.sweep` passes one per
-    group of cases), ``initial`` the start of the equilibrium's Newton iteration and
-    ``initial_cavitated`` the cavitated set of its first film solution (a warm start from a
-    solved neighbour). Without them the case is solved from scratch. ``coefficients``
-    False leaves out the stiffness and damping.
-    """
-    from shaftline.errors import located
-    from shaftline.film.bearing import JournalBearing
-    from shaftline.film.dynamics import dynamic_coefficients
+    def to_pandas(self) -> pd.DataFrame:
+        """One row per case (indexed by its name) with every scalar of :meth:`BearingResult.to_dict`
+        (the units are :meth:`units`)."""
+        import pandas as pd
 
-    def newton(iteration: int, residual: float) -> None:
-        if progress is not None:
-            progress(f"{case.name}: Newton iteration {iteration}, force residual {residual:.1e} of the load")
-
-    balance = None
-    if case.thermal is not None:
-        case, balance = _at_effective_temperature(case, progress)
-        # The viscosity changed: neither the given bearing nor its warm start applies.
-        bearing, initial, initial_cavitated = None, None, None
-    if bearing is None:
-        bearing = JournalBearing(case.geometry, case.operating, case.options)
-    # A tilt that does not fit in the clearance is found only here; name it as the case file does.
-    with located("", case.error_fields):
-        equilibrium = bearing.equilibrium(
-            case.load_y,
-            case.load_z,
-            tilt_y=case.tilt_y,
-            tilt_z=case.tilt_z,
-            initial=initial,
-            progress=newton,
-            initial_cavitated=initial_cavitated,
-        )
-    dynamics = None
-    if coefficients and equilibrium.converged and not equilibrium.contact:
-        if progress is not None:
-            progress(f"{case.name}: stiffness and damping")
-        dynamics = dynamic_coefficients(bearing, equilibrium.state)
-    return BearingResult(case, equilibrium, dynamics, balance)
-
-
-def _at_effective_temperature(
-    case: BearingCase, progress: Callable[[str], None] | None
-) -> tuple[BearingCase, ThermalResult]:
-    """The heat balance of ``case`` (docs/theory.md Sect. 8.1) and the case at its effective
-    temperature; a balance that does not close below the top of the viscosity model leaves
-    the case at that top temperature (``converged`` False)."""
-    from dataclasses import replace
-
-    from shaftline.errors import located
-    from shaftline.film.problem import BearingProblem
-    from shaftline.film.thermal import bearing_film, thermal_balance
-
-    assert case.thermal is not None
-    if case.lubricant is None:
-        raise ValueError(f"{case.name}: a heat balance needs the case's lubricant")
-    if progress is not None:
-        progress(f"{case.name}: heat balance")
-    problem = BearingProblem(case.geometry, case.operating, case.options)
-    with located("", case.error_fields):
-        balance = thermal_balance(
-            bearing_film(problem, case.load_y, case.load_z, case.tilt_y, case.tilt_z), case.lubricant, case.thermal
-        )
-    temperature = balance.effective_temperature
-    operating = replace(case.operating, viscosity=balance.viscosity, density=float(case.lubricant.density(temperature)))
-    return replace(case, operating=operating, temperature=temperature), balance
-
-
-def solve_study(
-    study: BearingStudy,
-    progress: Callable[[str], None] | None = None,
-    *,
-    backend: str | None = None,
-    workers: int | None = None,
-    scheduler: str | None = None,
-    stribeck: bool = False,
-) -> BearingStudyResult:
-    """Solve the base case and every variant with :func:`shaftline.film.sweep`: variants with
-    the same film problem share one bearing and warm-start from each other, and the groups
-    run on a process pool (``backend``, ``workers``, ``scheduler`` as in
-    :func:`shaftline.parallel.map`).
-
-    ``progress`` is told each case's name, then its Newton iterations (:func:`solve_case`),
-    when the cases are solved in this process (serially, or one group only); from a pool it
-    is told how many cases are done each time a chunk of them finishes (a chunk is the cases
-    of one film problem, up to ``chunk_size`` of :func:`shaftline.film.sweep`).
-    """
-    from shaftline.film.sweeps import sweep
-
-    results = sweep(study.cases, backend=backend, workers=workers, scheduler=scheduler, progress=progress)
-    curve = None
-    if stribeck:
-        from shaftline.film.stribeck import stribeck_curve
-
-        if progress is not None:
-            progress(f"{study.cases[0].name}: Stribeck curve, {len(study.stribeck_speeds)} speeds")
-
-        def chunks_done(done: int, total: int) -> None:
-            if progress is not None:
-                progress(f"{study.cases[0].name}: Stribeck curve, {done} of {total} groups of speeds done")
-
-        curve = stribeck_curve(
-            study.cases[0],
-            study.stribeck_speeds,
-            backend=backend,
-            workers=workers,
-            scheduler=scheduler,
-            progress=chunks_done,
-        )
-    return BearingStudyResult(tuple(results), curve)
+        rows = []
+        for run in self.cases:
+            entry = run.to_dict()
+            rows.append({key: value for key, value in entry.items() if not isinstance(value, list | dict)})
+        return pd.DataFrame(rows).set_index("name")

@@ -125,9 +125,9 @@ def _turbulence_json(state: Any) -> dict[str, Any]:
     """The film's largest local Reynolds number and turbulence flag, with turbulence on or auto
     (the film solution has its Reynolds-number map then); nothing for a laminar film, whose
     JSON keeps its keys."""
-    if state.reynolds_number is None:
+    if state.turbulence is None:
         return {}
-    return {"max_reynolds_number": float(state.max_reynolds_number), "turbulent": bool(state.turbulent)}
+    return {"max_reynolds_number": state.turbulence.max_reynolds_number, "turbulent": state.turbulence.turbulent}
 
 
 def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
@@ -248,16 +248,16 @@ def _film_notes(coupled: CoupledResult) -> Paragraph | None:
             )
         if f.coefficients_note:
             notes.append(f.coefficients_note)
-        if math.isfinite(state.min_film_ratio):
+        if state.rough is not None:
             notes.append(
-                f"λ = h_min/σ {state.min_film_ratio:.3g}, asperities carry {state.asperity_load_share * 100:.3g} % "
-                f"of the load ({state.lubrication_regime} lubrication)"
+                f"λ = h_min/σ {state.rough.min_film_ratio:.3g}, asperities carry "
+                f"{state.rough.asperity_load_share * 100:.3g} % of the load ({state.rough.lubrication_regime} lubrication)"
             )
         if state.max_liner_deformation > 0:
             notes.append(f"liner deformed by up to {state.max_liner_deformation * 1e6:.3g} µm")
-        if state.reynolds_number is not None:
-            kind = "turbulent (coefficients applied)" if state.turbulent else "laminar"
-            notes.append(f"largest local Reynolds number {state.max_reynolds_number:.4g}, {kind}")
+        if state.turbulence is not None:
+            kind = "turbulent (coefficients applied)" if state.turbulence.turbulent else "laminar"
+            notes.append(f"largest local Reynolds number {state.turbulence.max_reynolds_number:.4g}, {kind}")
         if notes:
             # A grounded film's state is the last journal line reached, not an equilibrium of
             # shaft and film: its asperity share is not the share of the bearing's load.

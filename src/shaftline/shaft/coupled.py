@@ -250,7 +250,8 @@ def film_coefficients(
     The journal moves as a rigid body from the given (possibly bent) line: offsets ``y, z`` of
     the mid-plane centre and tilts about it. Forces ``F_y, F_z`` and their moments about the
     mid-plane ``M_y = sum((z - L/2) dF_y)``, ``M_z`` likewise (as ``BearingState.moment_y``),
-    with the cavitated set frozen (:meth:`JournalBearing.film_load`).
+    with the cavitated set frozen: :meth:`JournalBearing.linearise_line`, the same computation
+    as the 4 x 4 coefficients of a journal at a position.
 
     Returns
     -------
@@ -258,17 +259,8 @@ def film_coefficients(
         ``-dF/dq`` and ``-dF/dv``; rows ``(F_y, F_z, M_y, M_z)``, columns ``(y, z, tilt_y, tilt_z)``
         (their rates for the damping).
     """
-    z = bearing.axial_stations
-    arm = z - 0.5 * bearing.geometry.length
-    ones, zeros = np.ones_like(z), np.zeros_like(z)
-    motions = np.array([[ones, zeros], [zeros, ones], [arm, zeros], [zeros, arm]])
-    load = bearing.film_load(centre_y, centre_z, motions, velocity_directions=motions)
-    matrices = []
-    for rows in (load.derivative, load.velocity_derivative):
-        forces = rows.sum(axis=1)  # (2, 4)
-        moments = np.einsum("i,pik->pk", arm, rows)
-        matrices.append(-np.vstack([forces, moments]))
-    return matrices[0], matrices[1]
+    linearisation = bearing.linearise_line(centre_y, centre_z)
+    return linearisation.stiffness, linearisation.damping
 
 
 def hermite_shape(nodes: np.ndarray, stations: np.ndarray) -> np.ndarray:
@@ -588,7 +580,7 @@ class CoupledAlignment:
                 found = film.bearing.equilibrium(load_y, load_z, tilt_y=tilt)
                 position = found.state.position
             except InputError:  # the point model's slope does not fit the clearance
-                position = film.bearing._initial_position(np.array([load_y, load_z]), 0.0, 0.0)
+                position = film.bearing.initial_position(load_y, load_z)
             ref_y = bearing.offset_y + condition.offsets_y.get(bearing.name, 0.0) + c
             ref_z = bearing.offset_z + condition.offsets_z.get(bearing.name, 0.0)
             x = mesh.x[film.dofs[0::2] // 2]

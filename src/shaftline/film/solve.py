@@ -1,4 +1,6 @@
-"""Many bearing cases at once: grouped by film problem, warm-started, spread over cores.
+"""Solving bearing studies: one case at equilibrium with its stiffness and damping, a study's
+cases and its Stribeck curve, and many cases at once, grouped by film problem, warm-started and
+spread over cores.
 
 A load x speed map, a robustness table or the variants of a case file are many
 :class:`~shaftline.film.study.BearingCase` s of which most share their film problem
@@ -27,6 +29,7 @@ one within that tolerance, and is bit for bit the same on any backend and worker
 each chunk is the same sequence of operations on a fresh bearing wherever it runs.
 """
 
+
 from __future__ import annotations
 
 import functools
@@ -34,16 +37,20 @@ import math
 import pickle
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from shaftline.film import study
-from shaftline.film.bearing import JournalBearing, closed_form_offsets
+from shaftline.film.bearing import JournalBearing
+from shaftline.film.equilibrium import closed_form_offsets
 from shaftline.film.geometry import JournalPosition
 from shaftline.film.problem import BearingProblem
-from shaftline.film.study import BearingCase, BearingResult
+from shaftline.film.study import BearingCase, BearingResult, BearingStudy, BearingStudyResult
 
-__all__ = ["DEFAULT_CHUNK_SIZE", "sweep"]
+if TYPE_CHECKING:
+    from shaftline.film.thermal import ThermalResult
+
+__all__ = ["DEFAULT_CHUNK_SIZE", "solve_case", "solve_study", "sweep"]
 
 #: Largest number of cases solved one after the other by one worker (one cold start each):
 #: large enough that the cold start is rare, small enough to share a large group of cases
@@ -77,7 +84,7 @@ def _parameters(cases: Sequence[BearingCase], problem: BearingProblem) -> np.nda
 
 
 def _analytic_offsets(problem: BearingProblem, load_y: float, load_z: float) -> np.ndarray:
-    """The closed-form offsets of :func:`~shaftline.film.bearing.closed_form_offsets` (not
+    """The closed-form offsets of :func:`~shaftline.film.equilibrium.closed_form_offsets` (not
     capped: smooth in the load), m; NaN for no load."""
     magnitude = math.hypot(load_y, load_z)
     if not magnitude or not math.isfinite(magnitude):
@@ -144,8 +151,7 @@ def _solve_chunk(chunk: _Chunk, progress: Callable[[str], None] | None = None) -
             # The neighbour's cavitated set spares the first film solution its cold start
             # (coarse grids and several fine factorisations); the result does not depend on it.
             start_set = cavitated.get(guess[0])
-        # Through the module, so that the one per-case path is the one a test replaces.
-        result = study.solve_case(
+        result = solve_case(
             case,
             progress,
             bearing=bearing,
@@ -156,7 +162,7 @@ def _solve_chunk(chunk: _Chunk, progress: Callable[[str], None] | None = None) -
         if initial is not None and (result.equilibrium.contact or not result.equilibrium.converged):
             # A hard case (at the film floor, or not settling): its answer is the cold start's,
             # as when it is solved alone.
-            result = study.solve_case(case, progress, bearing=bearing, coefficients=chunk.coefficients)
+            result = solve_case(case, progress, bearing=bearing, coefficients=chunk.coefficients)
         equilibrium = result.equilibrium
         if equilibrium.converged and not equilibrium.contact:
             position = equilibrium.state.position
@@ -220,7 +226,7 @@ def sweep(
         Any mix of problems, loads and tilts.
     coefficients : bool
         Also the stiffness and damping at each equilibrium that the film carries (as
-        :func:`~shaftline.film.study.solve_case`).
+        :func:`solve_case`).
     backend, workers, scheduler :
         Where to run: :func:`shaftline.parallel.map` (default a process pool with one worker
         per core; ``"serial"``; or ``"dask"`` with the address of a scheduler). A sweep of a
@@ -284,3 +290,123 @@ def sweep(
         for index, result in zip(part, chunk_results, strict=True):
             results[index] = replace(result, case=cases[index])
     return [result for result in results if result is not None]
+
+
+def solve_case(
+    case: BearingCase,
+    progress: Callable[[str], None] | None = None,
+    bearing: JournalBearing | None = None,
+    initial: JournalPosition | None = None,
+    coefficients: bool = True,
+    initial_cavitated: np.ndarray | None = None,
+) -> BearingResult:
+    """Equilibrium under the case load, then stiffness and damping there (not at contact).
+
+    ``progress``, when given, is told each Newton iteration of the equilibrium
+    (``"base: Newton iteration 3, force residual 2.1e-04 of the load"``) and the start of the
+    stiffness and damping: on a fine grid each takes seconds to minutes.
+
+    ``bearing`` is a :class:`~shaftline.film.JournalBearing` of the case's problem to reuse
+    (its factorisation pattern and coarse grids; :func:`shaftline.film.sweep` passes one per
+    group of cases), ``initial`` the start of the equilibrium's Newton iteration and
+    ``initial_cavitated`` the cavitated set of its first film solution (a warm start from a
+    solved neighbour). Without them the case is solved from scratch. ``coefficients``
+    False leaves out the stiffness and damping.
+    """
+    from shaftline.errors import located
+    from shaftline.film.dynamics import dynamic_coefficients
+
+    def newton(iteration: int, residual: float) -> None:
+        if progress is not None:
+            progress(f"{case.name}: Newton iteration {iteration}, force residual {residual:.1e} of the load")
+
+    balance = None
+    if case.thermal is not None:
+        case, balance = _at_effective_temperature(case, progress)
+        # The viscosity changed: neither the given bearing nor its warm start applies.
+        bearing, initial, initial_cavitated = None, None, None
+    if bearing is None:
+        bearing = JournalBearing(case.geometry, case.operating, case.options)
+    # A tilt that does not fit in the clearance is found only here; name it as the case file does.
+    with located("", case.error_fields):
+        equilibrium = bearing.equilibrium(
+            case.load_y,
+            case.load_z,
+            tilt_y=case.tilt_y,
+            tilt_z=case.tilt_z,
+            initial=initial,
+            progress=newton,
+            initial_cavitated=initial_cavitated,
+        )
+    dynamics = None
+    if coefficients and equilibrium.converged and not equilibrium.contact:
+        if progress is not None:
+            progress(f"{case.name}: stiffness and damping")
+        dynamics = dynamic_coefficients(bearing, equilibrium.state)
+    return BearingResult(case, equilibrium, dynamics, balance)
+
+
+def _at_effective_temperature(
+    case: BearingCase, progress: Callable[[str], None] | None
+) -> tuple[BearingCase, ThermalResult]:
+    """The heat balance of ``case`` (docs/theory.md Sect. 8.1) and the case at its effective
+    temperature; a balance that does not close below the top of the viscosity model leaves
+    the case at that top temperature (``converged`` False)."""
+    from shaftline.errors import located
+    from shaftline.film.thermal import bearing_film, thermal_balance
+
+    assert case.thermal is not None
+    if case.lubricant is None:
+        raise ValueError(f"{case.name}: a heat balance needs the case's lubricant")
+    if progress is not None:
+        progress(f"{case.name}: heat balance")
+    problem = BearingProblem(case.geometry, case.operating, case.options)
+    with located("", case.error_fields):
+        balance = thermal_balance(
+            bearing_film(problem, case.load_y, case.load_z, case.tilt_y, case.tilt_z), case.lubricant, case.thermal
+        )
+    temperature = balance.effective_temperature
+    operating = replace(case.operating, viscosity=balance.viscosity, density=float(case.lubricant.density(temperature)))
+    return replace(case, operating=operating, temperature=temperature), balance
+
+
+def solve_study(
+    study: BearingStudy,
+    progress: Callable[[str], None] | None = None,
+    *,
+    backend: str | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    stribeck: bool = False,
+) -> BearingStudyResult:
+    """Solve the base case and every variant with :func:`shaftline.film.sweep`: variants with
+    the same film problem share one bearing and warm-start from each other, and the groups
+    run on a process pool (``backend``, ``workers``, ``scheduler`` as in
+    :func:`shaftline.parallel.map`).
+
+    ``progress`` is told each case's name, then its Newton iterations (:func:`solve_case`),
+    when the cases are solved in this process (serially, or one group only); from a pool it
+    is told how many cases are done each time a chunk of them finishes (a chunk is the cases
+    of one film problem, up to ``chunk_size`` of :func:`shaftline.film.sweep`).
+    """
+    results = sweep(study.cases, backend=backend, workers=workers, scheduler=scheduler, progress=progress)
+    curve = None
+    if stribeck:
+        from shaftline.film.stribeck import stribeck_curve
+
+        if progress is not None:
+            progress(f"{study.cases[0].name}: Stribeck curve, {len(study.stribeck_speeds)} speeds")
+
+        def chunks_done(done: int, total: int) -> None:
+            if progress is not None:
+                progress(f"{study.cases[0].name}: Stribeck curve, {done} of {total} groups of speeds done")
+
+        curve = stribeck_curve(
+            study.cases[0],
+            study.stribeck_speeds,
+            backend=backend,
+            workers=workers,
+            scheduler=scheduler,
+            progress=chunks_done,
+        )
+    return BearingStudyResult(tuple(results), curve)
