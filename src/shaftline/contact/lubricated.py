@@ -187,32 +187,16 @@ def evaluate(
     alpha = lubricant.alpha(temperature)
     u_param = ehl.speed_parameter(eta0, rolling, modulus, radius_x)
     g_param = ehl.material_parameter(alpha, modulus)
-    if model.geometry == "line":
-        contact = hertz.line_contact(load, radius_x, modulus)
-        half_width, max_shear, depth = contact.half_width, contact.max_shear, contact.max_shear_depth
-        formula = ehl.method(ehl.LINE_FILM_METHODS, model.film, "film_method")
-        central, minimum = formula(u_param, g_param, ehl.line_load_parameter(load, modulus, radius_x))
-        regime = ehl.line_regime(u_param, g_param, ehl.line_load_parameter(load, modulus, radius_x))
-    elif model.geometry == "point":
-        point = hertz.point_contact(load, radius_x, radius_y, modulus, model.ellipticity_method)
-        contact_p0, half_width = point.peak_pressure, point.semi_axis_x
-        max_shear, depth = point.max_shear, point.max_shear_depth
-        formula = ehl.method(ehl.POINT_FILM_METHODS, model.film, "film_method")
-        w_param = ehl.point_load_parameter(load, modulus, radius_x)
-        central, minimum = formula(u_param, g_param, w_param, point.ellipticity)
-        regime, _ = ehl.point_regime(u_param, g_param, w_param, point.ellipticity)
-    else:
-        raise InputError("geometry", model.geometry, "", "line or point")
-    p_h = contact.peak_pressure if model.geometry == "line" else contact_p0
-    p_m = contact.mean_pressure if model.geometry == "line" else point.mean_pressure
+    contact = _hertz_and_film(model, load, radius_x, radius_y, modulus, u_param, g_param)
+    p_h, p_m = contact.peak_pressure, contact.mean_pressure
     loading = ehl.thermal_loading(
         lubricant.temperature_viscosity_coefficient(temperature), eta0, rolling, lubricant.thermal_conductivity
     )
     thermal = ehl.method(ehl.THERMAL_METHODS, model.thermal_method, "thermal_method")(
         loading, slide_roll, p_h / modulus
     )
-    central = central * np.asarray(radius_x) * thermal
-    minimum = minimum * np.asarray(radius_x) * thermal
+    central = contact.central * np.asarray(radius_x) * thermal
+    minimum = contact.minimum * np.asarray(radius_x) * thermal
     film_ratio = ehl.film_ratio(central, surfaces.roughness_1, surfaces.roughness_2)
     friction = seed_friction(
         film_ratio=film_ratio,
@@ -237,9 +221,9 @@ def evaluate(
     return ContactState(
         peak_pressure=full(p_h),
         mean_pressure=full(p_m),
-        half_width=full(half_width),
-        max_shear=full(max_shear),
-        max_shear_depth=full(depth),
+        half_width=full(contact.half_width),
+        max_shear=full(contact.max_shear),
+        max_shear_depth=full(contact.depth),
         rolling_speed=full(rolling),
         sliding_speed=full(sliding),
         slide_roll=full(slide_roll),
@@ -247,7 +231,7 @@ def evaluate(
         minimum_film=full(minimum),
         thermal_factor=full(thermal),
         film_ratio=full(film_ratio),
-        regime=full(regime),
+        regime=full(contact.regime),
         friction=full(friction.coefficient),
         mixed_friction=full(friction.mixed),
         full_film_friction=full(friction.full_film),
@@ -255,3 +239,84 @@ def evaluate(
         thermal_correction=full(friction.thermal),
         power_intensity=full(friction.coefficient * p_h * np.abs(sliding)),
     )
+
+
+@dataclass(frozen=True, eq=False)
+class _HertzFilm:
+    """The dry Hertz contact of a line or point contact and its isothermal film.
+
+    Attributes
+    ----------
+    peak_pressure, mean_pressure : ndarray
+        Hertz p_H and p_m, Pa.
+    half_width : ndarray
+        Semi-width of the contact in the rolling direction, m.
+    max_shear, depth : ndarray
+        Largest subsurface shear stress, Pa, and its depth, m.
+    central, minimum : ndarray
+        Dimensionless central and minimum films H = h / R_x of the film method (no thermal
+        reduction).
+    regime : ndarray
+        Index into :data:`shaftline.contact.ehl.REGIMES`.
+    """
+
+    peak_pressure: np.ndarray
+    mean_pressure: np.ndarray
+    half_width: np.ndarray
+    max_shear: np.ndarray
+    depth: np.ndarray
+    central: np.ndarray
+    minimum: np.ndarray
+    regime: np.ndarray
+
+
+def _hertz_and_film(
+    model: ContactModel,
+    load: ArrayLike,
+    radius_x: ArrayLike,
+    radius_y: ArrayLike,
+    modulus: ArrayLike,
+    u_param: np.ndarray,
+    g_param: np.ndarray,
+) -> _HertzFilm:
+    """The Hertz contact and the film of ``model``'s geometry: ``load`` per length (line,
+    N/m) or load (point, N) on the reduced radii ``radius_x``, ``radius_y`` (m) and modulus
+    (Pa), at the speed and material parameters ``u_param``, ``g_param``.
+
+    Raises
+    ------
+    InputError
+        A geometry other than line or point; a film method unknown for the geometry.
+    """
+    if model.geometry == "line":
+        contact = hertz.line_contact(load, radius_x, modulus)
+        formula = ehl.method(ehl.LINE_FILM_METHODS, model.film, "film_method")
+        central, minimum = formula(u_param, g_param, ehl.line_load_parameter(load, modulus, radius_x))
+        regime = ehl.line_regime(u_param, g_param, ehl.line_load_parameter(load, modulus, radius_x))
+        return _HertzFilm(
+            contact.peak_pressure,
+            contact.mean_pressure,
+            contact.half_width,
+            contact.max_shear,
+            contact.max_shear_depth,
+            central,
+            minimum,
+            regime,
+        )
+    if model.geometry == "point":
+        point = hertz.point_contact(load, radius_x, radius_y, modulus, model.ellipticity_method)
+        formula = ehl.method(ehl.POINT_FILM_METHODS, model.film, "film_method")
+        w_param = ehl.point_load_parameter(load, modulus, radius_x)
+        central, minimum = formula(u_param, g_param, w_param, point.ellipticity)
+        regime, _ = ehl.point_regime(u_param, g_param, w_param, point.ellipticity)
+        return _HertzFilm(
+            point.peak_pressure,
+            point.mean_pressure,
+            point.semi_axis_x,
+            point.max_shear,
+            point.max_shear_depth,
+            central,
+            minimum,
+            regime,
+        )
+    raise InputError("geometry", model.geometry, "", "line or point")

@@ -369,6 +369,59 @@ def motion_period(phi, w, end, per, tolerance, longest):
     return 0
 
 
+# Inlined into advance's loop (numba's inline): called, a TR-BDF2 integration took 1.4-1.7 times as long.
+@njit_cached(inline="always")
+def _tr_bdf2_step(p, k, step, y, rate, y_new, y_gamma, r, f, jac, residual, delta, trial):
+    """One TR-BDF2 step of :func:`advance`, from step ``k - 1`` (state ``y`` and its rate
+    ``rate``) to step ``k`` of ``step`` s: the new state in ``y_new``, its rate in ``rate``
+    (``y`` is left as it was). ``y_gamma``, ``r``, ``f``, ``jac``, ``residual``, ``delta`` and
+    ``trial`` are work arrays.
+
+    Returns
+    -------
+    int
+        Implicit stages accepted unconverged (0, 1 or 2).
+    """
+    n = y.size
+    unconverged = 0
+    hc = GAMMA * step / 2
+    t = (k - 1) * step
+    if np.isnan(rate[0]):  # at the start only
+        spindle, coulomb = forcing(t, p)
+        evaluate(y, spindle, coulomb, p, rate, jac, False)
+    for i in range(n):
+        r[i] = y[i] + hc * rate[i]
+        y_gamma[i] = y[i] + GAMMA * step * rate[i]  # explicit Euler guess
+    if not _stage(p, t + GAMMA * step, hc, r, y, y_gamma, f, jac, residual, delta, trial):
+        unconverged += 1
+    for i in range(n):
+        r[i] = _BDF2_NEW * y_gamma[i] - _BDF2_OLD * y[i]
+        y_new[i] = y[i] + (y_gamma[i] - y[i]) / GAMMA  # linear extrapolation guess
+    if not _stage(p, k * step, hc, r, y, y_new, f, jac, residual, delta, trial):
+        unconverged += 1
+    for i in range(n):
+        rate[i] = (y_new[i] - r[i]) / hc
+    return unconverged
+
+
+# Inlined into advance's loop, as _tr_bdf2_step.
+@njit_cached(inline="always")
+def _backward_euler_step(p, k, step, y, y_new, f, jac, residual, delta, trial):
+    """One backward-Euler step of :func:`advance`, from step ``k - 1`` (state ``y``) to step
+    ``k`` of ``step`` s: the new state in ``y_new`` (``y`` is left as it was). ``f``, ``jac``,
+    ``residual``, ``delta`` and ``trial`` are work arrays.
+
+    Returns
+    -------
+    int
+        Implicit stages accepted unconverged (0 or 1).
+    """
+    y_new[:] = y
+    if not _stage(p, k * step, step, y, y, y_new, f, jac, residual, delta, trial):
+        return 1
+    return 0
+
+
 @njit_cached()
 def advance(p, method, step, carried, first, last, every, revolution, tolerance, longest, phi_out, w_out, force_out):
     """Integrate from step ``first`` to step ``last`` (times ``first * step`` to
@@ -452,27 +505,9 @@ def advance(p, method, step, carried, first, last, every, revolution, tolerance,
     period = 0
     for k in range(first + 1, last + 1):
         if method == TR_BDF2:
-            hc = GAMMA * step / 2
-            t = (k - 1) * step
-            if np.isnan(rate[0]):  # at the start only
-                spindle, coulomb = forcing(t, p)
-                evaluate(y, spindle, coulomb, p, rate, jac, False)
-            for i in range(n):
-                r[i] = y[i] + hc * rate[i]
-                y_gamma[i] = y[i] + GAMMA * step * rate[i]  # explicit Euler guess
-            if not _stage(p, t + GAMMA * step, hc, r, y, y_gamma, f, jac, residual, delta, trial):
-                unconverged += 1
-            for i in range(n):
-                r[i] = _BDF2_NEW * y_gamma[i] - _BDF2_OLD * y[i]
-                y_new[i] = y[i] + (y_gamma[i] - y[i]) / GAMMA  # linear extrapolation guess
-            if not _stage(p, k * step, hc, r, y, y_new, f, jac, residual, delta, trial):
-                unconverged += 1
-            for i in range(n):
-                rate[i] = (y_new[i] - r[i]) / hc
+            unconverged += _tr_bdf2_step(p, k, step, y, rate, y_new, y_gamma, r, f, jac, residual, delta, trial)
         else:
-            y_new[:] = y
-            if not _stage(p, k * step, step, y, y, y_new, f, jac, residual, delta, trial):
-                unconverged += 1
+            unconverged += _backward_euler_step(p, k, step, y, y_new, f, jac, residual, delta, trial)
         y[:] = y_new
         if k % every == 0:
             sample = k // every

@@ -15,6 +15,7 @@ Layout::
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Literal
 
@@ -32,8 +33,10 @@ from shaftline.errors import InputError, located
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
+    from shaftline.design.problem import SlopeDesignProblem
     from shaftline.design.robustness import Scenario
-    from shaftline.design.study import DesignStudy
+    from shaftline.design.study import CoupledSource, DesignStudy
+    from shaftline.film.problem import BearingProblem
     from shaftline.lubricants import Lubricant
 
 ObjectiveName = Literal["min_film_thickness", "max_pressure", "power_loss", "side_leakage", "support_offset"]
@@ -198,56 +201,146 @@ class DesignSection(Section):
 def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
     """The design study in SI domain objects, on the base case of the case's ``[bearing]`` or on a
     film bearing of its ``[alignment]``."""
-    from shaftline.design.bore import SlopeParametrisation
-    from shaftline.design.problem import Constraint, SlopeDesignProblem
-    from shaftline.design.robustness import SEED_SCENARIOS, VALID_TEMPERATURES, Scenario, outside_range
-    from shaftline.design.study import CoupledSource, DesignStudy
+    from shaftline.design.study import DesignStudy
+
+    if "bearing" in context.studies:  # [bearing] first: its base case is the operating point
+        base = _designed_from_bearing(section, context)
+    else:
+        base = _designed_from_alignment(section, context)
+    problem = _slope_design_problem(section, base)
+    where = "[bearing]" if base.coupled is None else f"the film bearing {base.coupled.bearing!r} of [alignment]"
+    scenarios, left_out = _robustness_scenarios(section, context, base.lubricant, base.temperature, where)
+    search = section.search
+    return DesignStudy(
+        problem=problem,
+        shaft=base.shaft,
+        algorithm=search.algorithm,
+        population=search.population,
+        generations=search.generations,
+        seed=search.seed,
+        robust_designs=section.robustness.designs,
+        named=tuple((d.name, (*d.slopes, *d.knuckles)) for d in section.robustness.named),
+        left_out=tuple(left_out),
+        min_film=section.robustness.min_film,
+        scenarios=scenarios,
+        lubricant=base.lubricant,
+        temperature=base.temperature,
+        ratios=tuple(section.sweep.ratios) if section.sweep is not None else (),
+        store=None if search.store is None else str(context.base_dir / Path(search.store).expanduser()),
+        coupled=base.coupled,
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class _DesignedBearing:
+    """The film whose bore the design searches and what it is searched at.
+
+    Attributes
+    ----------
+    film : BearingProblem
+        The bearing without a bore.
+    load_y, load_z : float
+        Load on the journal, N (placeholders when ``coupled`` gives it).
+    tilt_y, tilt_z : float
+        Journal tilts, rad.
+    lubricant : Lubricant or None
+        The lubricant, for the temperature scenarios.
+    temperature : float or None
+        Its film temperature, degC, where given.
+    shaft : ShaftModel
+        The shaft model of the search.
+    coupled : CoupledSource or None
+        The coupled alignment that gives the load and the journal (an ``[alignment]`` case).
+    """
+
+    film: BearingProblem
+    load_y: float
+    load_z: float
+    tilt_y: float
+    tilt_z: float
+    lubricant: Lubricant | None
+    temperature: float | None
+    shaft: ShaftModel
+    coupled: CoupledSource | None = None
+
+
+def _designed_from_bearing(section: DesignSection, context: BuildContext) -> _DesignedBearing:
+    """The operating point of a ``[bearing]`` case: its base case.
+
+    Raises
+    ------
+    InputError
+        A bore in ``[bearing]``, or a field of ``[design]`` that only an ``[alignment]`` case takes.
+    """
     from shaftline.film.problem import BearingProblem
 
-    coupled = None
-    if "bearing" in context.studies:  # [bearing] first: its base case is the operating point
-        bearing = context.studies["bearing"].cases[0]
-        if bearing.geometry.bore:
-            raise InputError(
-                "bearing.bore", "given", "", "no bore in [bearing]: [design] searches the bore", in_file=True
-            )
-        if section.shaft == "coupled" or section.bearing is not None or section.condition is not None:
-            field = "shaft" if section.shaft == "coupled" else ("bearing" if section.bearing else "condition")
-            raise InputError(field, getattr(section, field), "", "only with an [alignment] case (no [bearing] table)")
-        film = BearingProblem(bearing.geometry, bearing.operating, bearing.options)
-        load_y, load_z, tilt_y, tilt_z = bearing.load_y, bearing.load_z, bearing.tilt_y, bearing.tilt_z
-        lubricant, temperature = bearing.lubricant, bearing.temperature
-        shaft: ShaftModel = section.shaft or "linear"
-    else:
-        alignment = context.studies["alignment"]
-        names = [f.bearing for f in alignment.films]
-        if not names:
-            raise InputError(
-                "alignment.bearings", "no film bearing", "", "a bearing with a film (film = true or a film table)",
-                in_file=True,
-            )  # fmt: skip
-        name = section.bearing or names[0]
-        if name not in names:
-            raise InputError("bearing", name, "", "a film bearing of [alignment]: " + ", ".join(names))
-        conditions = [c.name for c in alignment.line.all_conditions()]
-        if section.condition is not None and section.condition not in conditions:
-            raise InputError("condition", section.condition, "", "a condition of [alignment]: " + ", ".join(conditions))
-        index = names.index(name)
-        support = alignment.films[index]
-        if support.problem.geometry.bore:
-            raise InputError(
-                "alignment.bearings.film.bore", "given", "", f"no bore on {name}: [design] searches it", in_file=True
-            )
-        film = support.problem
-        lubricant, temperature = alignment.film_lubricants[index] if alignment.film_lubricants else (None, None)
-        shaft = section.shaft or "coupled"
-        condition = next(c for c in alignment.line.all_conditions() if c.name == (section.condition or conditions[0]))
-        coupled = CoupledSource(alignment.line, alignment.films, alignment.coupling, condition, name)
-        # the load and the journal come from the coupled solution when the study is solved
-        load_y, load_z, tilt_y, tilt_z = -1.0, 0.0, 0.0, 0.0
-        if shaft != "coupled":
-            raise InputError("shaft", shaft, "", "coupled with an [alignment] case (its journal is the coupled one)")
-        # [design.sweep] here sweeps the linear shaft at the coupled operating point (DesignStudy.sweep_at)
+    bearing = context.studies["bearing"].cases[0]
+    if bearing.geometry.bore:
+        raise InputError("bearing.bore", "given", "", "no bore in [bearing]: [design] searches the bore", in_file=True)
+    if section.shaft == "coupled" or section.bearing is not None or section.condition is not None:
+        field = "shaft" if section.shaft == "coupled" else ("bearing" if section.bearing else "condition")
+        raise InputError(field, getattr(section, field), "", "only with an [alignment] case (no [bearing] table)")
+    film = BearingProblem(bearing.geometry, bearing.operating, bearing.options)
+    return _DesignedBearing(
+        film,
+        bearing.load_y,
+        bearing.load_z,
+        bearing.tilt_y,
+        bearing.tilt_z,
+        bearing.lubricant,
+        bearing.temperature,
+        section.shaft or "linear",
+    )
+
+
+def _designed_from_alignment(section: DesignSection, context: BuildContext) -> _DesignedBearing:
+    """The operating point of an ``[alignment]`` case: the coupled solution of its film bearing
+    ``section.bearing`` (default the first) in ``section.condition`` (default the first).
+
+    Raises
+    ------
+    InputError
+        No such film bearing or condition, a bore on it, or a shaft model other than coupled.
+    """
+    from shaftline.design.study import CoupledSource
+
+    alignment = context.studies["alignment"]
+    names = [f.bearing for f in alignment.films]
+    if not names:
+        raise InputError(
+            "alignment.bearings", "no film bearing", "", "a bearing with a film (film = true or a film table)",
+            in_file=True,
+        )  # fmt: skip
+    name = section.bearing or names[0]
+    if name not in names:
+        raise InputError("bearing", name, "", "a film bearing of [alignment]: " + ", ".join(names))
+    conditions = [c.name for c in alignment.line.all_conditions()]
+    if section.condition is not None and section.condition not in conditions:
+        raise InputError("condition", section.condition, "", "a condition of [alignment]: " + ", ".join(conditions))
+    index = names.index(name)
+    support = alignment.films[index]
+    if support.problem.geometry.bore:
+        raise InputError(
+            "alignment.bearings.film.bore", "given", "", f"no bore on {name}: [design] searches it", in_file=True
+        )
+    film = support.problem
+    lubricant, temperature = alignment.film_lubricants[index] if alignment.film_lubricants else (None, None)
+    shaft = section.shaft or "coupled"
+    condition = next(c for c in alignment.line.all_conditions() if c.name == (section.condition or conditions[0]))
+    coupled = CoupledSource(alignment.line, alignment.films, alignment.coupling, condition, name)
+    if shaft != "coupled":
+        raise InputError("shaft", shaft, "", "coupled with an [alignment] case (its journal is the coupled one)")
+    # [design.sweep] here sweeps the linear shaft at the coupled operating point (DesignStudy.sweep_at)
+    # the load and the journal come from the coupled solution when the study is solved
+    return _DesignedBearing(film, -1.0, 0.0, 0.0, 0.0, lubricant, temperature, shaft, coupled)
+
+
+def _slope_design_problem(section: DesignSection, base: _DesignedBearing) -> SlopeDesignProblem:
+    """The search's problem: the bore's parametrisation, objectives and constraints of
+    ``section`` on the film and operating point ``base`` (errors placed under ``[design]``)."""
+    from shaftline.design.bore import SlopeParametrisation
+    from shaftline.design.problem import Constraint, SlopeDesignProblem
+
     with located(""):
         parametrisation = SlopeParametrisation(
             section.segments,
@@ -258,17 +351,36 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
     for k, c in enumerate(section.constraints):
         with located(f"constraints[{k}]"):
             constraints.append(Constraint(c.quantity, c.comparison, c.limit))
-    problem = SlopeDesignProblem(
-        film,
-        load_y=load_y,
-        load_z=load_z,
-        tilt_y=tilt_y,
-        tilt_z=tilt_z,
+    return SlopeDesignProblem(
+        base.film,
+        load_y=base.load_y,
+        load_z=base.load_z,
+        tilt_y=base.tilt_y,
+        tilt_z=base.tilt_z,
         parametrisation=parametrisation,
         objectives=tuple(section.objectives),
         constraints=tuple(constraints),
     )
-    where = "[bearing]" if coupled is None else f"the film bearing {coupled.bearing!r} of [alignment]"
+
+
+def _robustness_scenarios(
+    section: DesignSection,
+    context: BuildContext,
+    lubricant: Lubricant | None,
+    temperature: float | None,
+    where: str,
+) -> tuple[tuple[Scenario, ...], list[tuple[str, str]]]:
+    """The robustness scenarios (the seed's by default) and (name, reason) of the defaults left
+    out; ``temperature``: the film temperature of ``lubricant``, degC; ``where``: the table of
+    the lubricant, for the messages. A default left out is a warning in ``context``.
+
+    Raises
+    ------
+    InputError
+        A listed temperature scenario the lubricant cannot take.
+    """
+    from shaftline.design.robustness import SEED_SCENARIOS, VALID_TEMPERATURES, Scenario, outside_range
+
     why = _fixed_viscosity(lubricant, temperature, where)
     if section.robustness.scenarios is None:
         scenarios, left_out = _default_scenarios(SEED_SCENARIOS, lubricant, temperature, why)
@@ -282,47 +394,28 @@ def build_study(section: DesignSection, context: BuildContext) -> DesignStudy:
                 "the lubricant as a preset or a two-point oil at its temperature, or list the scenarios in "
                 "[[design.robustness.scenarios]]."
             )
-    else:
-        scenarios = tuple(
-            Scenario(s.name, s.speed_factor, s.load_factor, s.temperature_change) for s in section.robustness.scenarios
-        )
-        left_out = []
-        for k, scenario in enumerate(scenarios):
-            if not scenario.temperature_change or section.robustness.designs == "none":
-                continue
-            field = f"robustness.scenarios[{k}].temperature_change"
-            if why:
-                raise InputError(
-                    field,
-                    scenario.temperature_change,
-                    "K",
-                    f"0 here: {why} (give the lubricant as a preset or a two-point oil at its temperature for a "
-                    "temperature scenario)",
-                )
-            assert lubricant is not None and temperature is not None
-            low, high = VALID_TEMPERATURES[lubricant.model]
-            change = scenario.temperature_change
-            if not low <= temperature + change <= high:  # told now, not after the search
-                raise InputError(field, change, "K", outside_range(lubricant, temperature, change))
-    search = section.search
-    return DesignStudy(
-        problem=problem,
-        shaft=shaft,
-        algorithm=search.algorithm,
-        population=search.population,
-        generations=search.generations,
-        seed=search.seed,
-        robust_designs=section.robustness.designs,
-        named=tuple((d.name, (*d.slopes, *d.knuckles)) for d in section.robustness.named),
-        left_out=tuple(left_out),
-        min_film=section.robustness.min_film,
-        scenarios=scenarios,
-        lubricant=lubricant,
-        temperature=temperature,
-        ratios=tuple(section.sweep.ratios) if section.sweep is not None else (),
-        store=None if search.store is None else str(context.base_dir / Path(search.store).expanduser()),
-        coupled=coupled,
+        return scenarios, left_out
+    scenarios = tuple(
+        Scenario(s.name, s.speed_factor, s.load_factor, s.temperature_change) for s in section.robustness.scenarios
     )
+    for k, scenario in enumerate(scenarios):
+        if not scenario.temperature_change or section.robustness.designs == "none":
+            continue
+        field = f"robustness.scenarios[{k}].temperature_change"
+        if why:
+            raise InputError(
+                field,
+                scenario.temperature_change,
+                "K",
+                f"0 here: {why} (give the lubricant as a preset or a two-point oil at its temperature for a "
+                "temperature scenario)",
+            )
+        assert lubricant is not None and temperature is not None
+        low, high = VALID_TEMPERATURES[lubricant.model]
+        change = scenario.temperature_change
+        if not low <= temperature + change <= high:  # told now, not after the search
+            raise InputError(field, change, "K", outside_range(lubricant, temperature, change))
+    return scenarios, []
 
 
 def _fixed_viscosity(lubricant: Lubricant | None, temperature: float | None, where: str) -> str:

@@ -278,28 +278,10 @@ def search(
         ``"algorithm"`` unknown, ``"population"`` below 4, ``"generations"`` below 1,
         ``"store"`` a folder of another search.
     """
-    from pymoo.core.evaluator import Evaluator
-    from pymoo.core.problem import Problem
-    from pymoo.problems.static import StaticProblem
-
-    if algorithm not in ALGORITHMS:
-        raise InputError("algorithm", algorithm, "", "one of " + ", ".join(ALGORITHMS))
-    for name, value, least in (("population", population, 4), ("generations", generations, 1)):
-        if isinstance(value, bool) or not isinstance(value, int) or value < least:
-            raise InputError(name, value, "", f"an integer >= {least}")
-    parametrisation = problem.parametrisation
-    names = parametrisation.names
+    _check_search(algorithm, population, generations)
+    names = problem.parametrisation.names
     saved = None if store is None else _Store(Path(store), _settings(problem, algorithm, population, seed), names)
-    n_constraints = 1 + len(problem.constraints)
-    pymoo_problem = Problem(
-        n_var=parametrisation.variables,
-        n_obj=len(problem.objectives),
-        n_ieq_constr=n_constraints,
-        xl=parametrisation.lower,
-        xu=parametrisation.upper,
-    )
-    engine = ALGORITHMS[algorithm](population)
-    engine.setup(pymoo_problem, termination=("n_gen", generations), seed=seed, verbose=False)
+    pymoo_problem, engine = _pymoo_search(problem, algorithm, population, generations, seed)
     evaluations: list[DesignEvaluation] = []
     generation_of: list[int] = []
     start = time.perf_counter()
@@ -313,34 +295,15 @@ def search(
             offspring = engine.ask()
             designs = np.asarray(offspring.get("X"), dtype=float)
             known = saved.known if saved is not None else {}
-            todo = [x for x in designs if x.tobytes() not in known]
-            chunk = max(1, math.ceil(len(todo) / (2 * parallel.available_workers()))) if todo else 1
-            fresh = iter(pool.map(evaluate, todo, chunksize=chunk))
-            batch = [known[x.tobytes()] if x.tobytes() in known else next(fresh) for x in designs]
-            objectives = np.array([problem.minimised(e) for e in batch])
-            # pymoo needs finite objectives: a failed design gets the worst seen, and is infeasible.
-            objectives = _finite(objectives)
-            violations = np.array([problem.violations(e) for e in batch])
-            Evaluator().eval(StaticProblem(pymoo_problem, F=objectives, G=violations), offspring)
-            engine.tell(infills=offspring)
+            batch = _evaluate_generation(designs, known, pool, evaluate)
+            _tell(engine, pymoo_problem, problem, offspring, batch)
             evaluations.extend(batch)
             generation_of.extend([generation] * len(batch))
             generation += 1
             if saved is not None:
                 saved.write(_result(problem, evaluations, generation_of, algorithm, seed, False))
             if progress is not None:
-                elapsed = time.perf_counter() - start
-                feasible = [e.values["min_film_thickness"] for e in evaluations if e.ok]
-                progress(
-                    SearchProgress(
-                        generation,
-                        generations,
-                        len(evaluations),
-                        max(feasible) if feasible else math.nan,
-                        elapsed,
-                        elapsed / generation * (generations - generation),
-                    )
-                )
+                progress(_search_progress(evaluations, generation, generations, start))
         completed = True
     finally:
         pool.close()
@@ -348,6 +311,90 @@ def search(
         if saved is not None and evaluations:
             saved.write(result)
     return result
+
+
+def _check_search(algorithm: str, population: int, generations: int) -> None:
+    """Refuse an unknown ``algorithm``, a ``population`` below 4 or ``generations`` below 1.
+
+    Raises
+    ------
+    InputError
+        Naming the argument.
+    """
+    if algorithm not in ALGORITHMS:
+        raise InputError("algorithm", algorithm, "", "one of " + ", ".join(ALGORITHMS))
+    for name, value, least in (("population", population, 4), ("generations", generations, 1)):
+        if isinstance(value, bool) or not isinstance(value, int) or value < least:
+            raise InputError(name, value, "", f"an integer >= {least}")
+
+
+def _pymoo_search(
+    problem: SlopeDesignProblem, algorithm: str, population: int, generations: int, seed: int
+) -> tuple[Any, Any]:
+    """The pymoo problem of ``problem``'s bore variables, objectives and constraints (the
+    first constraint: the film's own), and the ``algorithm`` set up on it to be asked and told."""
+    from pymoo.core.problem import Problem
+
+    parametrisation = problem.parametrisation
+    n_constraints = 1 + len(problem.constraints)
+    pymoo_problem = Problem(
+        n_var=parametrisation.variables,
+        n_obj=len(problem.objectives),
+        n_ieq_constr=n_constraints,
+        xl=parametrisation.lower,
+        xu=parametrisation.upper,
+    )
+    engine = ALGORITHMS[algorithm](population)
+    engine.setup(pymoo_problem, termination=("n_gen", generations), seed=seed, verbose=False)
+    return pymoo_problem, engine
+
+
+def _evaluate_generation(
+    designs: np.ndarray,
+    known: dict[bytes, DesignEvaluation],
+    pool: parallel.Pool,
+    evaluate: Callable[[np.ndarray], DesignEvaluation],
+) -> list[DesignEvaluation]:
+    """The evaluations of a generation's ``designs`` (one per row), in their order: those
+    ``known`` from a resumed store as stored, the others evaluated on ``pool``."""
+    todo = [x for x in designs if x.tobytes() not in known]
+    chunk = max(1, math.ceil(len(todo) / (2 * parallel.available_workers()))) if todo else 1
+    fresh = iter(pool.map(evaluate, todo, chunksize=chunk))
+    return [known[x.tobytes()] if x.tobytes() in known else next(fresh) for x in designs]
+
+
+def _tell(
+    engine: Any, pymoo_problem: Any, problem: SlopeDesignProblem, offspring: Any, batch: list[DesignEvaluation]
+) -> None:
+    """Tell ``engine`` the objectives and constraint violations of its ``offspring``,
+    evaluated as ``batch``."""
+    from pymoo.core.evaluator import Evaluator
+    from pymoo.problems.static import StaticProblem
+
+    objectives = np.array([problem.minimised(e) for e in batch])
+    # pymoo needs finite objectives: a failed design gets the worst seen, and is infeasible.
+    objectives = _finite(objectives)
+    violations = np.array([problem.violations(e) for e in batch])
+    Evaluator().eval(StaticProblem(pymoo_problem, F=objectives, G=violations), offspring)
+    engine.tell(infills=offspring)
+
+
+def _search_progress(
+    evaluations: list[DesignEvaluation], generation: int, generations: int, start: float
+) -> SearchProgress:
+    """Where the search is after ``generation`` of ``generations``, begun at ``start``
+    (:func:`time.perf_counter`, s): evaluations, the best feasible h_min (m) and the time
+    taken and left, s."""
+    elapsed = time.perf_counter() - start
+    feasible = [e.values["min_film_thickness"] for e in evaluations if e.ok]
+    return SearchProgress(
+        generation,
+        generations,
+        len(evaluations),
+        max(feasible) if feasible else math.nan,
+        elapsed,
+        elapsed / generation * (generations - generation),
+    )
 
 
 def _finite(objectives: np.ndarray) -> np.ndarray:

@@ -223,7 +223,7 @@ def solve_design(
 def _solve(
     study: DesignStudy, progress: Progress | None, task: str, workers: int | None, scheduler: str | Client | None
 ) -> DesignResult:
-    step = progress or (lambda _: None)
+    step: Progress = progress or (lambda _: None)
     alignment = None
     if study.shaft == "coupled" and study.coupled is not None:
         step("coupled alignment: the operating point of the film bearing")
@@ -233,106 +233,160 @@ def _solve(
     found = tuned = swept = None
     named = study.robust_designs == "named"
     if task in ("all", "slopes") or (task == "robustness" and not named):
+        found = _search(study, problem, step, workers, scheduler)
+    designs, names = _robustness_designs(study, problem, found)
+    if task in ("all", "robustness") and names:
+        tuned = _robustness(study, problem, designs, names, step, workers, scheduler)
+    # `design sweep` on a case without [design.sweep]: the seed's psi_x 0.1 ... 0.6
+    ratios = study.ratios or (DEFAULT_RATIOS if task == "sweep" else ())
+    if ratios and task in ("all", "sweep"):
+        swept = _sweep(study, problem, ratios, step, workers, scheduler)
+    profiles: dict[str, BearingState] = {}
+    if found is not None and found.knee is not None:
+        step("films of the knee, no slope and the single slope")
+        profiles = _knee_profiles(study, problem, found.evaluations[found.knee].x)
+    return DesignResult(study, problem, found, tuned, swept, profiles, alignment)
 
-        def generation(state: SearchProgress) -> None:
-            step(
-                Tally(
-                    "design search",
-                    state.evaluations,
-                    study.population * study.generations,
-                    "evaluations",
-                    f"generation {state.generation}/{state.generations}, {_best(state)}",
-                )
-            )
 
-        with located("search"):
-            found = search(
-                problem,
-                study.algorithm,
-                study.population,
-                study.generations,
-                study.seed,
-                progress=generation,
-                workers=workers,
-                scheduler=scheduler,
-                store=study.store,
+def _search(
+    study: DesignStudy,
+    problem: SlopeDesignProblem,
+    step: Progress,
+    workers: int | None,
+    scheduler: str | Client | None,
+) -> SearchResult:
+    """The study's search of ``problem``, its generations told to ``step`` as a tally."""
+
+    def generation(state: SearchProgress) -> None:
+        step(
+            Tally(
+                "design search",
+                state.evaluations,
+                study.population * study.generations,
+                "evaluations",
+                f"generation {state.generation}/{state.generations}, {_best(state)}",
             )
+        )
+
+    with located("search"):
+        return search(
+            problem,
+            study.algorithm,
+            study.population,
+            study.generations,
+            study.seed,
+            progress=generation,
+            workers=workers,
+            scheduler=scheduler,
+            store=study.store,
+        )
+
+
+def _robustness_designs(
+    study: DesignStudy, problem: SlopeDesignProblem, found: SearchResult | None
+) -> tuple[np.ndarray, list[str]]:
+    """The designs whose robustness the study asks for, one per row of the bore variables,
+    and their labels: the named ones, or the knee or the front of ``found``; none without."""
     designs, names = np.zeros((0, problem.parametrisation.variables)), []
-    if named:
+    if study.robust_designs == "named":
         designs = np.array([x for _, x in study.named], dtype=float)
         names = [name for name, _ in study.named]
     elif found is not None and study.robust_designs != "none":
         chosen = _chosen(found, study.robust_designs)
         designs = np.array([found.evaluations[i].x for i in chosen]).reshape(-1, problem.parametrisation.variables)
         names = [("knee" if i == found.knee else f"front {k + 1}") for k, i in enumerate(chosen)]
-    if task in ("all", "robustness") and names:
-        step(f"robustness of {len(names)} design(s) in {len(study.scenarios)} scenarios")
-        scenarios = f"{len(names)} design(s) × {len(study.scenarios)} scenarios and the operating point"
+    return designs, names
 
-        def solved(done: int, total: int) -> None:
-            step(Tally("robustness", done, total, "evaluations", scenarios))
 
-        with located("robustness"):
-            tuned = robustness(
-                problem,
-                designs,
-                names=names,
-                scenarios=study.scenarios,
-                lubricant=study.lubricant,
-                temperature=study.temperature,
-                limit=study.min_film,
-                workers=workers,
-                scheduler=scheduler,
-                progress=solved,
-            )
-    # `design sweep` on a case without [design.sweep]: the seed's psi_x 0.1 ... 0.6
-    ratios = study.ratios or (DEFAULT_RATIOS if task == "sweep" else ())
-    if ratios and task in ("all", "sweep"):
-        each = study.population * study.generations
+def _robustness(
+    study: DesignStudy,
+    problem: SlopeDesignProblem,
+    designs: np.ndarray,
+    names: list[str],
+    step: Progress,
+    workers: int | None,
+    scheduler: str | Client | None,
+) -> RobustnessResult:
+    """The ``designs`` (labelled ``names``) in the study's scenarios, the evaluations told to
+    ``step`` as a tally."""
+    step(f"robustness of {len(names)} design(s) in {len(study.scenarios)} scenarios")
+    scenarios = f"{len(names)} design(s) × {len(study.scenarios)} scenarios and the operating point"
 
-        def told(ratio: float, state: SearchProgress) -> None:
-            k = ratios.index(ratio)
-            step(
-                Tally(
-                    "misalignment sweep",
-                    k * each + state.evaluations,
-                    len(ratios) * each,
-                    "evaluations",
-                    f"psi_x {ratio:g} ({k + 1} of {len(ratios)}), generation {state.generation}/"
-                    f"{state.generations}, {_best(state)}",
-                )
-            )
+    def solved(done: int, total: int) -> None:
+        step(Tally("robustness", done, total, "evaluations", scenarios))
 
-        swept = misalignment_sweep(
-            study.sweep_at(problem),
-            ratios,
-            progress=told,
-            algorithm=study.algorithm,
-            population=study.population,
-            generations=study.generations,
-            seed=study.seed,
+    with located("robustness"):
+        return robustness(
+            problem,
+            designs,
+            names=names,
+            scenarios=study.scenarios,
+            lubricant=study.lubricant,
+            temperature=study.temperature,
+            limit=study.min_film,
             workers=workers,
             scheduler=scheduler,
-            store=None if study.store is None else f"{study.store}/sweep",
+            progress=solved,
         )
+
+
+def _sweep(
+    study: DesignStudy,
+    problem: SlopeDesignProblem,
+    ratios: tuple[float, ...],
+    step: Progress,
+    workers: int | None,
+    scheduler: str | Client | None,
+) -> SweepResult:
+    """One search per misalignment ratio psi_x of ``ratios`` at the operating point of
+    ``problem``, the evaluations of all told to ``step`` as one tally."""
+    each = study.population * study.generations
+
+    def told(ratio: float, state: SearchProgress) -> None:
+        k = ratios.index(ratio)
+        step(
+            Tally(
+                "misalignment sweep",
+                k * each + state.evaluations,
+                len(ratios) * each,
+                "evaluations",
+                f"psi_x {ratio:g} ({k + 1} of {len(ratios)}), generation {state.generation}/"
+                f"{state.generations}, {_best(state)}",
+            )
+        )
+
+    return misalignment_sweep(
+        study.sweep_at(problem),
+        ratios,
+        progress=told,
+        algorithm=study.algorithm,
+        population=study.population,
+        generations=study.generations,
+        seed=study.seed,
+        workers=workers,
+        scheduler=scheduler,
+        store=None if study.store is None else f"{study.store}/sweep",
+    )
+
+
+def _knee_profiles(study: DesignStudy, problem: SlopeDesignProblem, knee: np.ndarray) -> dict[str, BearingState]:
+    """The films of the bore with no slope, the single slope psi_x, the ``knee`` design (its
+    bore variables) and the study's named designs, by label (those the film solves)."""
+    g = problem.film.geometry
+    ratio = problem.tilt_y * g.length / (2.0 * g.radial_clearance)
+    bores = {
+        "no slope": (),
+        f"single slope {ratio:.3g}": (BoreSegment(1.0, ratio * 2.0 * g.radial_clearance / g.length),),
+        "knee": problem.parametrisation.bore(knee, g.length, g.radial_clearance),
+    }
+    for name, x in study.named:  # e.g. the seed's own design, marked beside the front
+        bores[name] = problem.parametrisation.bore(np.asarray(x, dtype=float), g.length, g.radial_clearance)
     profiles: dict[str, BearingState] = {}
-    if found is not None and found.knee is not None:
-        step("films of the knee, no slope and the single slope")
-        g = problem.film.geometry
-        knee = found.evaluations[found.knee].x
-        ratio = problem.tilt_y * g.length / (2.0 * g.radial_clearance)
-        bores = {
-            "no slope": (),
-            f"single slope {ratio:.3g}": (BoreSegment(1.0, ratio * 2.0 * g.radial_clearance / g.length),),
-            "knee": problem.parametrisation.bore(knee, g.length, g.radial_clearance),
-        }
-        for name, x in study.named:  # e.g. the seed's own design, marked beside the front
-            bores[name] = problem.parametrisation.bore(np.asarray(x, dtype=float), g.length, g.radial_clearance)
-        for label, bore in bores.items():
-            state = film_state(problem, bore)
-            if state is not None:
-                profiles[label] = state
-    return DesignResult(study, problem, found, tuned, swept, profiles, alignment)
+    for label, bore in bores.items():
+        state = film_state(problem, bore)
+        if state is not None:
+            profiles[label] = state
+    return profiles
 
 
 def _best(state: SearchProgress) -> str:

@@ -33,7 +33,7 @@ from shaftline.film.bearing import BearingState, JournalBearing
 from shaftline.shaft.alignment import AlignmentModel, ConditionResult
 from shaftline.shaft.coupled import FilmSupport
 from shaftline.shaft.local import LocalShaftLine, LocalShaftModel, solve_local_model
-from shaftline.shaft.model import Condition, PointLoad, ShaftLine
+from shaftline.shaft.model import Bearing, Condition, PointLoad, ShaftLine, ShaftSegment
 
 __all__ = ["FastPathResult", "bisection", "fast_path"]
 
@@ -153,6 +153,66 @@ def fast_path(
         not positive or beyond the shaft; a hollow or conical shaft over the local span.
     """
     require_positive("fore_length", fore_length, "m")
+    span = _local_span(line, film, fore_length)
+    bearing = span.bearing
+    condition = condition or line.all_conditions()[0]
+    position = bearing.x if support_x is None else float(support_x)
+    model, alignment = _point_support_alignment(line, span, condition, position, lift)
+    point = alignment.bearings[span.index]
+    v_aft, v_fore = (float(np.interp(s, alignment.x, alignment.deflection_y)) for s in (span.aft, span.fore))
+    chord = (v_fore - v_aft) / bearing.length
+    local = solve_local_model(_local_model(line, span, model, alignment, v_aft, v_fore))
+    local_chord, journal = local.bent_journal()
+    problem = film.problem
+    bent = replace(problem, geometry=replace(problem.geometry, bent_journal=journal))
+    tilt = local_chord - bearing.slope
+    found = JournalBearing.from_problem(bent).equilibrium(-point.reaction_y, -point.reaction_z, tilt_y=tilt)
+    state = found.state
+    return FastPathResult(
+        name=bearing.name,
+        state=state,
+        reaction=point.reaction_y,
+        relative_slope=chord - bearing.slope,
+        support_point=state.load_centre_offset,
+        support_x=position,
+        local=local,
+        alignment=alignment,
+        history=[state.load_centre_offset],
+    )
+
+
+@dataclass(frozen=True)
+class _LocalSpan:
+    """Where the local model of the film bearing lies on the line (m from the aft end).
+
+    Attributes
+    ----------
+    index : int
+        The film bearing's place in ``line.bearings``.
+    bearing : Bearing
+        The film bearing.
+    segment : ShaftSegment
+        The one uniform, solid segment over the span.
+    aft, fore : float
+        The bearing's aft and forward edges, m.
+    end : float
+        The forward end of the local model, m.
+    fore_length : float
+        Length of the local model forward of the bearing, m.
+    """
+
+    index: int
+    bearing: Bearing
+    segment: ShaftSegment
+    aft: float
+    fore: float
+    end: float
+    fore_length: float
+
+
+def _local_span(line: ShaftLine, film: FilmSupport, fore_length: float) -> _LocalSpan:
+    """The local model's span on ``line``: the film bearing, its edges and the model's
+    forward end ``fore_length`` (m) beyond it, checked as :func:`fast_path` documents."""
     names = [b.name for b in line.bearings]
     if film.bearing not in names:
         raise InputError("film.bearing", film.bearing, "", "the name of a bearing: " + ", ".join(names))
@@ -178,18 +238,37 @@ def fast_path(
         raise InputError(
             "line.segments", "hollow, conical or stepped", "", "one solid, uniform segment over the local model's span"
         )
-    condition = condition or line.all_conditions()[0]
-    position = bearing.x if support_x is None else float(support_x)
+    return _LocalSpan(index, bearing, segment, aft, fore, end, fore_length)
+
+
+def _point_support_alignment(
+    line: ShaftLine, span: _LocalSpan, condition: Condition, position: float, lift: float
+) -> tuple[AlignmentModel, ConditionResult]:
+    """The alignment in ``condition`` with the film bearing as a point support at
+    ``position`` (m from the aft end) raised by ``lift`` (m), mesh nodes at the span's
+    edges and end; the model and its solution."""
+    bearing = span.bearing
     lift_total = lift + condition.offsets_y.get(bearing.name, 0.0)
-    point_line = _point_line(line, index, position, lift_total, [aft, fore, end])
+    point_line = _point_line(line, span.index, position, lift_total, [span.aft, span.fore, span.end])
     # The condition's own offset of this bearing is in lift_total: drop it from the condition.
     offsets_y = {k: v for k, v in condition.offsets_y.items() if k != bearing.name}
     model = AlignmentModel(point_line)
     alignment = model.solve_condition(replace(condition, offsets_y=offsets_y))
-    point = alignment.bearings[index]
-    x, v = alignment.x, alignment.deflection_y
-    v_aft, v_fore = (float(np.interp(s, x, v)) for s in (aft, fore))
-    chord = (v_fore - v_aft) / bearing.length
+    return model, alignment
+
+
+def _local_model(
+    line: ShaftLine,
+    span: _LocalSpan,
+    model: AlignmentModel,
+    alignment: ConditionResult,
+    v_aft: float,
+    v_fore: float,
+) -> LocalShaftModel:
+    """The local shaft model over ``span``, loaded as the point-support ``alignment`` loads
+    it there; ``v_aft``, ``v_fore``: the alignment's deflections at the bearing's edges, m."""
+    x = alignment.x
+    bearing, segment, aft, end = span.bearing, span.segment, span.aft, span.end
     # The local model's end loads reproduce the alignment's shear and moment at the aft edge
     # (shear_y: net upward force aft of the cut; moment_y: + sagging) with the weight of the
     # overhang: F x - M0 - w x^2 / 2 = M(x), F - w x = S(x).
@@ -198,41 +277,22 @@ def fast_path(
     shear_aft, moment_aft = (float(np.interp(aft, x, values)) for values in (alignment.shear_y, alignment.moment_y))
     aft_force = shear_aft + weight * aft
     aft_moment = aft_force * aft - 0.5 * weight * aft**2 - moment_aft
-    local = solve_local_model(
-        LocalShaftModel(
-            bearing_length=bearing.length,
-            shaft_diameter=segment.outer_diameter,
-            aft_overhang=aft,
-            fore_length=fore_length,
-            aft_force=aft_force,
-            aft_moment=aft_moment,
-            fore_force=-float(np.interp(end, x, alignment.shear_y)),
-            fore_rotation=float(np.interp(end, x, alignment.rotation_y)),
-            weight_per_length=weight,
-            youngs_modulus=segment.youngs_modulus,
-            # The alignment's edge deflections: the same chord (seed: offsets giving psi_x).
-            aft_edge_offset=v_aft,
-            fore_edge_offset=v_fore,
-            beam_theory=line.beam_theory,
-            shear_area_factor=segment.shear_area_factor,
-        )
-    )
-    local_chord, journal = local.bent_journal()
-    problem = film.problem
-    bent = replace(problem, geometry=replace(problem.geometry, bent_journal=journal))
-    tilt = local_chord - bearing.slope
-    found = JournalBearing.from_problem(bent).equilibrium(-point.reaction_y, -point.reaction_z, tilt_y=tilt)
-    state = found.state
-    return FastPathResult(
-        name=bearing.name,
-        state=state,
-        reaction=point.reaction_y,
-        relative_slope=chord - bearing.slope,
-        support_point=state.load_centre_offset,
-        support_x=position,
-        local=local,
-        alignment=alignment,
-        history=[state.load_centre_offset],
+    return LocalShaftModel(
+        bearing_length=bearing.length,
+        shaft_diameter=segment.outer_diameter,
+        aft_overhang=aft,
+        fore_length=span.fore_length,
+        aft_force=aft_force,
+        aft_moment=aft_moment,
+        fore_force=-float(np.interp(end, x, alignment.shear_y)),
+        fore_rotation=float(np.interp(end, x, alignment.rotation_y)),
+        weight_per_length=weight,
+        youngs_modulus=segment.youngs_modulus,
+        # The alignment's edge deflections: the same chord (seed: offsets giving psi_x).
+        aft_edge_offset=v_aft,
+        fore_edge_offset=v_fore,
+        beam_theory=line.beam_theory,
+        shear_area_factor=segment.shear_area_factor,
     )
 
 

@@ -204,6 +204,38 @@ def minimum_speed(
     """
     if not films:
         raise InputError("films", 0, "", "at least one film bearing")
+    value, lowest, points, tolerance = _checked_sweep(limit, lowest, points, tolerance)
+    top = films[0].problem.operating.speed
+    names = [b.name for b in line.bearings if b.name in {f.bearing for f in films}]
+    solutions = _SpeedSolutions(line, films, names, condition, options, progress)
+    sweep = top * lowest ** (np.arange(points) / (points - 1))
+    low, high, message = _bracket_limit(solutions, sweep, value, top)
+    if not message:
+        low, high = _narrow_bracket(solutions, low, high, value, tolerance)
+    return _lift_off_result(solutions, low, high, value, message)
+
+
+def _checked_sweep(
+    limit: FilmLimit | float | None, lowest: float, points: int, tolerance: float
+) -> tuple[float, float, int, float]:
+    """The arguments of :func:`minimum_speed` that shape the sweep, checked.
+
+    Returns
+    -------
+    value : float
+        The film limit, m.
+    lowest : float
+        Lowest speed of the sweep, share of the operating speed.
+    points : int
+        Speeds of the sweep.
+    tolerance : float
+        Relative width of the final bracket.
+
+    Raises
+    ------
+    InputError
+        Any of them out of range.
+    """
     if limit is None:
         limit = FilmLimit()
     if isinstance(limit, FilmLimit):
@@ -218,30 +250,56 @@ def minimum_speed(
     tolerance = require_finite("tolerance", tolerance)
     if not 1e-6 < tolerance < 0.5:
         raise InputError("tolerance", tolerance, "", "in (1e-6, 0.5)")
-    top = films[0].problem.operating.speed
-    names = [b.name for b in line.bearings if b.name in {f.bearing for f in films}]
-    solved: dict[float, tuple[np.ndarray, np.ndarray, bool]] = {}
-    nearest: dict[float, CoupledResult] = {}
+    return value, lowest, int(points), tolerance
 
-    def smallest(speed: float) -> float:
-        """Smallest film of all bearings at ``speed`` (minus infinity where one is in contact),
-        started from the solved speed nearest to it."""
-        start = nearest[min(nearest, key=lambda s: abs(math.log(s / speed)))] if nearest else None
-        result = CoupledAlignment(line, _at_speed(films, speed), options).solve(condition, initial=start)
+
+@dataclass(eq=False)
+class _SpeedSolutions:
+    """The line's coupled solutions at the speeds tried, kept by speed (rad/s): each film
+    bearing's smallest film (m) and contact flag, and the solutions later speeds start from."""
+
+    line: ShaftLine
+    films: Sequence[FilmSupport]
+    names: list[str]
+    condition: Condition | None
+    options: CouplingOptions | None
+    progress: Callable[[int, float, float], None] | None
+    solved: dict[float, tuple[np.ndarray, np.ndarray, bool]] = field(default_factory=dict)
+    starts: dict[float, CoupledResult] = field(default_factory=dict)
+
+    def smallest(self, speed: float) -> float:
+        """Smallest film of all bearings at ``speed`` (rad/s), m (minus infinity where one is
+        in contact), started from the solved speed nearest to it."""
+        start = self.starts[min(self.starts, key=lambda s: abs(math.log(s / speed)))] if self.starts else None
+        result = CoupledAlignment(self.line, _at_speed(self.films, speed), self.options).solve(
+            self.condition, initial=start
+        )
         if not result.contact:
-            nearest[speed] = result
-        hmin = np.array([result.film(n).state.min_film_thickness for n in names])
-        contact = np.array([result.film(n).contact for n in names])
-        solved[speed] = (hmin, contact, result.converged)
-        if progress is not None:
-            progress(len(solved), speed, float(hmin.min()))
+            self.starts[speed] = result
+        hmin = np.array([result.film(n).state.min_film_thickness for n in self.names])
+        contact = np.array([result.film(n).contact for n in self.names])
+        self.solved[speed] = (hmin, contact, result.converged)
+        if self.progress is not None:
+            self.progress(len(self.solved), speed, float(hmin.min()))
         return -math.inf if contact.any() else float(hmin.min())
 
-    sweep = top * lowest ** (np.arange(int(points)) / (int(points) - 1))
+
+def _bracket_limit(solutions: _SpeedSolutions, sweep: np.ndarray, value: float, top: float) -> tuple[float, float, str]:
+    """The sweep's speeds from the top down until a film is below ``value`` (m).
+
+    Returns
+    -------
+    low, high : float
+        The speeds (rad/s) between which the smallest film crosses the limit; ``(0,
+        lowest)`` when it stays above down to the sweep's lowest speed, ``(nan, top)`` when
+        it is below at the operating speed ``top``.
+    message : str
+        Empty when the limit was bracketed; otherwise which of the two ends it is past.
+    """
     low, high = math.nan, math.nan
     previous = math.nan
     for speed in sweep:
-        if smallest(float(speed)) < value:
+        if solutions.smallest(float(speed)) < value:
             low, high = float(speed), previous
             break
         previous = float(speed)
@@ -257,13 +315,29 @@ def minimum_speed(
         message = (
             f"a film is below the limit ({value * 1e6:.3g} µm) at the operating speed ({top * 30 / math.pi:.4g} rpm)"
         )
-    else:
-        while high > low * (1.0 + tolerance):
-            middle = math.sqrt(low * high)
-            if smallest(middle) < value:
-                low = middle
-            else:
-                high = middle
+    return low, high, message
+
+
+def _narrow_bracket(
+    solutions: _SpeedSolutions, low: float, high: float, value: float, tolerance: float
+) -> tuple[float, float]:
+    """The bracket ``(low, high)`` (rad/s) halved on the logarithm of the speed until
+    ``high`` is within ``tolerance`` (relative) of ``low``; the film is below ``value`` (m)
+    at ``low`` and at or above it at ``high``."""
+    while high > low * (1.0 + tolerance):
+        middle = math.sqrt(low * high)
+        if solutions.smallest(middle) < value:
+            low = middle
+        else:
+            high = middle
+    return low, high
+
+
+def _lift_off_result(solutions: _SpeedSolutions, low: float, high: float, value: float, message: str) -> LiftOffResult:
+    """The sweep's solutions as a :class:`LiftOffResult`: the bracket ``(low, high)``
+    (rad/s), the limit ``value`` (m) and, when ``message`` is empty, the bearing whose film
+    is below the limit at ``low``."""
+    names, solved = solutions.names, solutions.solved
     speeds = np.array(sorted(solved))
     min_film = np.array([solved[s][0] for s in speeds]).T.reshape(len(names), speeds.size)
     contact = np.array([solved[s][1] for s in speeds]).T.reshape(len(names), speeds.size)

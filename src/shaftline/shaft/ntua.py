@@ -186,6 +186,28 @@ def ntua_shaft_line(
     require_positive("reaction", reaction, "N")
     require_positive("speed", speed, "rad/s")
     require_positive("viscosity", viscosity, "Pa*s")
+    offsets = _offsets_for_aft_bearing(psi_x, reaction, forward_bearing, intermediate_bearing, shaft_length)
+    line = _line(offsets, forward_bearing, intermediate_bearing, shaft_length)
+    problem = _aft_film_problem(bore, bore_anchor, grid, options, speed, viscosity)
+    return line, FilmSupport(line.bearings[0].name, problem, elements=10)
+
+
+def _offsets_for_aft_bearing(
+    psi_x: float,
+    reaction: float,
+    forward_bearing: tuple[float, float],
+    intermediate_bearing: tuple[float, float],
+    shaft_length: float,
+) -> np.ndarray:
+    """Offsets of the forward stern-tube and intermediate bearings, m, that give the aft
+    bearing the point-support ``reaction`` (N) and the misalignment ratio ``psi_x``
+    (arguments as :func:`ntua_shaft_line`).
+
+    Raises
+    ------
+    InputError
+        No such offsets with every bearing loaded.
+    """
     target = np.array([reaction, psi_x * 2.0 * RADIAL_CLEARANCE / BEARING_LENGTH])
     condition = Condition("base")
 
@@ -212,13 +234,24 @@ def ntua_shaft_line(
             f"a misalignment the layout gives with every bearing loaded at a reaction of {reaction:.6g} N "
             f"(offsets {offsets[0] * 1e3:.3g}, {offsets[1] * 1e3:.3g} mm lift a bearing)",
         )
-    line = _line(offsets, forward_bearing, intermediate_bearing, shaft_length)
+    return offsets
+
+
+def _aft_film_problem(
+    bore: tuple[BoreSegment, ...],
+    bore_anchor: BoreAnchor,
+    grid: tuple[int, int],
+    options: SolverOptions | None,
+    speed: float,
+    viscosity: float,
+) -> BearingProblem:
+    """The film of the aft stern-tube bearing at ``speed`` (rad/s) with an oil of
+    ``viscosity`` (Pa s) and the seed's density (arguments as :func:`ntua_shaft_line`)."""
     solver = replace(options or SolverOptions(), axial_nodes=int(grid[0]), circumferential_nodes=int(grid[1]))
-    problem = BearingProblem(
+    return BearingProblem(
         BearingGeometry(
             BEARING_LENGTH, SHAFT_DIAMETER, RADIAL_CLEARANCE, bore=tuple(bore), bore_anchor=bore_anchor, rotation=1
         ),
         OperatingPoint(speed=speed, viscosity=viscosity, density=890.0),
         solver,
     )
-    return line, FilmSupport(line.bearings[0].name, problem, elements=10)

@@ -104,6 +104,78 @@ def optimise_offsets(
     max_rounds: int = 6,
 ) -> OffsetPlan:
     """Offsets of the ``adjustable`` bearings (default: all but the aft- and forward-most)."""
+    problem = _offset_problem(model, rules, adjustable, objective, bound)
+    offsets = np.zeros(len(problem.adjustable))
+    rounds = 0
+    while rounds < max_rounds:
+        rounds += 1
+        # First round on the two-sided model: a lifted bearing has no sensitivity to a small
+        # offset in the one-sided model, but the plan must bring it back into contact.
+        two_sided = rounds == 1
+        linearised = _linearise(problem, offsets, two_sided)
+        offsets = offsets + _offset_change(problem, linearised, offsets)
+        results = [model.solve_condition(_with_offsets(c, problem.offsets(offsets))) for c in problem.conditions]
+        new_states = [[b.contact for b in r.bearings] for r in results]
+        if new_states == linearised.states and not two_sided:
+            break
+    aft_index, shares = problem.aft_index, problem.shares
+    if objective == "aft_slope":
+        value = max(abs(r.bearings[aft_index].relative_slope) for r in results)
+    else:
+        value = max(abs(b.reaction_y / shares[k] - 1.0) for r in results for k, b in enumerate(r.bearings))
+    return OffsetPlan(dict(zip(problem.adjustable, map(float, offsets), strict=True)), results, float(value), rounds)
+
+
+@dataclass(frozen=True, eq=False)
+class _OffsetProblem:
+    """What the offset optimisation's linear programmes share, round after round.
+
+    Attributes
+    ----------
+    model : AlignmentModel
+    conditions : tuple of Condition
+        The line's conditions, all met at once.
+    adjustable : list of str
+        The bearings whose offsets change.
+    columns : list of int
+        Their places in ``model.line.bearings``.
+    aft_index : int
+        Place of the aft-most bearing (the slope objective's).
+    low, high : ndarray
+        Smallest and largest reaction per bearing the plan aims within, N (the rules' limits
+        with a margin).
+    slope_weights : ndarray
+        Weights of the nodal deflections in the aft bearing's chord slope, 1/m.
+    shares : ndarray
+        Each bearing's straight-line share of the line's weight, N.
+    objective : str
+        One of :data:`OBJECTIVES`.
+    bound : float
+        Largest added offset either way, m.
+    """
+
+    model: AlignmentModel
+    conditions: tuple[Condition, ...]
+    adjustable: list[str]
+    columns: list[int]
+    aft_index: int
+    low: np.ndarray
+    high: np.ndarray
+    slope_weights: np.ndarray
+    shares: np.ndarray
+    objective: str
+    bound: float
+
+    def offsets(self, values: np.ndarray) -> dict[str, float]:
+        """The added offsets ``values`` (m) by bearing name."""
+        return dict(zip(self.adjustable, values, strict=True))
+
+
+def _offset_problem(
+    model: AlignmentModel, rules: list[Rule], adjustable: list[str] | None, objective: str, bound: float
+) -> _OffsetProblem:
+    """The arguments of :func:`optimise_offsets` checked, and the parts of its linear
+    programmes that do not change between rounds."""
     line = model.line
     names = [b.name for b in line.bearings]
     if objective not in OBJECTIVES:
@@ -141,76 +213,107 @@ def optimise_offsets(
             f"aft_slope here: bearing {bare!r} carries no share of the line's weight (a shaft without "
             "self weight and no mass near it), so the load spread is not defined",
         )
-    offsets = np.zeros(len(adjustable))
-    rounds = 0
-    while rounds < max_rounds:
-        rounds += 1
-        rows_a, rows_b, slope_rows, slope_rhs, use_rows, use_rhs = [], [], [], [], [], []
-        states = []
-        # First round on the two-sided model: a lifted bearing has no sensitivity to a small
-        # offset in the one-sided model, but the plan must bring it back into contact.
-        two_sided = rounds == 1
-        for condition in conditions:
-            current = _with_offsets(condition, dict(zip(adjustable, offsets, strict=True)))
-            base = model.solve_condition(current, two_sided)
-            states.append([b.contact for b in base.bearings])
-            reactions = np.array([b.reaction_y for b in base.bearings])
-            slope = base.bearings[aft_index].relative_slope
-            # Exact derivatives for the contact set of this solution (see influence_matrix);
-            # a change of contact set is met by re-solving and re-linearising below.
-            influence = model.influence_matrix(None if two_sided else base)
-            jac_r = influence.matrix[:, columns]
-            jac_s = slope_weights @ influence.deflection[:, columns]
-            # low <= R + J d <= high  ->  -J d <= R - low ;  J d <= high - R   (d = change from current)
-            rows_a.append(-jac_r)
-            rows_b.append(reactions - low)
-            finite = np.isfinite(high)
-            rows_a.append(jac_r[finite])
-            rows_b.append(high[finite] - reactions[finite])
-            slope_rows.append(jac_s)
-            slope_rhs.append(slope)
-            if objective == "load_spread":
-                use_rows.append(jac_r / shares[:, None])
-                use_rhs.append(reactions / shares - 1.0)
-        n = len(adjustable)
-        # variables: d (n), t
-        c = np.zeros(n + 1)
-        c[-1] = 1.0
-        a_ub = [np.hstack([np.vstack(rows_a), np.zeros((sum(len(r) for r in rows_b), 1))])]
-        b_ub = [np.concatenate(rows_b)]
-        if objective == "aft_slope":
-            for row, value in zip(slope_rows, slope_rhs, strict=True):
-                a_ub.append(np.concatenate([row, [-1.0]])[None, :])
-                b_ub.append(np.array([-value]))
-                a_ub.append(np.concatenate([-row, [-1.0]])[None, :])
-                b_ub.append(np.array([value]))
-        else:  # -t <= ratio - 1 + J d / share <= t
-            for rows, values in zip(use_rows, use_rhs, strict=True):
-                a_ub.append(np.hstack([rows, -np.ones((rows.shape[0], 1))]))
-                b_ub.append(-values)
-                a_ub.append(np.hstack([-rows, -np.ones((rows.shape[0], 1))]))
-                b_ub.append(values)
-        bounds = [(-bound - o, bound - o) for o in offsets] + [(0.0, None)]
-        solution = linprog(c, A_ub=np.vstack(a_ub), b_ub=np.concatenate(b_ub), bounds=bounds, method="highs")
-        if solution.status != 0:
-            raise InputError(
-                "bound",
-                bound,
-                "m",
-                "a bound within which some offsets meet the rule limits in every condition (none found)",
-            )
-        offsets = offsets + solution.x[:n]
-        results = [
-            model.solve_condition(_with_offsets(c, dict(zip(adjustable, offsets, strict=True)))) for c in conditions
-        ]
-        new_states = [[b.contact for b in r.bearings] for r in results]
-        if new_states == states and not two_sided:
-            break
-    if objective == "aft_slope":
-        value = max(abs(r.bearings[aft_index].relative_slope) for r in results)
-    else:
-        value = max(abs(b.reaction_y / shares[k] - 1.0) for r in results for k, b in enumerate(r.bearings))
-    return OffsetPlan(dict(zip(adjustable, map(float, offsets), strict=True)), results, float(value), rounds)
+    return _OffsetProblem(
+        model, conditions, adjustable, columns, aft_index, low, high, slope_weights, shares, objective, bound
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class _Linearisation:
+    """The reactions, aft slope and load ratios of every condition linearised in the offset
+    change ``d`` (m) at the current offsets, one entry per condition.
+
+    Attributes
+    ----------
+    rows_a, rows_b : list of ndarray
+        The reaction limits as ``rows_a @ d <= rows_b`` (N/m, N), lower and upper in turn.
+    slope_rows, slope_rhs : list
+        The aft bearing's relative slope ``slope_rhs + slope_rows @ d``, rad.
+    ratio_rows, ratio_rhs : list of ndarray
+        The load ratios' departures from 1, ``ratio_rhs + ratio_rows @ d`` (load_spread only).
+    states : list of list of str
+        The contact state of each bearing (its :attr:`BearingResult.contact`) the linearisation holds for.
+    """
+
+    rows_a: list[np.ndarray]
+    rows_b: list[np.ndarray]
+    slope_rows: list[np.ndarray]
+    slope_rhs: list[float]
+    ratio_rows: list[np.ndarray]
+    ratio_rhs: list[np.ndarray]
+    states: list[list[str]]
+
+
+def _linearise(problem: _OffsetProblem, offsets: np.ndarray, two_sided: bool) -> _Linearisation:
+    """Every condition solved at the added ``offsets`` (m), on the two-sided model if
+    ``two_sided``, and linearised there."""
+    model, low, high, columns, shares = problem.model, problem.low, problem.high, problem.columns, problem.shares
+    rows_a, rows_b, slope_rows, slope_rhs, use_rows, use_rhs = [], [], [], [], [], []
+    states = []
+    for condition in problem.conditions:
+        current = _with_offsets(condition, problem.offsets(offsets))
+        base = model.solve_condition(current, two_sided)
+        states.append([b.contact for b in base.bearings])
+        reactions = np.array([b.reaction_y for b in base.bearings])
+        slope = base.bearings[problem.aft_index].relative_slope
+        # Exact derivatives for the contact set of this solution (see influence_matrix);
+        # a change of contact set is met by re-solving and re-linearising in the next round.
+        influence = model.influence_matrix(None if two_sided else base)
+        jac_r = influence.matrix[:, columns]
+        jac_s = problem.slope_weights @ influence.deflection[:, columns]
+        # low <= R + J d <= high  ->  -J d <= R - low ;  J d <= high - R   (d = change from current)
+        rows_a.append(-jac_r)
+        rows_b.append(reactions - low)
+        finite = np.isfinite(high)
+        rows_a.append(jac_r[finite])
+        rows_b.append(high[finite] - reactions[finite])
+        slope_rows.append(jac_s)
+        slope_rhs.append(slope)
+        if problem.objective == "load_spread":
+            use_rows.append(jac_r / shares[:, None])
+            use_rhs.append(reactions / shares - 1.0)
+    return _Linearisation(rows_a, rows_b, slope_rows, slope_rhs, use_rows, use_rhs, states)
+
+
+def _offset_change(problem: _OffsetProblem, linearised: _Linearisation, offsets: np.ndarray) -> np.ndarray:
+    """The change of the added ``offsets`` (m) that minimises the objective of the
+    ``linearised`` conditions within the limits and the bound, m (HiGHS).
+
+    Raises
+    ------
+    InputError
+        No offsets within the bound meet the limits.
+    """
+    bound = problem.bound
+    n = len(problem.adjustable)
+    # variables: d (n), t
+    c = np.zeros(n + 1)
+    c[-1] = 1.0
+    rows_b = linearised.rows_b
+    a_ub = [np.hstack([np.vstack(linearised.rows_a), np.zeros((sum(len(r) for r in rows_b), 1))])]
+    b_ub = [np.concatenate(rows_b)]
+    if problem.objective == "aft_slope":
+        for row, value in zip(linearised.slope_rows, linearised.slope_rhs, strict=True):
+            a_ub.append(np.concatenate([row, [-1.0]])[None, :])
+            b_ub.append(np.array([-value]))
+            a_ub.append(np.concatenate([-row, [-1.0]])[None, :])
+            b_ub.append(np.array([value]))
+    else:  # -t <= ratio - 1 + J d / share <= t
+        for rows, values in zip(linearised.ratio_rows, linearised.ratio_rhs, strict=True):
+            a_ub.append(np.hstack([rows, -np.ones((rows.shape[0], 1))]))
+            b_ub.append(-values)
+            a_ub.append(np.hstack([-rows, -np.ones((rows.shape[0], 1))]))
+            b_ub.append(values)
+    bounds = [(-bound - o, bound - o) for o in offsets] + [(0.0, None)]
+    solution = linprog(c, A_ub=np.vstack(a_ub), b_ub=np.concatenate(b_ub), bounds=bounds, method="highs")
+    if solution.status != 0:
+        raise InputError(
+            "bound",
+            bound,
+            "m",
+            "a bound within which some offsets meet the rule limits in every condition (none found)",
+        )
+    return solution.x[:n]
 
 
 def offsets_from_reactions(
