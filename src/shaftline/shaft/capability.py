@@ -6,9 +6,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-
-from shaftline.commandline import strict_help
+from shaftline.helptext import strict_help
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Details, Figure, Heading, Paragraph, Table, fmt
 
@@ -172,8 +170,8 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                 },
                 "line_load": {"y": f.line_load[0].tolist(), "z": f.line_load[1].tolist()},
                 # null when not available (an elastic liner that does not settle there): NaN is not JSON.
-                "stiffness": f.stiffness.tolist() if np.isfinite(f.stiffness).all() else None,
-                "damping": f.damping.tolist() if np.isfinite(f.damping).all() else None,
+                "stiffness": f.stiffness.tolist() if all(map(math.isfinite, f.stiffness.flat)) else None,
+                "damping": f.damping.tolist() if all(map(math.isfinite, f.damping.flat)) else None,
                 "coefficients_note": f.coefficients_note,
             }
             for f in coupled.films
@@ -200,11 +198,11 @@ def _film_rows(coupled: CoupledResult) -> list[list[str]]:
                 f.name,
                 fmt(f.force_y, 1e-3),
                 fmt(state.min_film_thickness, 1e6),
-                f"{np.degrees(state.min_film_theta):.0f} / {state.min_film_z:.3f}",
+                f"{math.degrees(state.min_film_theta):.0f} / {state.min_film_z:.3f}",
                 fmt(state.max_pressure, 1e-6),
                 fmt(f.support_point, 1e3),
                 fmt(state.eccentricity_ratio, 1.0),
-                f"{np.degrees(state.attitude_angle):.1f}",
+                f"{math.degrees(state.attitude_angle):.1f}",
                 fmt(f.relative_slope, 1e3),
                 fmt(state.power_loss, 1e-3),
                 "CONTACT" if f.contact else "film",
@@ -561,7 +559,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
     def findings(self, result: AlignmentResult) -> list[Finding]:
         out = []
         lift = result.lift_off
-        if lift is not None and np.isnan(lift.speed):
+        if lift is not None and math.isnan(lift.speed):
             out.append(
                 Finding(
                     f"a film bearing is below the film limit of {lift.limit * 1e6:.2f} µm at the operating speed: "
@@ -668,7 +666,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         if film.coefficients_note:
             return Paragraph(f"Film stiffness and damping, {film.name}, {condition}: {film.coefficients_note}.", "warn")
         labels = ["y", "z", "tilt_y", "tilt_z"]
-        scales = np.array([1e-6, 1e-6, 1e-6, 1e-6])  # MN/m, MN/rad, MN m/m, MN m/rad
+        scales = (1e-6, 1e-6, 1e-6, 1e-6)  # MN/m, MN/rad, MN m/m, MN m/rad
         rows = []
         for i, row in enumerate(("F_y", "F_z", "M_y", "M_z")):
             rows.append(
