@@ -21,8 +21,8 @@ if TYPE_CHECKING:
 
     from shaftline.monitor.forward import Recording, RigCase
     from shaftline.monitor.identification import SectionOrbit
+    from shaftline.monitor.identified import Identified, RejectedWindow, SlowRoll
     from shaftline.monitor.probes import ProbeLayout
-    from shaftline.monitor.processing import Identified, RejectedWindow, SlowRoll
     from shaftline.monitor.study import MonitorResult, WindowResult
     from shaftline.monitor.trends import LambdaAlarm, SectionTrend
 

@@ -22,7 +22,7 @@ from shaftline.monitor.presentation import MICRO, alarm_text, count_text, reject
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
 
 if TYPE_CHECKING:
-    from shaftline.monitor.processing import RejectedWindow
+    from shaftline.monitor.identified import RejectedWindow
     from shaftline.monitor.study import IdentifyPlan, MonitorStudy
     from shaftline.monitor.trends import CentreLine, SectionTrend, StoredRecording
 
