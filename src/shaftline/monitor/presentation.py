@@ -36,6 +36,8 @@ def rpm_text(speed: float) -> str:
 
 
 def monitor_json(result: MonitorResult) -> dict[str, Any]:
+    """``monitor`` of results.json: each simulated point identified beside its truth, and what
+    ``monitor identify`` stored (:func:`identified_json`), SI units."""
     from shaftline.monitor.regimes import thresholds
 
     layout = result.study.layout
@@ -101,6 +103,7 @@ def monitor_json(result: MonitorResult) -> dict[str, Any]:
 
 
 def simulated_table(result: MonitorResult) -> Table:
+    """The synthetic recordings identified: films, regime lengths and errors against the truth."""
     rows = []
     for point in result.points:
         window = point.window
@@ -133,6 +136,7 @@ def simulated_table(result: MonitorResult) -> Table:
 
 
 def summary_blocks(result: MonitorResult) -> list[Block]:
+    """What the terminal shows after a run: the recordings identified, then the simulated ones."""
     blocks: list[Block] = []
     if result.identified is not None:
         blocks += [
@@ -148,6 +152,7 @@ def summary_blocks(result: MonitorResult) -> list[Block]:
 
 
 def report_blocks(result: MonitorResult) -> list[Block]:
+    """The report's section: the layout, the recordings identified, the simulated rig and its figures."""
 
     import numpy as np
 
@@ -365,6 +370,7 @@ def count_text(number: int, noun: str) -> str:
 
 
 def when_text(moment: Any) -> str:
+    """A time as shown, to the second: ``"2026-11-02 06:00:00"``."""
     import datetime as dt
 
     # to the nearest second: a time a microsecond short of a whole second is shown as that second
@@ -372,6 +378,7 @@ def when_text(moment: Any) -> str:
 
 
 def rejected_text(name: str, rejected: Sequence[RejectedWindow]) -> str:
+    """The finding of the windows of recording ``name`` not identified (the first five named)."""
     shown = ", ".join(
         f"{w.window} ({when_text(w.time)}: {w.reason}, {w.invalid_share:.1%} invalid)" for w in rejected[:5]
     ) + (f" and {len(rejected) - 5} more" if len(rejected) > 5 else "")
@@ -382,6 +389,7 @@ def rejected_text(name: str, rejected: Sequence[RejectedWindow]) -> str:
 
 
 def alarm_text(alarm: LambdaAlarm, threshold: float) -> str:
+    """The finding of a lambda alarm: where, when, how long and how low."""
     where = "along the bearing" if alarm.section == "bearing" else f"at section {alarm.section}"
     return (
         f"Film parameter below {threshold:g} {where} from {when_text(alarm.start)} to {when_text(alarm.end)} UTC "
@@ -394,6 +402,7 @@ def _numbers(values: Any) -> list[float | None]:
 
 
 def trend_json(trend: SectionTrend) -> dict[str, Any]:
+    """A section's trend for the JSON: its windows' values, alarms, limit and fitted trend (SI)."""
     crossing = trend.crossing
     return {
         "times": [t.isoformat() for t in trend.times],
