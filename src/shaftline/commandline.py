@@ -1,8 +1,9 @@
 """What every command-line verb shares: running case files through the pipeline, printing
 the summary, writing JSON and the report folder, and the one-line error with exit 2.
 
-Kept apart from :mod:`shaftline.cli` so that a capability's own commands
-(:meth:`shaftline.registry.Capability.commands`) can use it without an import cycle.
+Kept apart from :mod:`shaftline.cli` so that a capability's own commands (its ``commands.py``,
+:meth:`shaftline.registry.Capability.commands`) can use it without an import cycle.
+:func:`~shaftline.helptext.strict_help` is importable from here too.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ import typer
 from rich.console import Console
 
 from shaftline.errors import InputError, Interrupted
+from shaftline.helptext import strict_help as strict_help  # the verbs' own commands build their help with it
 
 console = Console()
 error_console = Console(stderr=True)
@@ -26,17 +28,6 @@ JsonOption = Annotated[
 ]
 OutOption = Annotated[Path | None, typer.Option("--out", help="Folder for results.json, figures and report.html.")]
 CaseArgument = Annotated[Path, typer.Argument(help="Case file (TOML).")]
-
-
-def strict_help(criteria: str, always: str = "") -> str:
-    """The ``--strict`` help of a verb, from what its capability's findings judge
-    (:class:`~shaftline.registry.Finding`): ``criteria``, the design criteria (``criterion=True``:
-    exit status 3 only with ``--strict``); ``always``, what exits with 3 without it
-    (``criterion=False``), empty when nothing of the verb does."""
-    text = f"Exit with status 3 also when {criteria}."
-    if always:
-        return f"{text} Without it, status 3 only for {always}."
-    return f"{text} Without it, no result of this command exits with 3."
 
 
 #: ``--strict`` of ``run`` (every analysis of the case): each verb's own help names its criteria.
@@ -198,7 +189,6 @@ def run_cases(
     the findings and summaries, write the report folder and the JSON; exit with status 3
     when the result is not acceptable (with ``strict`` also when a design criterion fails)."""
     from shaftline.pipeline import acceptable, findings_blocks, report_sections, results_document, run_case
-    from shaftline.progress import ProgressDisplay
     from shaftline.report.blocks import Paragraph
     from shaftline.report.terminal import print_blocks
 
@@ -206,6 +196,9 @@ def run_cases(
     with interruptible(), input_errors():
         case = read_and_build(case_file, only, overrides)
         check_outputs(out, json_path, [*case.inputs, *case.kept])
+        # rich's progress display only once the case is accepted: an input error does not wait for it
+        from shaftline.progress import ProgressDisplay
+
         # before solving: a long run's reader sees at once what was left out
         print_blocks(error_console if quiet else console, [Paragraph(f"warning: {w}", "warn") for w in case.warnings])
         with ProgressDisplay(error_console) as show:

@@ -304,7 +304,7 @@ def test_the_reports_polar_film_reaches_the_orbits_smallest_film(rig):
     (smallest film near 188 deg) falls between: at D1 and 215 rpm it drew +2 um where the orbit gives -1.7 um and
     so said nothing of the pressed-in liner. Drawn on a 1 deg grid, its curves reach the orbit's films to the
     chord of half a degree, c (1 - cos 0.5 deg) = 0.021 um."""
-    from shaftline.monitor.capability import _window_blocks
+    from shaftline.monitor.presentation import window_blocks
     from shaftline.monitor.study import identify_window
     from shaftline.report.blocks import Figure as Block
 
@@ -312,7 +312,7 @@ def test_the_reports_polar_film_reaches_the_orbits_smallest_film(rig):
     layout = case.layout
     recording = runs[215.0][0]
     window = identify_window(layout, recording.signals, recording.keyphasor, case.sample_rate, profile)
-    polars = [b for b in _window_blocks(window, layout, "t") if isinstance(b, Block) and "polar" in b.file]
+    polars = [b for b in window_blocks(window, layout, "t") if isinstance(b, Block) and "polar" in b.file]
     chord = layout.radial_clearance * (1.0 - math.cos(math.radians(0.5))) + 1e-12
     for orbit, block in zip(window.orbits, polars, strict=True):
         mean, smallest = block.args[1], block.kwargs["smallest"]

@@ -698,7 +698,7 @@ def test_long_recording_names_are_cut_in_the_middle_in_the_terminal_only(truth, 
     # speed and the suffix, kept), each row on one line, with a note; the report's tables and
     # results.json keep the full name.
     from shaftline.cases import load_case
-    from shaftline.monitor.capability import NAME_WIDTH
+    from shaftline.monitor.presentation import NAME_WIDTH
     from shaftline.pipeline import dumps, results_document, run_case
     from shaftline.report.blocks import Paragraph, Table
 

@@ -7,7 +7,7 @@ import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
-from shaftline.commandline import strict_help
+from shaftline.helptext import strict_help
 from shaftline.registry import BuildContext, Capability, Comparison, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Figure, Heading, Paragraph, Table
 

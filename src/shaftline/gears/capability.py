@@ -6,12 +6,8 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
-import typer
-
-from shaftline.commandline import JsonOption, OutOption, strict_help
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
 
@@ -68,38 +64,6 @@ def _verdict(sp: float) -> str:
     return "scuffing" if sp > SCUFFING else "safe" if sp < NO_SCUFFING else "uncertain"
 
 
-def scuffing_command(
-    case_file: Annotated[Path, typer.Argument(help="Case file (TOML) with a [gears] table.")],
-    calibrate: Annotated[
-        Path | None,
-        typer.Option(
-            "--calibrate",
-            help="Torque-step test record (CSV: torque_Nm, speed_rpm, oil_temperature_degC, scuffed) to calibrate "
-            "seed 002's C on: SP = 1 at the first scuffed step.",
-        ),
-    ] = None,
-    json_path: JsonOption = None,
-    out: OutOption = None,
-    strict: Annotated[
-        bool,
-        typer.Option(
-            "--strict",
-            # what GearScuffing.findings judges, with and without ``criterion``
-            help=strict_help(
-                "seed 002's scuffing parameter SP exceeds 1 or ISO/TS 6336-20's S_B falls below 1 at a torque-speed "
-                "step",
-                "seed 002's thermal correction clipped to 0 beyond its fit range (SP understated: no result)",
-            ),
-        ),
-    ] = False,
-) -> None:
-    """Scuffing of a gear pair along the mesh: seed 002's scuffing parameter beside ISO/TS 6336-20."""
-    from shaftline.commandline import run_cases
-
-    overrides = {} if calibrate is None else {"gears.calibration": str(calibrate.expanduser().resolve())}
-    run_cases(Path(case_file), json_path, out, only=["gears"], overrides=overrides, strict=strict)
-
-
 class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
     key = "gears"
     title = "Gear scuffing: seed 002's scuffing parameter beside ISO/TS 6336-20"
@@ -120,6 +84,8 @@ class GearScuffing(Capability["GearsSection", "GearStudy", "GearResult"]):
         return solve_gears(study, lambda step: progress(f"solving {step}"))
 
     def commands(self) -> Sequence[Command]:
+        from shaftline.gears.commands import scuffing_command
+
         return (Command(("gears", "scuffing"), scuffing_command),)
 
     def to_json(self, result: GearResult) -> dict[str, Any]:
@@ -411,6 +377,8 @@ def _clipped_thermal_correction(result: GearResult) -> Finding | None:
     """A finding (not acceptable as it stands, exit 3) where seed 002's thermal correction was
     clipped to 0 outside its fit range (``extrapolate``): friction, frictional power and so SP are
     0 or understated there, which no warning may leave looking like a safe result (issue 14 (g))."""
+    import numpy as np
+
     c = result.state.contact.thermal_correction
     zero = c <= 0.0
     if not zero.any():

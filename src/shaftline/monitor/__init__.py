@@ -9,7 +9,9 @@ descriptors with a keyphasor), :mod:`~shaftline.monitor.forward` (synthetic prob
 signals of the seed's rig from the bearing solver and the shaft model, the validation),
 :mod:`~shaftline.monitor.study` (``identify_window``: one block from volts to film, regimes
 and descriptors) and :mod:`~shaftline.monitor.figures`; ``case.py`` and ``capability.py``
-are the ``[monitor]`` table and the ``monitor simulate`` verb.
+are the ``[monitor]`` table and the capability (the ``monitor simulate`` verb),
+``presentation.py`` and ``trend_report.py`` what a result and the trend database show, and
+``commands.py`` the ``monitor identify`` and ``monitor trend`` commands.
 
 Every function takes and returns SI units; sample blocks are (samples x channels)
 arrays in the channel order of :attr:`ProbeLayout.channels`, so that a reader can feed

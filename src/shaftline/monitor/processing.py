@@ -14,21 +14,33 @@ from __future__ import annotations
 
 import datetime as dt
 import math
-from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field, replace
+from collections.abc import Callable
+from dataclasses import replace
 from dataclasses import replace as replace_field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from shaftline.errors import InputError
+from shaftline.monitor.identified import (
+    Identified,
+    IdentifiedRecording,
+    ProcessedRecording,
+    RecordingPlan,
+    RejectedWindow,
+    SlowRoll,
+)
 from shaftline.monitor.orbits import binned_average, phase_bin_sums, revolution_marks, shaft_phase, speed_from_marks
 from shaftline.monitor.probes import ProbeLayout, within_range
-from shaftline.monitor.recordings import Recording, open_recording
+from shaftline.monitor.recordings import open_recording
 from shaftline.monitor.regimes import film_ratio
 from shaftline.monitor.study import IdentifyPlan, WindowResult, identify_window
-from shaftline.monitor.trends import SectionTrend, StoredRecording, TrendStore
+from shaftline.monitor.trends import StoredRecording, TrendStore
 from shaftline.registry import Progress, Tally, no_progress
+
+if TYPE_CHECKING:
+    from shaftline.monitor.identification import SectionReference
 
 __all__ = [
     "BEARING",
@@ -95,118 +107,6 @@ MAX_INVALID_SHARE = 0.01
 #: Plausible time-median film at a probe, in radial clearances: a journal inside its bore
 #: gives 0 to 2 c (plus wear); a recording in mV read as V, or um read as mm, is 1000 times off.
 FILM_PLAUSIBLE = (-1.0, 3.0)
-
-
-@dataclass(frozen=True)
-class RecordingPlan:
-    """A recording checked before anything of it is stored.
-
-    Attributes
-    ----------
-    recording : Recording
-    sample_rate : float
-        Hz.
-    size : int
-        Samples per window.
-    windows : int
-        Windows in the recording.
-    started_at : datetime
-        Time of its first sample.
-    keyphasor : str
-        Its once-per-revolution channel ("": none; then ``speed``).
-    speed : float or None
-        Shaft speed given for a recording without a keyphasor, rad/s.
-    channels : tuple of str
-        The probes' channels, in the layout's order.
-    """
-
-    recording: Recording
-    sample_rate: float
-    size: int
-    windows: int
-    started_at: dt.datetime
-    keyphasor: str = "keyphasor"
-    speed: float | None = None
-    channels: tuple[str, ...] = ()
-
-    def blocks(self, start: int = 0) -> Iterator[tuple[int, np.ndarray]]:
-        """Windows of probe outputs with the keyphasor as the last column, from window ``start``:
-        the recording's channel, or without one, one-sample marks at every revolution of the given
-        speed counted from the first sample (the 1X phases are then against the recording's
-        start, not a mark on the shaft)."""
-        layout_columns = list(self.channels)
-        if self.keyphasor:
-            yield from self.recording.blocks([*layout_columns, self.keyphasor], size=self.size, start=start * self.size)
-            return
-        assert self.speed is not None
-        step = self.speed / (2 * math.pi) / self.sample_rate  # revolutions a sample
-        for first, block in self.recording.blocks(layout_columns, size=self.size, start=start * self.size):
-            turns = (first + np.arange(block.shape[0])) * step
-            marks = np.floor(turns) != np.floor(turns - step)
-            yield first, np.column_stack([block, np.where(marks, 5.0, 0.0)])
-
-    @property
-    def duration(self) -> float:
-        """Length of the recording, s."""
-        return self.recording.samples / self.sample_rate
-
-
-@dataclass(frozen=True)
-class ProcessedRecording:
-    """What a run did with one recording.
-
-    Attributes
-    ----------
-    recording : StoredRecording
-    windows : int
-        Windows in the recording.
-    written : int
-        Windows identified and stored by this run (0 for a recording stored before).
-    masked : int
-        Probe samples of the windows of this run that were NaN or beyond their probe's range,
-        masked and filled by interpolation along time.
-    samples : int
-        Probe samples of the windows of this run.
-    rejected : tuple of RejectedWindow
-        Windows of the recording in the store (this run's and earlier ones') that were not
-        identified: flagged there with the reason, left out of the trends.
-    last : WindowResult or None
-        The last window this run identified (for the report's figures), None when it
-        identified none.
-    last_window : int
-        Its number (-1 without one).
-    """
-
-    recording: StoredRecording
-    windows: int
-    written: int
-    masked: int = 0
-    samples: int = 0
-    rejected: tuple[RejectedWindow, ...] = ()
-    last: WindowResult | None = field(default=None, repr=False, compare=False)
-    last_window: int = -1
-
-
-@dataclass(frozen=True)
-class RejectedWindow:
-    """A window stored as not acceptable instead of identified.
-
-    Attributes
-    ----------
-    window : int
-        Its number in the recording.
-    time : datetime
-        Time of its first sample.
-    reason : str
-        Why (:data:`REJECTED`).
-    invalid_share : float
-        Share of its probe samples that were NaN or beyond range.
-    """
-
-    window: int
-    time: dt.datetime
-    reason: str
-    invalid_share: float
 
 
 def rejected_windows(store: TrendStore, recording: StoredRecording) -> tuple[RejectedWindow, ...]:
@@ -279,52 +179,6 @@ def _check_units(layout: ProbeLayout, signals: np.ndarray, where: str) -> None:
                 f"within the radial clearance {clearance * 1e3:g} mm ({low:g} to {high:g} c; an output in mV read "
                 "as V, or a calibration in V/mm read as V/um, is 1000 times off)",
             )
-
-
-@dataclass(frozen=True, eq=False)
-class SlowRoll:
-    """The runout of every probe measured on a slow-roll recording.
-
-    Attributes
-    ----------
-    name : str
-        The recording's file name.
-    content_hash : str
-        SHA-256 of its bytes.
-    speed : float
-        Mean shaft speed over its whole revolutions, rad/s.
-    revolutions : int
-        Whole revolutions averaged.
-    profile : ndarray (bins, channels)
-        Runout of each probe against the keyphasor's shaft phase, mean removed, m
-        (:func:`~shaftline.monitor.orbits.runout_profile`).
-    masked : int
-        Probe samples that were NaN or beyond range, masked and filled.
-    channels : tuple of str
-        The probes' channels, in the order of the profile's columns.
-    source : str
-        Where the runout comes from: ``"recording"`` (a slow-roll recording), ``"slow windows"``
-        (the windows of a recording below ``slow_roll_speed``; then ``name`` and ``content_hash``
-        are that recording's) or ``"table"`` (the case's runout table; ``content_hash`` its
-        :meth:`~shaftline.monitor.study.RunoutTable.digest`, no speed).
-    windows : int
-        Windows averaged (``"slow windows"``).
-    """
-
-    name: str
-    content_hash: str
-    speed: float
-    revolutions: int
-    profile: np.ndarray
-    masked: int = 0
-    channels: tuple[str, ...] = ()
-    source: str = "recording"
-    windows: int = 0
-
-    @property
-    def peak_to_peak(self) -> np.ndarray:
-        """Peak-to-peak runout of each probe, m."""
-        return np.ptp(self.profile, axis=0)
 
 
 #: Samples read at a time from a slow-roll recording (its revolutions are long: 4 s at 15 rpm).
@@ -655,25 +509,13 @@ def process_recording(
             break
         if k in done:
             continue
-        signals, bad = mask_invalid(layout, block[:, :-1])
         time = stored.started_at + dt.timedelta(seconds=first_sample / rate)
-        share = bad / signals.size
-        marks = revolution_marks(block[:, -1])
-        code = 1 if share > max_invalid_share else 2 if marks.size < 2 else 0
-        if code:
-            # a monitoring run goes on past a bad stretch: the window is flagged, not identified
-            speed = 2 * math.pi * speed_from_marks(marks, rate) if marks.size >= 2 else None
-            flagged = {(BEARING, "rejected"): float(code), (BEARING, "invalid_share"): share}
-            written += store.add_window(stored, k, time, flagged, speed=speed)
-        else:
-            result = identify_window(
-                layout, signals, block[:, -1], rate, runout=runout, shape=shape, references=references
-            )
-            values = window_values(result, layout) | {(BEARING, "invalid_share"): share}
+        added, result, bad, counted = _store_window(
+            layout, store, stored, k, time, block, rate, max_invalid_share, runout, shape, references
+        )
+        written, masked, samples = written + added, masked + bad, samples + counted
+        if result is not None:
             last, last_window = result, k
-            # counted in the windows identified only: a rejected window's samples were not filled
-            masked, samples = masked + bad, samples + signals.size
-            written += store.add_window(stored, k, time, values, speed=result.speed)
         if progress is not None:
             progress(k + 1, windows)
     store.mark_complete(stored)
@@ -682,57 +524,37 @@ def process_recording(
     )
 
 
-@dataclass(frozen=True, eq=False)
-class IdentifiedRecording:
-    """One recording of a ``monitor identify`` run and its trends as stored.
-
-    Attributes
-    ----------
-    plan : RecordingPlan
-    processed : ProcessedRecording
-    trends : tuple of SectionTrend
-        Smallest film of each section over the recording's windows, with its lambda alarms.
-    runout : SlowRoll or None
-        The runout subtracted from its windows identified by this run (None: none, or none
-        identified with ``slow_roll_speed``).
-    replaced : bool
-        Its windows stored with other processing settings were deleted and identified again
-        (``replace``).
-    """
-
-    plan: RecordingPlan
-    processed: ProcessedRecording
-    trends: tuple[SectionTrend, ...]
-    runout: SlowRoll | None = None
-    replaced: bool = False
-
-
-@dataclass(frozen=True, eq=False)
-class Identified:
-    """What ``monitor identify`` did.
-
-    Attributes
-    ----------
-    database : str
-        The trend database's URL as it may be shown (password hidden).
-    recordings : tuple of IdentifiedRecording
-    lambda_threshold : float
-    alarm_duration : float
-        s.
-    slow_roll : SlowRoll or None
-        The runout subtracted from every window: a slow-roll recording's or the case's table
-        (None: neither; with ``slow_roll_speed`` each recording has its own,
-        :attr:`IdentifiedRecording.runout`).
-    slow_roll_speed : float or None
-        rad/s, where the runout of each recording comes from its windows below it.
-    """
-
-    database: str
-    recordings: tuple[IdentifiedRecording, ...]
-    lambda_threshold: float
-    alarm_duration: float
-    slow_roll: SlowRoll | None = None
-    slow_roll_speed: float | None = None
+def _store_window(
+    layout: ProbeLayout,
+    store: TrendStore,
+    stored: StoredRecording,
+    window: int,
+    time: dt.datetime,
+    block: np.ndarray,
+    rate: float,
+    max_invalid_share: float,
+    runout: np.ndarray | None,
+    shape: tuple[np.ndarray, np.ndarray] | None,
+    references: tuple[SectionReference, ...],
+) -> tuple[int, WindowResult | None, int, int]:
+    """Window ``window`` of a recording (probe outputs, the keyphasor last) identified and its
+    values stored, or stored as rejected when too many of its samples are invalid or it holds no
+    whole revolution: (windows written, its result or None when rejected, masked probe samples
+    and probe samples of an identified window)."""
+    signals, bad = mask_invalid(layout, block[:, :-1])
+    share = bad / signals.size
+    marks = revolution_marks(block[:, -1])
+    code = 1 if share > max_invalid_share else 2 if marks.size < 2 else 0
+    if code:
+        # a monitoring run goes on past a bad stretch: the window is flagged, not identified
+        speed = 2 * math.pi * speed_from_marks(marks, rate) if marks.size >= 2 else None
+        flagged = {(BEARING, "rejected"): float(code), (BEARING, "invalid_share"): share}
+        return int(store.add_window(stored, window, time, flagged, speed=speed)), None, 0, 0
+    result = identify_window(layout, signals, block[:, -1], rate, runout=runout, shape=shape, references=references)
+    values = window_values(result, layout) | {(BEARING, "invalid_share"): share}
+    added = int(store.add_window(stored, window, time, values, speed=result.speed))
+    # counted in the windows identified only: a rejected window's samples were not filled
+    return added, result, bad, signals.size
 
 
 def identify_recordings(
@@ -760,11 +582,53 @@ def identify_recordings(
         No recording, a bad recording (file, channels, sample rate, units, invalid samples)
         or a database that cannot be reached.
     """
-    from datetime import timedelta
-
     from shaftline.errors import Interrupted, interrupted_by_user
-    from shaftline.monitor.trends import _hide_password, section_trends
+    from shaftline.monitor.trends import _hide_password
 
+    _check_identify_plan(plan)
+    slow_roll = _plan_runout(layout, plan)
+    plans = _checked_recordings(layout, plan)
+    source = _runout_source(slow_roll, plan)
+    settings = [processing_settings(layout, plan, shape, source, c.sample_rate) for c in plans]
+    shown = _hide_password(TrendStore.url_of(plan.database))
+    done: list[IdentifiedRecording] = []
+    try:
+        opened = TrendStore(plan.database)
+    except InputError as error:
+        raise InputError("database", error.value, "", error.allowed, in_file=True) from None
+    with opened as store:
+        replaced = _settings_changed(store, plans, settings, shown, replace)
+        try:
+            for number, checked in enumerate(plans, 1):
+                label = f"{checked.recording.path.name} ({number}/{len(plans)})"
+                again = replaced[number - 1]
+                done.append(
+                    _identify_one(
+                        store, layout, plan, checked, settings[number - 1], again, slow_roll, shape, label, progress
+                    )  # fmt: skip
+                )
+        except (KeyboardInterrupt, SystemError) as stop:
+            # Ctrl-C inside the compiled orbit kernel arrives as a SystemError caused by it
+            if not interrupted_by_user(stop):
+                raise
+            raise Interrupted(
+                f"every window identified so far is kept in {shown}: run the same command again to resume"
+            ) from None
+    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration, slow_roll, plan.slow_roll_speed)
+
+
+def _named(error: InputError, name: str) -> InputError:
+    """``error`` of the file ``name`` named by the file, not placed under [monitor] (the file is
+    not the case)."""
+    file = Path(name).name
+    field = error.field if error.field.startswith(file) else f"{file}: {error.field}"
+    return InputError(field, error.value, error.unit, error.allowed, in_file=True)
+
+
+def _check_identify_plan(plan: IdentifyPlan) -> None:
+    """What of ``plan`` can be refused before any file is read: no recording, no speed for
+    recordings without a keyphasor, more than one source of runout, a runout without a
+    keyphasor (named as the case names them)."""
     if not plan.recordings:
         raise InputError(
             "RECORDING",
@@ -773,16 +637,8 @@ def identify_recordings(
             "one recording file or more (or recordings = [...] in [monitor.identify])",
             in_file=True,
         )
-
-    def named(error: InputError, name: str) -> InputError:
-        # named by the file, not placed under [monitor] (the file is not the case)
-        file = Path(name).name
-        field = error.field if error.field.startswith(file) else f"{file}: {error.field}"
-        return InputError(field, error.value, error.unit, error.allowed, in_file=True)
-
     speed = plan.speed
     if not plan.keyphasor and not (speed is not None and math.isfinite(speed) and speed > 0.0):
-        # checked here, before any file is read, and named as the case names it
         raise InputError(
             "identify.speed",
             "none" if speed is None else speed,
@@ -801,23 +657,22 @@ def identify_recordings(
             "",
             "recordings with a keyphasor (the runout is a function of shaft phase)",
         )
-    slow_roll = None
+
+
+def _plan_runout(layout: ProbeLayout, plan: IdentifyPlan) -> SlowRoll | None:
+    """The runout subtracted from every window: the slow-roll recording's or the case's table
+    (None: neither; with ``slow_roll_speed`` each recording gets its own later)."""
     if plan.slow_roll is not None:
         try:
-            slow_roll = slow_roll_runout(
-                layout,
-                plan.slow_roll,
-                plan.keyphasor,
-                plan.sample_rate,
-                plan.ignore_channels,
-                plan.max_invalid_share,
+            return slow_roll_runout(
+                layout, plan.slow_roll, plan.keyphasor, plan.sample_rate, plan.ignore_channels, plan.max_invalid_share
             )
         except InputError as error:
-            raise named(error, plan.slow_roll) from None
-    elif plan.runout is not None:
+            raise _named(error, plan.slow_roll) from None
+    if plan.runout is not None:
         if plan.runout.channels != layout.channels:
             raise InputError("identify.runout", ", ".join(plan.runout.channels), "", "the layout's probes, in order")
-        slow_roll = SlowRoll(
+        return SlowRoll(
             "runout table of the case",
             plan.runout.digest(),
             math.nan,
@@ -826,109 +681,109 @@ def identify_recordings(
             channels=layout.channels,
             source="table",
         )
+    return None
+
+
+def _checked_recordings(layout: ProbeLayout, plan: IdentifyPlan) -> list[RecordingPlan]:
+    """Every recording of ``plan`` checked (:func:`plan_recording`), each starting where the one
+    before ends when the plan gives the first one's start."""
     plans = []
     start = plan.start
     for name in plan.recordings:
         try:
             checked = plan_recording(
-                layout,
-                name,
-                plan.keyphasor,
-                plan.window,
-                plan.sample_rate,
-                start,
-                plan.ignore_channels,
-                plan.max_invalid_share,
-                plan.speed,
-            )
+                layout, name, plan.keyphasor, plan.window, plan.sample_rate, start, plan.ignore_channels,
+                plan.max_invalid_share, plan.speed,
+            )  # fmt: skip
         except InputError as error:
-            raise named(error, name) from None
+            raise _named(error, name) from None
         plans.append(checked)
         if start is not None:  # the next file follows this one
-            start = start + timedelta(seconds=checked.duration)
-    # the runout's source by content (a slow-roll file renamed or moved is the same slow roll)
+            start = start + dt.timedelta(seconds=checked.duration)
+    return plans
+
+
+def _runout_source(slow_roll: SlowRoll | None, plan: IdentifyPlan) -> str:
+    """The runout's source as the processing settings name it: by content (a slow-roll file
+    renamed or moved is the same slow roll)."""
     if slow_roll is not None:
-        key = f"{'slow-roll recording' if slow_roll.source == 'recording' else 'table'} sha256 {slow_roll.content_hash}"
-    elif plan.slow_roll_speed is not None:
-        key = f"slow windows below {plan.slow_roll_speed:.12g} rad/s"
-    else:
-        key = "none"
-    settings = [processing_settings(layout, plan, shape, key, c.sample_rate) for c in plans]
-    shown = _hide_password(TrendStore.url_of(plan.database))
-    done: list[IdentifiedRecording] = []
-    try:
-        opened = TrendStore(plan.database)
-    except InputError as error:
-        raise InputError("database", error.value, "", error.allowed, in_file=True) from None
-    with opened as store:
-        # every recording stored before with other settings is refused, or replaced, before anything is written
-        replaced = []
-        for checked, wanted in zip(plans, settings, strict=True):
-            stored = store.find(checked.recording.content_hash())
-            before = None if stored is None else store.settings(stored)
-            differ = sorted(k for k in wanted if before is not None and before.get(k) != wanted[k])
-            if differ and not replace:
-                file = checked.recording.path.name
-                raise InputError(
-                    f"{file}: settings",
-                    "; ".join(f"{k} {wanted[k]}" for k in differ),
-                    "",
-                    f"the settings its windows in {shown} were identified with ("
-                    + "; ".join(f"{k} {(before or {}).get(k, 'not recorded')}" for k in differ)
-                    + "); --replace identifies it again in place of its stored windows (other recordings are kept), "
-                    "or use another database",
-                    in_file=True,
-                )
-            replaced.append(bool(differ))
-        try:
-            for number, checked in enumerate(plans, 1):
-                label = f"{checked.recording.path.name} ({number}/{len(plans)})"
-                progress(Tally(label, 0, checked.windows, "windows"))
+        kind = "slow-roll recording" if slow_roll.source == "recording" else "table"
+        return f"{kind} sha256 {slow_roll.content_hash}"
+    if plan.slow_roll_speed is not None:
+        return f"slow windows below {plan.slow_roll_speed:.12g} rad/s"
+    return "none"
 
-                def told(windows: int, total: int, label: str = label) -> None:
-                    progress(Tally(label, windows, total, "windows"))
 
-                stored = store.recording(
-                    checked.recording.content_hash(),
-                    checked.recording.path.name,
-                    checked.recording.samples,
-                    checked.sample_rate,
-                    checked.started_at,
-                )
-                if replaced[number - 1] or store.settings(stored) is None:
-                    # (a recording stored before settings were kept takes this run's)
-                    store.keep_settings(stored, settings[number - 1], replace=replaced[number - 1])
-                    stored = replace_field(stored, complete=stored.complete and not replaced[number - 1])
-                runout = slow_roll
-                if plan.slow_roll_speed is not None:
-                    # per recording; not read again when nothing of it is left to identify
-                    runout = (
-                        None
-                        if stored.complete
-                        else slow_windows_runout(layout, checked, plan.slow_roll_speed, plan.max_invalid_share)
-                    )
-                processed = process_recording(
-                    layout,
-                    checked,
-                    store,
-                    plan.keyphasor,
-                    shape=shape,
-                    progress=told,
-                    max_invalid_share=plan.max_invalid_share,
-                    runout=None if runout is None else runout.profile,
-                )
-                trends = section_trends(
-                    store,
-                    plan.lambda_threshold,
-                    timedelta(seconds=plan.alarm_duration),
-                    recording=processed.recording,
-                )
-                done.append(IdentifiedRecording(checked, processed, trends, runout, replaced[number - 1]))
-        except (KeyboardInterrupt, SystemError) as stop:
-            # Ctrl-C inside the compiled orbit kernel arrives as a SystemError caused by it
-            if not interrupted_by_user(stop):
-                raise
-            raise Interrupted(
-                f"every window identified so far is kept in {shown}: run the same command again to resume"
-            ) from None
-    return Identified(shown, tuple(done), plan.lambda_threshold, plan.alarm_duration, slow_roll, plan.slow_roll_speed)
+def _settings_changed(
+    store: TrendStore, plans: list[RecordingPlan], settings: list[dict[str, str]], shown: str, replace: bool
+) -> list[bool]:
+    """Whether each recording was stored before with other settings: refused unless ``replace``,
+    all before anything is written."""
+    replaced = []
+    for checked, wanted in zip(plans, settings, strict=True):
+        stored = store.find(checked.recording.content_hash())
+        before = None if stored is None else store.settings(stored)
+        differ = sorted(k for k in wanted if before is not None and before.get(k) != wanted[k])
+        if differ and not replace:
+            file = checked.recording.path.name
+            raise InputError(
+                f"{file}: settings",
+                "; ".join(f"{k} {wanted[k]}" for k in differ),
+                "",
+                f"the settings its windows in {shown} were identified with ("
+                + "; ".join(f"{k} {(before or {}).get(k, 'not recorded')}" for k in differ)
+                + "); --replace identifies it again in place of its stored windows (other recordings are kept), "
+                "or use another database",
+                in_file=True,
+            )
+        replaced.append(bool(differ))
+    return replaced
+
+
+def _identify_one(
+    store: TrendStore,
+    layout: ProbeLayout,
+    plan: IdentifyPlan,
+    checked: RecordingPlan,
+    settings: dict[str, str],
+    replaced: bool,
+    slow_roll: SlowRoll | None,
+    shape: tuple[np.ndarray, np.ndarray] | None,
+    label: str,
+    progress: Progress,
+) -> IdentifiedRecording:
+    """One checked recording into the store (its stored windows first deleted when ``replaced``)
+    and its trends, with the progress tally of its windows under ``label``."""
+    from shaftline.monitor.trends import section_trends
+
+    progress(Tally(label, 0, checked.windows, "windows"))
+
+    def told(windows: int, total: int) -> None:
+        progress(Tally(label, windows, total, "windows"))
+
+    recording = checked.recording
+    stored = store.recording(
+        recording.content_hash(), recording.path.name, recording.samples, checked.sample_rate, checked.started_at
+    )
+    if replaced or store.settings(stored) is None:
+        # (a recording stored before settings were kept takes this run's)
+        store.keep_settings(stored, settings, replace=replaced)
+        stored = replace_field(stored, complete=stored.complete and not replaced)
+    runout = slow_roll
+    if plan.slow_roll_speed is not None:
+        # per recording; not read again when nothing of it is left to identify
+        below, share = plan.slow_roll_speed, plan.max_invalid_share
+        runout = None if stored.complete else slow_windows_runout(layout, checked, below, share)
+    processed = process_recording(
+        layout,
+        checked,
+        store,
+        plan.keyphasor,
+        shape=shape,
+        progress=told,
+        max_invalid_share=plan.max_invalid_share,
+        runout=None if runout is None else runout.profile,
+    )
+    duration = dt.timedelta(seconds=plan.alarm_duration)
+    trends = section_trends(store, plan.lambda_threshold, duration, recording=processed.recording)
+    return IdentifiedRecording(checked, processed, trends, runout, replaced)

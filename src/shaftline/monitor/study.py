@@ -39,7 +39,7 @@ from shaftline.monitor.probes import ProbeLayout
 from shaftline.monitor.regimes import RegimeLengths, regime_lengths
 
 if TYPE_CHECKING:
-    from shaftline.monitor.processing import Identified
+    from shaftline.monitor.identified import Identified
 
 #: Stations along the bearing for h_min and the regime lengths.
 STATIONS = 121

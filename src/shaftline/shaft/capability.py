@@ -6,9 +6,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-
-from shaftline.commandline import strict_help
+from shaftline.helptext import strict_help
 from shaftline.registry import BuildContext, Capability, Finding, Progress, Verb, no_progress
 from shaftline.report.blocks import Block, Details, Figure, Heading, Paragraph, Table, fmt
 from shaftline.shaft.presentation import (
@@ -347,7 +345,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
     def findings(self, result: AlignmentResult) -> list[Finding]:
         out = []
         lift = result.lift_off
-        if lift is not None and np.isnan(lift.speed):
+        if lift is not None and math.isnan(lift.speed):
             out.append(
                 Finding(
                     f"a film bearing is below the film limit of {lift.limit * 1e6:.2f} µm at the operating speed: "
@@ -454,7 +452,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         if film.coefficients_note:
             return Paragraph(f"Film stiffness and damping, {film.name}, {condition}: {film.coefficients_note}.", "warn")
         labels = ["y", "z", "tilt_y", "tilt_z"]
-        scales = np.array([1e-6, 1e-6, 1e-6, 1e-6])  # MN/m, MN/rad, MN m/m, MN m/rad
+        scales = (1e-6, 1e-6, 1e-6, 1e-6)  # MN/m, MN/rad, MN m/m, MN m/rad
         rows = []
         for i, row in enumerate(("F_y", "F_z", "M_y", "M_z")):
             rows.append(
