@@ -77,8 +77,8 @@ def operator_matrix(stencil, fixed: np.ndarray, cavitated: np.ndarray, free_only
 def unit_timers(bearing: JournalBearing, position) -> tuple[dict[str, Any], int]:
     """Timers of one factorisation + solve of the converged active set's matrix (the unit and
     its two variants), and the free nodes."""
-    evaluation = bearing._evaluate(position, warm=False)
-    fixed = bearing._solver_state().reynolds.fixed
+    evaluation = bearing.solver.evaluate(position, warm=False)
+    fixed = bearing.solver.nodes.fixed
     cavitated = evaluation.solution.cavitated
     free = operator_matrix(evaluation.stencil, fixed, cavitated, free_only=True)
     full = operator_matrix(evaluation.stencil, fixed, cavitated, free_only=False)
@@ -110,18 +110,21 @@ def paired_ratios(timers: dict[str, Any], subjects: dict[str, Any], rounds: int)
 
 
 class FactorCounter:
-    """Counts qdldl factorisations (new solvers and numeric updates) by wrapping qdldl.Solver."""
+    """Counts qdldl factorisations (new solvers and numeric updates) with their sizes, by
+    wrapping ``qdldl.Solver`` (the solver's own counter has no sizes: this one tells the fine
+    grid's factorisations from the coarse ones')."""
 
     def __init__(self) -> None:
         self.count = 0
         self.sizes: list[int] = []
-        counter = self
+        self._original = qdldl.Solver
+        counter, original = self, self._original
 
         class Solver:
             def __init__(self, matrix, *args, **kwargs):
                 counter.count += 1
                 counter.sizes.append(matrix.shape[0])
-                self._inner = qdldl.Solver(matrix, *args, **kwargs)
+                self._inner = original(matrix, *args, **kwargs)
 
             def update(self, matrix, *args, **kwargs):
                 counter.count += 1
@@ -134,15 +137,11 @@ class FactorCounter:
         self.solver = Solver
 
     def __enter__(self) -> FactorCounter:
-        import shaftline.film.reynolds as reynolds
-
-        self._module = reynolds
-        self._saved = reynolds.qdldl
-        reynolds.qdldl = type("qdldl_counting", (), {"Solver": self.solver})  # type: ignore[assignment]
+        qdldl.Solver = self.solver  # the film imports qdldl where it first factorises
         return self
 
     def __exit__(self, *exc) -> None:
-        self._module.qdldl = self._saved
+        qdldl.Solver = self._original
 
 
 def ntua_case():

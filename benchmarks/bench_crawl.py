@@ -1,9 +1,9 @@
-"""Time saved by the crawl rule of a rigid rough bore (issue 15, docs/theory.md Sect. 17, "The stall
+"""Time saved by the crawl rule of a rigid rough bore (docs/theory.md Sect. 17, "The stall
 rule and crawling Newton steps").
 
 Run ``PYTHONPATH=src .venv/bin/python benchmarks/bench_crawl.py [--repeat N]``. The NTUA rough curve's
 12.36 rpm (benchmarks/bench_mixed.py: examples/ntua_stern_tube.toml, 100 x 60, psi 0.3, turned steel
-on white metal, rigid) from a cold start, with the crawl rule and without it (``CRAWL_ITERATIONS``
+on white metal, rigid) from a cold start, with the crawl rule and without it (``NewtonOptions.crawl_iterations``
 set out of reach: the iteration as before the rule), alternated run by run in one process; medians,
 the ratio, iterations and the final status of each.
 """
@@ -17,7 +17,6 @@ from pathlib import Path
 
 import numpy as np
 
-import shaftline.film.bearing as bearing_module
 from shaftline.cases import load_case
 from shaftline.film import JournalBearing
 from shaftline.film.roughness import SurfaceRoughness, gaussian_integral_table
@@ -33,17 +32,16 @@ def main() -> None:
     case = study.cases[0]
     geometry = replace(case.geometry, surface=SurfaceRoughness.preset("turned_steel_white_metal"))
     operating = replace(case.operating, speed=study.stribeck_speeds[2])
-    rule = bearing_module.CRAWL_ITERATIONS
+    rule = case.options.newton.crawl_iterations
     times: dict[str, list[float]] = {"with the crawl rule": [], "without": []}
     results = {}
     for _ in range(repeat):
         for name, crawl in (("with the crawl rule", rule), ("without", 10**9)):
-            bearing_module.CRAWL_ITERATIONS = crawl
-            bearing = JournalBearing(geometry, operating, case.options)
+            options = replace(case.options, newton=replace(case.options.newton, crawl_iterations=crawl))
+            bearing = JournalBearing(geometry, operating, options)
             start = time.perf_counter()
             results[name] = bearing.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
             times[name].append(time.perf_counter() - start)
-    bearing_module.CRAWL_ITERATIONS = rule
     print(f"NTUA rough, rigid, {operating.speed * 30 / np.pi:.2f} rpm, cold start, {repeat} runs each, alternated")
     reference = float(np.median(times["without"]))
     for name, spent in times.items():

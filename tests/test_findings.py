@@ -63,13 +63,13 @@ def test_an_optimiser_on_its_bound_says_so(tmp_path):
 
 def test_a_solver_failure_is_one_line_and_exit_3(tmp_path, monkeypatch):
     """A numerical method that does not settle on accepted inputs: one line, exit 3, no output."""
-    import shaftline.film.study as study
-    from shaftline.film.reynolds import ReynoldsConvergenceError
+    import shaftline.film.solve as solve
+    from shaftline.film.cavitation import CavitationConvergenceError
 
     def fails(*args, **kwargs):
-        raise ReynoldsConvergenceError("Reynolds-condition active set did not settle")
+        raise CavitationConvergenceError("Reynolds-condition active set did not settle")
 
-    monkeypatch.setattr(study, "solve_case", fails)
+    monkeypatch.setattr(solve, "solve_case", fails)
     case = tmp_path / "case.toml"
     case.write_text(MINIMAL_CASE)
     result = invoke("run", str(case), "--out", str(tmp_path / "out"))

@@ -19,13 +19,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from shaftline.errors import InputError, require_finite
 from shaftline.film.geometry import BearingGeometry, Grid, JournalPosition
-from shaftline.film.lined import LinerConvergenceError
+from shaftline.film.lined import LinerConvergenceError, film_solver, sharing_solver
 from shaftline.film.problem import BearingProblem, OperatingPoint, SolverOptions, SupplyGroove
 from shaftline.film.results import (
     BearingState,
@@ -34,7 +34,11 @@ from shaftline.film.results import (
     FilmLoad,
     TiltLinearisation,
 )
-from shaftline.film.solver import FilmSolver, film_solver
+from shaftline.film.solver import FilmSolver
+
+if TYPE_CHECKING:
+    from shaftline.film.cavitation import SolverCounts
+    from shaftline.film.equilibrium.newton import Found
 
 __all__ = [
     # Problem data and results, defined in their modules and re-exported here.
@@ -128,7 +132,7 @@ class JournalBearing:
                 )
         other = JournalBearing.from_problem(replace(self._problem, geometry=geometry))
         if self._solver is not None:
-            other._solver = self._solver.sharing(other._problem)
+            other._solver = sharing_solver(self._solver, other._problem)
         return other
 
     # -- the problem: read-only, since the solver is built from it ------------------------
@@ -388,7 +392,9 @@ class JournalBearing:
         position, geometry = centre_line(self.geometry, solver.grid.z, centre_y, centre_z)
         return float(solver.with_last_deformation(solver.film(position, geometry)).min())
 
-    def initial_position(self, load_y: float, load_z: float, tilt_y: float = 0.0, tilt_z: float = 0.0) -> JournalPosition:
+    def initial_position(
+        self, load_y: float, load_z: float, tilt_y: float = 0.0, tilt_z: float = 0.0
+    ) -> JournalPosition:
         """The closed-form start of an equilibrium under ``(load_y, load_z)`` (N) with the tilts
         (rad): :func:`~shaftline.film.equilibrium.starts.initial_position`."""
         from shaftline.film.equilibrium import initial_position
@@ -459,19 +465,21 @@ class JournalBearing:
             ``"initial_deformation"`` for one that is not finite or not on the grid.
         """
         from shaftline.film.equilibrium import find_equilibrium
-        from shaftline.film.state import bearing_state
 
-        load_y = require_finite("load_y", load_y, "N")
-        load_z = require_finite("load_z", load_z, "N")
-        require_finite("tilt_y", tilt_y, "rad")
-        require_finite("tilt_z", tilt_z, "rad")
-        load = np.array([load_y, load_z])
-        if float(np.hypot(*load)) == 0.0:
-            raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
+        load = _checked_load(load_y, load_z, tilt_y, tilt_z)
         deformation = self._initial_deformation(initial_deformation)
         solver = self.solver
         before = solver.counts.copy()
         found = find_equilibrium(solver, load, tilt_y, tilt_z, initial, progress, initial_cavitated, deformation)
+        return self._equilibrium(found, load, before)
+
+    def _equilibrium(self, found: Found, load: np.ndarray, before: SolverCounts) -> Equilibrium:
+        """The result of the Newton driver's ``found`` under ``load`` (N), with the work it took
+        since the counts were ``before``: a start that did not converge with the film at its
+        floor is contact."""
+        from shaftline.film.state import bearing_state
+
+        solver = self.solver
         state = bearing_state(solver, found.solution, load=load)
         contact = found.contact
         margin = self.options.newton.floor_margin
@@ -481,8 +489,8 @@ class JournalBearing:
             state = replace(state, contact=True)
         return Equilibrium(
             state,
-            load_y,
-            load_z,
+            float(load[0]),
+            float(load[1]),
             found.converged,
             contact,
             found.iterations,
@@ -506,3 +514,13 @@ class JournalBearing:
                 f"finite values on the bearing's grid, shape {shape}",
             )
         return deformation
+
+
+def _checked_load(load_y: float, load_z: float, tilt_y: float, tilt_z: float) -> np.ndarray:
+    """The load (N, (2,)) of an equilibrium, its four inputs checked finite and the load not zero."""
+    load = np.array([require_finite("load_y", load_y, "N"), require_finite("load_z", load_z, "N")])
+    require_finite("tilt_y", tilt_y, "rad")
+    require_finite("tilt_z", tilt_z, "rad")
+    if float(np.hypot(*load)) == 0.0:
+        raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
+    return load

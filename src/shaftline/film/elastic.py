@@ -490,7 +490,7 @@ class LayerSystem:
         scale: float,
         clearance: float,
         orderings: CoupledOrderings | None = None,
-        options: LinerOptions = LinerOptions(),
+        options: LinerOptions | None = None,
     ) -> LayerSystem:
         """Assemble the operator and factorise the preconditioner for the film ``film``
         (dimensionless) with the ``held`` nodes out; ``slope`` = ``dp_a/dh`` (Pa/m);
@@ -512,7 +512,7 @@ class LayerSystem:
         )
         free = column.free
         operator = film_operator(stencil)[free][:, free].tocsr()
-        return cls(column, operator, layer, slope.ravel(), scale, clearance, options)
+        return cls(column, operator, layer, slope.ravel(), scale, clearance, options or LinerOptions())
 
     @property
     def free(self) -> np.ndarray:

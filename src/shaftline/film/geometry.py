@@ -390,7 +390,9 @@ class JournalPosition:
         Velocities of the journal centre, m/s (squeeze film; zero at steady state).
     """
 
-    ey: float = quantity("m", "vertical offset of the journal centre at mid-plane from the nominal bore axis", default=0.0)
+    ey: float = quantity(
+        "m", "vertical offset of the journal centre at mid-plane from the nominal bore axis", default=0.0
+    )
     ez: float = quantity("m", "horizontal (starboard) offset of the journal centre at mid-plane", default=0.0)
     tilt_y: float = quantity("rad", "journal tilt in the vertical plane (dy/dx)", default=0.0)
     tilt_z: float = quantity("rad", "journal tilt in the horizontal plane (dz/dx)", default=0.0)

@@ -126,7 +126,9 @@ def line_solution(
     try:
         return solver.evaluate(position, start, warm=warm_start, geometry=geometry)
     except NegativeFilm as exc:
-        raise InputError("centre_y", f"hmin {exc.value:.3g}", "m", "a journal centre line inside the clearance") from None
+        raise InputError(
+            "centre_y", f"hmin {exc.value:.3g}", "m", "a journal centre line inside the clearance"
+        ) from None
 
 
 def film_load(

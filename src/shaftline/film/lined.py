@@ -22,7 +22,7 @@ from shaftline.film.problem import BearingProblem
 from shaftline.film.solver import Direction, FilmSolution, FilmSolver, _Found
 from shaftline.film.stencil import build_stencil
 
-__all__ = ["LinedFilmSolver", "LinerConvergenceError"]
+__all__ = ["LinedFilmSolver", "LinerConvergenceError", "film_solver", "sharing_solver"]
 
 
 class LinerConvergenceError(SolverFailure):
@@ -378,3 +378,17 @@ class _LinerIteration:
         if alpha < 1e-6:
             raise LinerConvergenceError(norm, evaluation)
         return trial[0], trial[1], trial[2], alpha
+
+
+def film_solver(problem: BearingProblem, counts: SolverCounts | None = None) -> FilmSolver:
+    """The solver of ``problem``: :class:`~shaftline.film.solver.FilmSolver` for a rigid bore,
+    :class:`LinedFilmSolver` for a bearing with an elastic liner."""
+    if problem.geometry.liner is not None:
+        return LinedFilmSolver(problem, counts)
+    return FilmSolver(problem, counts)
+
+
+def sharing_solver(solver: FilmSolver, problem: BearingProblem) -> FilmSolver:
+    """The solver of ``problem`` sharing ``solver``'s grid, cavitation model and counters
+    (:meth:`FilmSolver.sharing`): lined where ``problem``'s bore has an elastic liner."""
+    return solver.sharing(problem, LinedFilmSolver if problem.geometry.liner is not None else FilmSolver)

@@ -517,7 +517,9 @@ class BearingProblem:
             # The film-liner Newton matrix is built on the Reynolds condition's frozen set
             # (film/elastic.py); the other models' linearisations are not coupled to a liner.
             able = " or ".join(name for name, kind in CAVITATION_MODELS.items() if kind.liners)
-            raise InputError("options.cavitation", self.options.cavitation, "", f"{able} with an elastic liner (geometry.liner)")
+            raise InputError(
+                "options.cavitation", self.options.cavitation, "", f"{able} with an elastic liner (geometry.liner)"
+            )
         if model.needs_feed_pressure and self.operating.feed_pressure <= self.operating.cavitation_pressure:
             raise InputError(
                 "operating.cavitation_pressure",

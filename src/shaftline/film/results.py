@@ -227,10 +227,23 @@ class BearingState:
         ``options.turbulence`` on or auto; None when off).
     """
 
+    # The fields: the written ones (quantity, part) after those kept only in memory.
+    theta: np.ndarray = field(repr=False)
+    z: np.ndarray = field(repr=False)
+    film: np.ndarray = field(repr=False)
+    pressure: np.ndarray = field(repr=False)
+    film_fraction: np.ndarray = field(repr=False)
+    circumferential_flow: np.ndarray = field(repr=False)
+    edge_leakage: np.ndarray = field(repr=False)
+    cavitation: str
+    cavitated: np.ndarray = field(repr=False)
+    iterations: int
     eccentricity_ratio: float = quantity(
         "-", "journal eccentricity from the bore centre at mid-plane / radial clearance"
     )
-    attitude_angle: float = quantity("rad", "load line to line of centres, positive in the sense of rotation", degrees=True)
+    attitude_angle: float = quantity(
+        "rad", "load line to line of centres, positive in the sense of rotation", degrees=True
+    )
     position_angle: float = quantity(
         "rad", "bearing angle of the line of centres (from top, in the sense of rotation)", degrees=True
     )
@@ -256,16 +269,6 @@ class BearingState:
     side_leakage: float = quantity("m^3/s", "net flow out through both bearing edges")
     sommerfeld_number: float = quantity("-", "(R/c)^2 eta N / P, N in rev/s")
     contact: bool = quantity("-", _CONTACT)
-    theta: np.ndarray = field(repr=False)
-    z: np.ndarray = field(repr=False)
-    film: np.ndarray = field(repr=False)
-    pressure: np.ndarray = field(repr=False)
-    film_fraction: np.ndarray = field(repr=False)
-    circumferential_flow: np.ndarray = field(repr=False)
-    edge_leakage: np.ndarray = field(repr=False)
-    cavitation: str
-    cavitated: np.ndarray = field(repr=False)
-    iterations: int
     rough: RoughContact | None = part(RoughContact, default=None)
     liner: LinerState | None = part(LinerState, default=None)
     turbulence: TurbulenceState | None = part(TurbulenceState, default=None)
@@ -294,7 +297,9 @@ class BearingState:
         """The unit of every key of :meth:`to_dict` (with ``rough``, ``liner``, ``turbulence`` the
         keys of those parts too)."""
         present = (rough, liner, turbulence)
-        parts = [kind for kind, there in zip((RoughContact, LinerState, TurbulenceState), present, strict=True) if there]
+        parts = [
+            kind for kind, there in zip((RoughContact, LinerState, TurbulenceState), present, strict=True) if there
+        ]
         return export.units(BearingState, (JournalPosition, *parts))
 
 

@@ -29,7 +29,6 @@ one within that tolerance, and is bit for bit the same on any backend and worker
 each chunk is the same sequence of operations on a fresh bearing wherever it runs.
 """
 
-
 from __future__ import annotations
 
 import functools
@@ -285,6 +284,14 @@ def sweep(
         progress=None if local else told,
         work_here=True,  # a chunk's answer is the same wherever it is solved
     )
+    return _in_case_order(cases, chunks, solved)
+
+
+def _in_case_order(
+    cases: list[BearingCase], chunks: list[tuple[list[int], _Chunk]], solved: Sequence[Sequence[BearingResult]]
+) -> list[BearingResult]:
+    """The chunks' results in the order of ``cases``, each with its own case (a chunk solved in
+    another process holds a copy)."""
     results: list[BearingResult | None] = [None] * len(cases)
     for (part, _), chunk_results in zip(chunks, solved, strict=True):
         for index, result in zip(part, chunk_results, strict=True):

@@ -31,7 +31,7 @@ if TYPE_CHECKING:
     from shaftline.film.elastic import CoupledLiner
     from shaftline.film.problem import SolverOptions
 
-__all__ = ["FilmSolution", "FilmSolver", "NegativeFilm", "film_solver"]
+__all__ = ["FilmSolution", "FilmSolver", "NegativeFilm"]
 
 
 class NegativeFilm(Exception):
@@ -129,7 +129,7 @@ Direction = tuple[np.ndarray, np.ndarray | None]
 
 
 class FilmSolver:
-    """The solver of one film problem in one process (a rigid bore; :func:`film_solver` picks
+    """The solver of one film problem in one process (a rigid bore; :func:`~shaftline.film.lined.film_solver` picks
     the lined one for a bearing with an elastic liner).
 
     Parameters
@@ -249,13 +249,13 @@ class FilmSolver:
         relative = (value - op.cavitation_pressure) / problem.pressure_scale
         return NodeGrid.of(grid.shape, self.d_theta, self.d_z, fixed, relative)
 
-    def sharing(self, problem: BearingProblem) -> FilmSolver:
-        """A solver of ``problem`` (this one's with another bore or journal shape) that shares this
-        one's grid, fixed nodes, cavitation model and counters; the model's kept factors are
-        dropped so that its results do not depend on what this one solved before."""
-        from shaftline.film.lined import LinedFilmSolver  # lined builds on this module
-
-        kind = LinedFilmSolver if problem.geometry.liner is not None else FilmSolver
+    def sharing(self, problem: BearingProblem, kind: type[FilmSolver] | None = None) -> FilmSolver:
+        """A solver of ``problem`` (this one's with another bore or journal shape), of class
+        ``kind`` (default this one's), that shares this one's grid, fixed nodes, cavitation model
+        and counters; the model's kept factors are dropped so that its results do not depend on
+        what this one solved before. :func:`~shaftline.film.lined.sharing_solver` picks ``kind``
+        from the bore."""
+        kind = type(self) if kind is None else kind
         other = kind.__new__(kind)
         other.__dict__.update(self.__dict__)
         other.problem = problem
@@ -423,7 +423,9 @@ class FilmSolver:
         solution = self.cavitation.solve(found.stencil, film_nd, start, refine_from=refine_from, settle=settle)
         contact = self.surfaces.contact(found.film)
         relative, force = self._solved(solution, found.grid, contact)
-        return FilmSolution(found.position, found.grid, found.film, found.stencil, solution, relative, force, found.rate, contact)
+        return FilmSolution(
+            found.position, found.grid, found.film, found.stencil, solution, relative, force, found.rate, contact
+        )
 
     def _solved(
         self, solution: CavitationSolution, grid: Grid, contact: np.ndarray | None
@@ -594,13 +596,3 @@ class FilmSolver:
     def liner_tolerance(self, solution: FilmSolution, share: float) -> float:
         """Liner tolerance that leaves a force error of about ``share`` of the force (0: no liner)."""
         return 0.0
-
-
-def film_solver(problem: BearingProblem, counts: SolverCounts | None = None) -> FilmSolver:
-    """The solver of ``problem``: :class:`FilmSolver` for a rigid bore, the lined one
-    (:class:`~shaftline.film.lined.LinedFilmSolver`) for a bearing with an elastic liner."""
-    if problem.geometry.liner is not None:
-        from shaftline.film.lined import LinedFilmSolver
-
-        return LinedFilmSolver(problem, counts)
-    return FilmSolver(problem, counts)

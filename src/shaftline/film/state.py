@@ -19,6 +19,25 @@ from shaftline.film.turbulence import couette_shear_factor
 __all__ = ["bearing_state"]
 
 
+def _attitude_angle(
+    rotation: int, eccentricity: float, angle: float, force: tuple[float, float], load: np.ndarray | None
+) -> float:
+    """Angle (rad) from the load line to the line of centres at ``angle``, in the sense of
+    rotation; the load line is ``load``'s, or without a load the line opposite the film
+    ``force`` (what the film carries). Zero for a centred journal."""
+    fy, fz = force
+    if load is None:
+        load_angle = float(np.arctan2(-rotation * fz, -fy))
+    else:
+        load_angle = float(np.arctan2(rotation * load[1], load[0]))
+    return float((angle - load_angle + np.pi) % (2 * np.pi) - np.pi) if eccentricity > 0 else 0.0
+
+
+def _sommerfeld_number(radius_ratio: float, viscosity: float, speed: float, mean_pressure: float) -> float:
+    """``(R/c)^2 eta N / P`` with ``N`` in rev/s (``speed`` in rad/s); infinite without load."""
+    return radius_ratio**2 * viscosity * (speed / (2 * np.pi)) / mean_pressure if mean_pressure > 0 else math.inf
+
+
 def bearing_state(solver: FilmSolver, solution: FilmSolution, load: np.ndarray | None = None) -> BearingState:
     """The :class:`BearingState` of ``solution``; ``load`` (2,), N, is the applied load whose
     line the attitude angle is measured from (without it: the line opposite the film force)."""
@@ -30,12 +49,7 @@ def bearing_state(solver: FilmSolver, solution: FilmSolution, load: np.ndarray |
     fy, fz = (float(v) for v in solution.force)
     capacity = float(np.hypot(fy, fz))
     e, angle = solver.local_polar(solution.position)
-    # Load line = opposite to the film force (what the film carries).
-    if load is None:
-        load_angle = float(np.arctan2(-g.rotation * fz, -fy))
-    else:
-        load_angle = float(np.arctan2(g.rotation * load[1], load[0]))
-    attitude = float((angle - load_angle + np.pi) % (2 * np.pi) - np.pi) if e > 0 else 0.0
+    attitude = _attitude_angle(g.rotation, e, angle, (fy, fz), load)
     # Extremes between nodes (docs/theory.md): the film is smooth everywhere; the pressure
     # only on free nodes (fixed-pressure and cavitated values are not samples of it).
     thinnest = local_extreme(film)
@@ -50,11 +64,7 @@ def bearing_state(solver: FilmSolver, solution: FilmSolution, load: np.ndarray |
     circumferential, edge, inlet = _flows(solver, solution)
     mean_pressure = capacity / (g.length * g.diameter)
     op = solver.problem.operating
-    sommerfeld = (
-        (g.radius / g.radial_clearance) ** 2 * op.viscosity * (op.speed / (2 * np.pi)) / mean_pressure
-        if mean_pressure > 0
-        else math.inf
-    )
+    sommerfeld = _sommerfeld_number(g.radius / g.radial_clearance, op.viscosity, op.speed, mean_pressure)
     hmin = float(thinnest.value)
     area = 2.0 * math.pi * g.radius * g.length
     rough = solver.surfaces.contact_part(

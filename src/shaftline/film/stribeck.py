@@ -117,7 +117,9 @@ class StribeckCurve:
     friction_coefficient: np.ndarray = quantity(
         "-", "friction force / load at each speed (the Stribeck curve)", convert=_numbers
     )
-    asperity_load_share: np.ndarray = quantity("-", "share of the load on the asperities at each speed", convert=_numbers)
+    asperity_load_share: np.ndarray = quantity(
+        "-", "share of the load on the asperities at each speed", convert=_numbers
+    )
     min_film_thickness: np.ndarray = quantity("m", "h_min at each speed", convert=_numbers)
     min_film_ratio: np.ndarray = quantity(
         "-", "h_min / sigma at each speed (null for smooth surfaces)", convert=_numbers

@@ -152,9 +152,9 @@ class BearingStudyResult:
 
     def units(self) -> dict[str, str]:
         """The unit of every key of a case's :meth:`BearingResult.to_dict` in this study."""
+        from shaftline.export import units
         from shaftline.film.dynamics import DynamicCoefficients
         from shaftline.film.results import BearingState, Equilibrium
-        from shaftline.export import units
 
         runs = self.cases
         rough = any(run.case.geometry.surface is not None for run in runs)

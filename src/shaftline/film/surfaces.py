@@ -124,7 +124,7 @@ class SmoothSurfaces:
     rough = False
     sigma = 0.0
     film_limit = 0.0
-    flow = None
+    flow: RoughFilm | None = None
 
     def __init__(self, clearance: float, min_film_floor: float) -> None:
         self.clearance = clearance

@@ -62,9 +62,7 @@ class CoarseGrid(Generic[_Model]):
     col_hi: np.ndarray
 
     @classmethod
-    def under(
-        cls, fine: NodeGrid, shape: tuple[int, int], make: Callable[[NodeGrid], _Model]
-    ) -> CoarseGrid[_Model]:
+    def under(cls, fine: NodeGrid, shape: tuple[int, int], make: Callable[[NodeGrid], _Model]) -> CoarseGrid[_Model]:
         """The coarse grid of ``shape`` under ``fine`` with the model ``make(coarse nodes)``."""
         nz, nt = fine.shape
         nz_c, nt_c = shape

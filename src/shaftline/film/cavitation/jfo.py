@@ -27,7 +27,6 @@ factor rebuilt for an older solution) lives on the :class:`MassConserving` objec
 which the film solver builds in each process.
 """
 
-
 from __future__ import annotations
 
 import weakref
@@ -128,7 +127,8 @@ def jfo_residual(stencil: Stencil, pressure: np.ndarray, void: np.ndarray, fixed
 
 
 def _jacobian_values(stencil: Stencil, cavitated: np.ndarray, fixed: np.ndarray, diag: np.ndarray) -> np.ndarray:
-    """``dR/du`` on the set ``cavitated``: values in the fixed CSC pattern of :func:`~shaftline.film.stencil.full_pattern`."""
+    """``dR/du`` on the set ``cavitated``: values in the fixed CSC pattern of
+    :func:`~shaftline.film.stencil.full_pattern`."""
     pattern = full_pattern(*fixed.shape)
     cav = cavitated.ravel()
     held = fixed.ravel()

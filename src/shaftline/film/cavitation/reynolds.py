@@ -536,9 +536,7 @@ class ReynoldsCondition:
             cavitated = (cavitated & ~leave) | enter
         raise CavitationConvergenceError("Reynolds-condition active set did not settle")
 
-    def pressure_response(
-        self, stencil: Stencil, solution: CavitationSolution, rhs_change: np.ndarray
-    ) -> np.ndarray:
+    def pressure_response(self, stencil: Stencil, solution: CavitationSolution, rhs_change: np.ndarray) -> np.ndarray:
         """Pressure change ``dP`` for a residual change ``dR`` with the active set frozen.
 
         Solves ``A_free dP = -dR`` on the pressurised free nodes, reusing the

@@ -213,9 +213,7 @@ class _Newton:
         except LinerConvergenceError:
             return None
 
-    def _step(
-        self, solution: FilmSolution, residual: np.ndarray, norm: float, required: float
-    ) -> FilmSolution | None:
+    def _step(self, solution: FilmSolution, residual: np.ndarray, norm: float, required: float) -> FilmSolution | None:
         """The next iterate: the first candidate step whose line search lowers the residual."""
         solver, magnitude = self.solver, self.magnitude
         newton = solver.options.newton

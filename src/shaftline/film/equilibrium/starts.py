@@ -24,9 +24,9 @@ from shaftline.film.geometry import (
     JournalPosition,
     coarse_shape,
 )
-from shaftline.film.lined import LinerConvergenceError
+from shaftline.film.lined import LinerConvergenceError, film_solver
 from shaftline.film.problem import BearingProblem, OperatingPoint
-from shaftline.film.solver import FilmSolution, FilmSolver, film_solver
+from shaftline.film.solver import FilmSolution, FilmSolver
 
 if TYPE_CHECKING:
     from shaftline.film.equilibrium.newton import Found
@@ -42,7 +42,8 @@ __all__ = [
     "start_solution",
 ]
 
-#: The equilibrium of a solver under a load (N, (2,)) with tilts (rad): :func:`~shaftline.film.equilibrium.newton.find_equilibrium`.
+#: The equilibrium of a solver under a load (N, (2,)) with tilts (rad):
+#: :func:`~shaftline.film.equilibrium.newton.find_equilibrium`.
 Finder = Callable[[FilmSolver, np.ndarray, float, float], "Found"]
 
 
