@@ -20,7 +20,8 @@ from matplotlib.figure import Figure
 
 from shaftline.errors import InputError
 from shaftline.shaft.coupled import CoupledAlignment
-from shaftline.shaft.lift_off import FilmLimit, _at_speed, lift_off_curve, minimum_speed
+from shaftline.shaft.figures import lift_off_curve
+from shaftline.shaft.lift_off import FilmLimit, _at_speed, minimum_speed
 from shaftline.shaft.ntua import ntua_shaft_line
 
 GRID = (41, 30)

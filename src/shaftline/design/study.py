@@ -20,7 +20,7 @@ from shaftline.film.bearing import BearingState
 from shaftline.film.geometry import BentJournal, BoreSegment
 from shaftline.lubricants import Lubricant
 from shaftline.registry import Progress, Tally
-from shaftline.shaft.coupled import CoupledResult, CouplingOptions, FilmSupport
+from shaftline.shaft.film_supports import CoupledResult, CouplingOptions, FilmSupport
 from shaftline.shaft.model import Condition, ShaftLine
 
 if TYPE_CHECKING:

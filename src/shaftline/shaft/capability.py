@@ -526,7 +526,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
         if result.coupled is not None:
             blocks += self._film_report(result)
         if result.lift_off is not None:
-            from shaftline.shaft.lift_off import lift_off_curve
+            from shaftline.shaft.figures import lift_off_curve
 
             blocks += [
                 Heading("Minimum speed for hydrodynamic operation"),

@@ -73,7 +73,7 @@ from shaftline.shaft.case_ranges import (
     X,
 )
 from shaftline.shaft.case_supports import Material, SupportModel, SupportPosition, SupportSection
-from shaftline.shaft.coupled import CouplingOptions
+from shaftline.shaft.film_supports import CouplingOptions
 from shaftline.shaft.lift_off import FilmLimit
 from shaftline.shaft.model import Bearing, Condition, DistributedLoad, PointMass, Propeller, ShaftLine, ShaftSegment
 

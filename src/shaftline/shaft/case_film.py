@@ -31,7 +31,7 @@ from shaftline.film.case import (
 )
 from shaftline.film.geometry import BearingGeometry, BoreAnchor
 from shaftline.film.problem import OperatingPoint
-from shaftline.shaft.coupled import CouplingOptions, FilmSupport
+from shaftline.shaft.film_supports import CouplingOptions, FilmSupport
 from shaftline.shaft.lift_off import FilmLimit
 from shaftline.shaft.model import ShaftLine
 

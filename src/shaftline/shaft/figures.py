@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from shaftline.shaft.alignment import ConditionResult, InfluenceMatrix
     from shaftline.shaft.coupled import CoupledResult, FilmBearingResult
     from shaftline.shaft.jackup import JackUpCurve, JackUpFit
+    from shaftline.shaft.lift_off import LiftOffResult
     from shaftline.shaft.model import ShaftLine
 
 
@@ -199,4 +200,28 @@ def point_vs_film(coupled: CoupledResult, *, ax: Any) -> Any:
         axes.set_ylabel(label)
     left.set_title(f"Point supports vs film supports: {plain(coupled.condition.name)}")
     left.legend(fontsize=8)
+    return ax
+
+
+@figure_function(size=(8.0, 4.5))
+def lift_off_curve(result: LiftOffResult, *, ax: Any) -> Any:
+    """Smallest film against shaft speed per film bearing (the lift-off curve), with the
+    limit and the minimum speed; contact (the film at its floor) as open markers."""
+    rpm = result.speeds * 30.0 / math.pi
+    for k, name in enumerate(result.names):
+        color = f"C{k}"
+        hmin = result.min_film[k] * 1e6
+        ax.plot(rpm, hmin, color=color, marker=".", label=plain(name))
+        touching = result.contact[k]
+        if touching.any():
+            ax.plot(rpm[touching], hmin[touching], ls="none", marker="o", mfc="none", color=color)
+    ax.axhline(result.limit * 1e6, color="0.4", ls="--", lw=1.0, label=f"limit {result.limit * 1e6:.3g} µm")
+    if math.isfinite(result.speed):
+        minimum = result.speed * 30.0 / math.pi
+        ax.axvline(minimum, color="C3", ls=":", lw=1.2, label=f"minimum speed {minimum:.3g} rpm")
+    ax.set_xlabel("shaft speed [rpm]")
+    ax.set_ylabel("smallest film h_min [µm]")
+    ax.set_title("Lift-off curve: smallest film of each film bearing against speed")
+    ax.set_ylim(bottom=0.0)
+    ax.legend(fontsize=8)
     return ax

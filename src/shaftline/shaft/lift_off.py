@@ -7,7 +7,7 @@ lubrication. :func:`minimum_speed` solves the line with its film bearings couple
 at which the smallest film of any film bearing crosses a limit and narrows the bracket by
 bisection (on the logarithm of the speed). The curve of every solution, smallest film
 against speed per bearing, is the "lift-off" curve class-society tools draw
-(:func:`lift_off_curve`).
+(:func:`shaftline.shaft.figures.lift_off_curve`).
 
 The limit (:class:`FilmLimit`) is the larger of a film parameter (3 by default) times the
 composite roughness ``sqrt(Rq_journal^2 + Rq_bore^2)`` (the film parameter of Hamrock &
@@ -22,16 +22,16 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Any, Literal
+from typing import Literal
 
 import numpy as np
 
 from shaftline.errors import InputError, require_finite, require_positive
-from shaftline.report.plotting import figure_function, plain
-from shaftline.shaft.coupled import CoupledAlignment, CoupledResult, CouplingOptions, FilmSupport
+from shaftline.shaft.coupled import CoupledAlignment
+from shaftline.shaft.film_supports import CoupledResult, CouplingOptions, FilmSupport
 from shaftline.shaft.model import Condition, ShaftLine
 
-__all__ = ["FilmLimit", "LiftOffResult", "lift_off_curve", "minimum_speed"]
+__all__ = ["FilmLimit", "LiftOffResult", "minimum_speed"]
 
 #: Rq / Ra of a Gaussian surface profile (ISO 4287): sqrt(pi / 2).
 RQ_PER_RA = math.sqrt(math.pi / 2.0)
@@ -360,27 +360,3 @@ def _lift_off_result(solutions: _SpeedSolutions, low: float, high: float, value:
         solutions=len(solved),
         message=message,
     )
-
-
-@figure_function(size=(8.0, 4.5))
-def lift_off_curve(result: LiftOffResult, *, ax: Any) -> Any:
-    """Smallest film against shaft speed per film bearing (the lift-off curve), with the
-    limit and the minimum speed; contact (the film at its floor) as open markers."""
-    rpm = result.speeds * 30.0 / math.pi
-    for k, name in enumerate(result.names):
-        color = f"C{k}"
-        hmin = result.min_film[k] * 1e6
-        ax.plot(rpm, hmin, color=color, marker=".", label=plain(name))
-        touching = result.contact[k]
-        if touching.any():
-            ax.plot(rpm[touching], hmin[touching], ls="none", marker="o", mfc="none", color=color)
-    ax.axhline(result.limit * 1e6, color="0.4", ls="--", lw=1.0, label=f"limit {result.limit * 1e6:.3g} µm")
-    if math.isfinite(result.speed):
-        minimum = result.speed * 30.0 / math.pi
-        ax.axvline(minimum, color="C3", ls=":", lw=1.2, label=f"minimum speed {minimum:.3g} rpm")
-    ax.set_xlabel("shaft speed [rpm]")
-    ax.set_ylabel("smallest film h_min [µm]")
-    ax.set_title("Lift-off curve: smallest film of each film bearing against speed")
-    ax.set_ylim(bottom=0.0)
-    ax.legend(fontsize=8)
-    return ax

@@ -41,7 +41,7 @@ from shaftline.errors import InputError, require_finite, require_positive
 from shaftline.film.geometry import BearingGeometry, BoreAnchor, BoreSegment
 from shaftline.film.problem import BearingProblem, OperatingPoint, SolverOptions
 from shaftline.shaft.alignment import AlignmentModel
-from shaftline.shaft.coupled import FilmSupport
+from shaftline.shaft.film_supports import FilmSupport
 from shaftline.shaft.model import GRAVITY, Bearing, Condition, PointLoad, ShaftLine, ShaftSegment
 
 __all__ = [

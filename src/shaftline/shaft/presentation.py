@@ -12,7 +12,7 @@ import numpy as np
 from shaftline.report.blocks import Paragraph, Table, fmt
 
 if TYPE_CHECKING:
-    from shaftline.shaft.coupled import CoupledResult
+    from shaftline.shaft.film_supports import CoupledResult
 
 
 #: Units of the film-support fields of results.json.
@@ -173,7 +173,8 @@ def _film_notes(coupled: CoupledResult) -> Paragraph | None:
         if state.rough is not None:
             notes.append(
                 f"λ = h_min/σ {state.rough.min_film_ratio:.3g}, asperities carry "
-                f"{state.rough.asperity_load_share * 100:.3g} % of the load ({state.rough.lubrication_regime} lubrication)"
+                f"{state.rough.asperity_load_share * 100:.3g} % of the load "
+                f"({state.rough.lubrication_regime} lubrication)"
             )
         if state.max_liner_deformation > 0:
             notes.append(f"liner deformed by up to {state.max_liner_deformation * 1e6:.3g} µm")

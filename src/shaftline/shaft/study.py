@@ -18,13 +18,13 @@ import numpy as np
 
 from shaftline.errors import InputError
 from shaftline.lubricants import Lubricant
-from shaftline.shaft.coupled import CouplingOptions, FilmSupport
+from shaftline.shaft.film_supports import CouplingOptions, FilmSupport
 from shaftline.shaft.lift_off import FilmLimit
 from shaftline.shaft.model import Bearing, Condition, ShaftLine
 
 if TYPE_CHECKING:
     from shaftline.shaft.alignment import AlignmentModel, ConditionResult, InfluenceMatrix
-    from shaftline.shaft.coupled import CoupledResult
+    from shaftline.shaft.film_supports import CoupledResult
     from shaftline.shaft.jackup import JackUpCurve, JackUpFit
     from shaftline.shaft.lift_off import LiftOffResult
     from shaftline.shaft.offsets import OffsetPlan

@@ -9,31 +9,11 @@ from typing import TYPE_CHECKING, Any
 
 from shaftline.registry import BuildContext, Capability, Command, Finding, Progress, no_progress
 from shaftline.report.blocks import Block, Figure, Paragraph, Table
+from shaftline.wear.presentation import weibull_json, weibull_text
 
 if TYPE_CHECKING:
     from shaftline.wear.case import WearSection
-    from shaftline.wear.reliability import WeibullFit
     from shaftline.wear.study import WearResult, WearStudy
-
-
-def weibull_json(fit: WeibullFit) -> dict[str, Any]:
-    return {
-        "shape": fit.shape,
-        "scale": fit.scale,
-        "shape_interval": fit.interval("shape"),
-        "scale_interval": fit.interval("scale"),
-        "confidence": fit.confidence,
-    }
-
-
-def weibull_text(fit: WeibullFit, scale: float = 1.0, unit: str = "") -> str:
-    low, high = fit.interval("shape")
-    scale_low, scale_high = fit.interval("scale")
-    return (
-        f"Weibull fit of {fit.samples.size} samples: shape {fit.shape:.4g} ({low:.4g}-{high:.4g}), scale "
-        f"{fit.scale * scale:.4g} ({scale_low * scale:.4g}-{scale_high * scale:.4g}){' ' + unit if unit else ''}; "
-        f"{fit.confidence:.0%} intervals."
-    )
 
 
 class ServiceWear(Capability["WearSection", "WearStudy", "WearResult"]):

@@ -46,7 +46,7 @@ def weibull(
     from shaftline.commandline import check_outputs, console, deliver, input_errors, interruptible
     from shaftline.errors import InputError
     from shaftline.wear import figures
-    from shaftline.wear.capability import weibull_json, weibull_text
+    from shaftline.wear.presentation import weibull_json, weibull_text
     from shaftline.wear.reliability import fit_weibull, read_samples
 
     with interruptible(), input_errors():
