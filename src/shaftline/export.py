@@ -116,7 +116,9 @@ def to_dict(result: Any) -> dict[str, Any]:
             continue
         if value is None and export.optional:
             continue
-        out[_key(item, export)] = clean(export.convert(value) if export.convert is not None and value is not None else value)
+        out[_key(item, export)] = clean(
+            export.convert(value) if export.convert is not None and value is not None else value
+        )
     return out
 
 
