@@ -27,6 +27,8 @@ variants and the build of the study, and re-exports the tables' names.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from dataclasses import replace
 from typing import TYPE_CHECKING, Annotated, Literal
 
 import numpy as np
@@ -67,6 +69,8 @@ from shaftline.film.case_operation import (
     OperationSection,
     ThermalSection,
     lubricant_properties,
+    operating_point,
+    thermal_options,
 )
 from shaftline.film.case_solver import (
     FAR_BELOW_TRANSITION,
@@ -81,12 +85,14 @@ from shaftline.film.case_solver import (
 )
 from shaftline.film.case_surface import LinerSection, SurfaceSection, checked_surface, liner_of, surface_roughness
 from shaftline.film.geometry import BearingGeometry, BentJournal, BoreAnchor, BoreSegment
-from shaftline.film.problem import BearingProblem, OperatingPoint, SupplyGroove
+from shaftline.film.problem import BearingProblem, OperatingPoint, SolverOptions
 from shaftline.film.study import BearingCase
 from shaftline.registry import BuildContext
 
 if TYPE_CHECKING:
     from shaftline.film.study import BearingStudy
+    from shaftline.film.thermal import ThermalOptions
+    from shaftline.lubricants import Lubricant
 
 __all__ = [
     "BEARING_LOAD",
@@ -118,10 +124,12 @@ __all__ = [
     "layer_note",
     "liner_of",
     "lubricant_properties",
+    "operating_point",
     "read_film_profile",
     "solver_options",
     "stribeck_speeds",
     "surface_roughness",
+    "thermal_options",
     "turbulence_note",
     "turbulence_notes",
 ]
@@ -298,15 +306,32 @@ class BearingSection(Section):
         return self
 
 
+#: The bearing's geometry for a bore: its segments, and the field they come from (for errors).
+GeometryOf = Callable[[tuple[BoreSegment, ...], str], BearingGeometry]
+
+
 def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
     """The base case and its variants in SI domain objects (raises :class:`InputError` with
     the field's path inside ``[bearing]``)."""
-    from shaftline.film.study import BearingCase, BearingStudy
+    from shaftline.film.study import BearingStudy
 
     clearance = (
         section.radial_clearance if section.radial_clearance is not None else 0.5 * (section.diametral_clearance or 0.0)
     )
-    length = section.length
+    geometry = _geometry_of(section, context, clearance)
+    base_geometry = geometry(_bore(section.bore, section.length, clearance), "bore")
+    lubricant, viscosity, density = lubricant_properties(section.lubricant)
+    operating = operating_point(section.operation, viscosity, density)
+    thermal = None if section.thermal is None else thermal_options(section.thermal, section.lubricant, lubricant)
+    options = _checked_options(section, base_geometry, operating, context)
+    base = _base_case(section, context.case.name, base_geometry, operating, options, lubricant, thermal, clearance)
+    cases = [base, *_variants(section, context.case.name, base, geometry, clearance)]
+    return BearingStudy(tuple(cases), stribeck_speeds(section.stribeck, section.operation.speed))
+
+
+def _geometry_of(section: BearingSection, context: BuildContext, clearance: float) -> GeometryOf:
+    """The bearing's geometry for a given bore, with the bent journal, film profile, surface and
+    liner of ``[bearing]`` read once for the base case and all its variants."""
     bent = None
     if section.bent_journal is not None:
         journal = section.bent_journal
@@ -331,7 +356,7 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
     def geometry(bore: tuple[BoreSegment, ...], where: str) -> BearingGeometry:
         with located("", {"bore": where}):
             return BearingGeometry(
-                length=length,
+                length=section.length,
                 diameter=section.diameter,
                 radial_clearance=clearance,
                 bore=bore,
@@ -343,84 +368,87 @@ def build_study(section: BearingSection, context: BuildContext) -> BearingStudy:
                 liner=liner,
             )
 
-    base_geometry = geometry(_bore(section.bore, length, clearance), "bore")
-    lubricant, viscosity, density = lubricant_properties(section.lubricant)
-    op = section.operation
-    # OperatingPoint carries the lubricant's viscosity and density: their errors belong there.
-    with located("operation", {"viscosity": "lubricant.viscosity", "density": "lubricant.density"}):
-        operating = OperatingPoint(
-            speed=op.speed,
-            viscosity=viscosity,
-            density=density,
-            aft_pressure=op.aft_pressure,
-            fore_pressure=op.fore_pressure,
-            cavitation_pressure=op.cavitation_pressure,
-            grooves=tuple(SupplyGroove(g.angle, g.pressure, g.length_fraction) for g in op.grooves),
-        )
-    thermal = None
-    if section.thermal is not None:
-        from shaftline.film.thermal import TEMPERATURE_RANGES, ThermalOptions
+    return geometry
 
-        if lubricant.model == "constant":
-            raise InputError(
-                "lubricant.viscosity",
-                section.lubricant.viscosity,
-                "Pa s",
-                "a lubricant whose viscosity follows temperature (a preset or a two-point oil) with [bearing.thermal]",
-            )
-        low, high = TEMPERATURE_RANGES[lubricant.model]
-        inlet = section.thermal.inlet_temperature
-        if not low <= inlet < high:
-            raise InputError(
-                "thermal.inlet_temperature", inlet, "degC", f"{low:g} to {high:g} degC, the range of {lubricant.name}"
-            )
-        with located("thermal"):
-            thermal = ThermalOptions(inlet, section.thermal.heat_to_lubricant)
+
+def _checked_options(
+    section: BearingSection, geometry: BearingGeometry, operating: OperatingPoint, context: BuildContext
+) -> SolverOptions:
+    """The solver options of ``[bearing.solver]``, checked as a problem with the base case's
+    geometry and operating point; the notes on them go to ``context.warnings``."""
     with located("solver"):
         options = solver_options(section.solver)
     with located("", {"operating": "operation", "options": "solver"}):
-        BearingProblem(base_geometry, operating, options)
-    layer = layer_note(base_geometry, options.axial_nodes)
+        BearingProblem(geometry, operating, options)
+    layer = layer_note(geometry, options.axial_nodes)
     if layer is not None:
         context.warnings.append(layer)
-    context.warnings.extend(turbulence_notes(section.solver, options, base_geometry, operating, "bearing.solver"))
-    tilt_y = _tilt(op.tilt_vertical, op.misalignment_ratio_vertical, length, clearance)
-    tilt_z = _tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, length, clearance)
+    context.warnings.extend(turbulence_notes(section.solver, options, geometry, operating, "bearing.solver"))
+    return options
 
-    def case(name: str, geometry: BearingGeometry, tilt: float, tilt_field: str) -> BearingCase:
-        # A journal that does not fit in the bore is the tilt's fault, or the bent journal's.
-        fields = {
-            "tilt_y": "bent_journal" if bent is not None else tilt_field,
-            "tilt_z": "bent_journal" if bent is not None else "operation.tilt_horizontal",
-            "load_y": "operation.load",
-            "load_z": "operation.load_horizontal",
-        }
-        return BearingCase(
-            name=name,
-            geometry=geometry,
-            operating=operating,
-            options=options,
-            load_y=-op.load,
-            load_z=op.load_horizontal,
-            tilt_y=tilt,
-            tilt_z=tilt_z,
-            lubricant=lubricant,
-            temperature=section.lubricant.temperature,
-            surface_roughness=section.surface_roughness if surface is None else surface.sigma,
-            error_fields=fields,
-            thermal=thermal,
-        )
 
-    cases = [case(context.case.name, base_geometry, tilt_y, "operation.tilt_vertical")]
+def _error_fields(section: BearingSection, tilt_field: str) -> dict[str, str]:
+    """Where the case file gives a case's tilts and loads (``tilt_field``: its vertical tilt),
+    for an error found only while solving."""
+    # A journal that does not fit in the bore is the tilt's fault, or the bent journal's.
+    bent = section.bent_journal is not None
+    return {
+        "tilt_y": "bent_journal" if bent else tilt_field,
+        "tilt_z": "bent_journal" if bent else "operation.tilt_horizontal",
+        "load_y": "operation.load",
+        "load_z": "operation.load_horizontal",
+    }
+
+
+def _base_case(
+    section: BearingSection,
+    name: str,
+    geometry: BearingGeometry,
+    operating: OperatingPoint,
+    options: SolverOptions,
+    lubricant: Lubricant,
+    thermal: ThermalOptions | None,
+    clearance: float,
+) -> BearingCase:
+    """The base case of ``[bearing]``, named ``name``, under the load and tilts of its operation."""
+    op = section.operation
+    return BearingCase(
+        name=name,
+        geometry=geometry,
+        operating=operating,
+        options=options,
+        load_y=-op.load,
+        load_z=op.load_horizontal,
+        tilt_y=_tilt(op.tilt_vertical, op.misalignment_ratio_vertical, section.length, clearance),
+        tilt_z=_tilt(op.tilt_horizontal, op.misalignment_ratio_horizontal, section.length, clearance),
+        lubricant=lubricant,
+        temperature=section.lubricant.temperature,
+        surface_roughness=section.surface_roughness if geometry.surface is None else geometry.surface.sigma,
+        error_fields=_error_fields(section, "operation.tilt_vertical"),
+        thermal=thermal,
+    )
+
+
+def _variants(
+    section: BearingSection, name: str, base: BearingCase, geometry: GeometryOf, clearance: float
+) -> list[BearingCase]:
+    """The cases of ``[[bearing.variants]]``: the base case (named ``name``) with a variant's own
+    bore or vertical tilt."""
+    cases = []
     for k, variant in enumerate(section.variants):
-        if variant.name == context.case.name:
+        if variant.name == name:
             raise InputError(f"variants[{k}].name", variant.name, "", "a name other than the case's ([case] name)")
-        variant_geometry = base_geometry
+        variant_geometry = base.geometry
         if variant.bore is not None:
-            variant_geometry = geometry(_bore(variant.bore, length, clearance), f"variants[{k}].bore")
-        variant_tilt, tilt_field = tilt_y, "operation.tilt_vertical"
+            variant_geometry = geometry(_bore(variant.bore, section.length, clearance), f"variants[{k}].bore")
+        variant_tilt, tilt_field = base.tilt_y, "operation.tilt_vertical"
         if variant.misalignment_ratio_vertical is not None or variant.tilt_vertical is not None:
-            variant_tilt = _tilt(variant.tilt_vertical, variant.misalignment_ratio_vertical, length, clearance)
+            variant_tilt = _tilt(variant.tilt_vertical, variant.misalignment_ratio_vertical, section.length, clearance)
             tilt_field = f"variants[{k}].tilt_vertical"
-        cases.append(case(variant.name, variant_geometry, variant_tilt, tilt_field))
-    return BearingStudy(tuple(cases), stribeck_speeds(section.stribeck, op.speed))
+        variant_fields = _error_fields(section, tilt_field)
+        cases.append(
+            replace(
+                base, name=variant.name, geometry=variant_geometry, tilt_y=variant_tilt, error_fields=variant_fields
+            )
+        )
+    return cases

@@ -27,11 +27,12 @@ from shaftline.cases.types import (
     default_of,
     field_error,
 )
-from shaftline.errors import located
+from shaftline.errors import InputError, located
 from shaftline.film.case_geometry import CLEARANCE_SHARE, SLOPE
 from shaftline.film.problem import OperatingPoint, SupplyGroove
 
 if TYPE_CHECKING:
+    from shaftline.film.thermal import ThermalOptions
     from shaftline.lubricants import Lubricant
 
 EDGE_PRESSURE = Plausible(
@@ -250,3 +251,42 @@ def lubricant_properties(lube: LubricantSection) -> tuple[Lubricant, float, floa
             viscosity = float(lubricant.dynamic_viscosity(lube.temperature))
             density = float(lubricant.density(lube.temperature))
     return lubricant, viscosity, density
+
+
+def operating_point(op: OperationSection, viscosity: float, density: float) -> OperatingPoint:
+    """The film's :class:`OperatingPoint` of an ``operation`` table with the lubricant's
+    film viscosity (Pa s) and density (kg/m^3)."""
+    # OperatingPoint carries the lubricant's viscosity and density: their errors belong there.
+    with located("operation", {"viscosity": "lubricant.viscosity", "density": "lubricant.density"}):
+        return OperatingPoint(
+            speed=op.speed,
+            viscosity=viscosity,
+            density=density,
+            aft_pressure=op.aft_pressure,
+            fore_pressure=op.fore_pressure,
+            cavitation_pressure=op.cavitation_pressure,
+            grooves=tuple(SupplyGroove(g.angle, g.pressure, g.length_fraction) for g in op.grooves),
+        )
+
+
+def thermal_options(section: ThermalSection, lube: LubricantSection, lubricant: Lubricant) -> ThermalOptions:
+    """The :class:`~shaftline.film.thermal.ThermalOptions` of a ``thermal`` table for the
+    lubricant ``lubricant`` of the ``lubricant`` table ``lube``: one whose viscosity follows
+    temperature, with the inlet temperature inside its data."""
+    from shaftline.film.thermal import TEMPERATURE_RANGES, ThermalOptions
+
+    if lubricant.model == "constant":
+        raise InputError(
+            "lubricant.viscosity",
+            lube.viscosity,
+            "Pa s",
+            "a lubricant whose viscosity follows temperature (a preset or a two-point oil) with [bearing.thermal]",
+        )
+    low, high = TEMPERATURE_RANGES[lubricant.model]
+    inlet = section.inlet_temperature
+    if not low <= inlet < high:
+        raise InputError(
+            "thermal.inlet_temperature", inlet, "degC", f"{low:g} to {high:g} degC, the range of {lubricant.name}"
+        )
+    with located("thermal"):
+        return ThermalOptions(inlet, section.heat_to_lubricant)
