@@ -20,7 +20,7 @@ if TYPE_CHECKING:
 
     from shaftline.film.case import BearingSection
     from shaftline.film.stribeck import StribeckCurve
-    from shaftline.film.study import BearingCase, BearingStudy, BearingStudyResult
+    from shaftline.film.study import BearingCase, BearingResult, BearingStudy, BearingStudyResult
 
 #: Largest peak film pressure a class rule allows, Pa: NK's 40 MPa as quoted in seed 004
 #: Sect. 2.2.1 (line 497 of the text); above it a result is not a stern-tube bearing's.
@@ -272,8 +272,6 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
         return blocks
 
     def report(self, result: BearingStudyResult) -> list[Block]:
-        from shaftline.film import figures
-
         blocks: list[Block] = [
             Paragraph(
                 "Film equilibrium under the case load with the journal tilt held at the given misalignment. "
@@ -281,119 +279,146 @@ class BearingFilm(Capability["BearingSection", "BearingStudy", "BearingStudyResu
             ),
             self._table(result),
         ]
-        coefficient_rows = []
-        tilt_rows = []
-        for run in result.cases:
-            if run.coefficients is None:
-                continue
-            k, c = run.coefficients.stiffness, run.coefficients.damping
-            coefficient_rows.append(
-                [run.case.name]
-                + [fmt(v, 1e-9) for v in (k[0, 0], k[0, 1], k[1, 0], k[1, 1])]
-                + [fmt(v, 1e-9) for v in (c[0, 0], c[0, 1], c[1, 0], c[1, 1])]
-            )
-            k4, c4 = run.coefficients.stiffness_4x4, run.coefficients.damping_4x4
-            if k4 is not None and c4 is not None:
-                # The moment-by-tilt block; the whole 4 x 4 is in the JSON.
-                tilt_rows.append(
-                    [run.case.name]
-                    + [fmt(v, 1e-9) for v in (k4[2, 2], k4[2, 3], k4[3, 2], k4[3, 3])]
-                    + [fmt(v, 1e-9) for v in (c4[2, 2], c4[2, 3], c4[3, 2], c4[3, 3])]
-                )
-        if coefficient_rows:
-            blocks.append(
-                Table(
-                    ["case", "Kyy", "Kyz", "Kzy", "Kzz", "Cyy", "Cyz", "Czy", "Czz"],
-                    coefficient_rows,
-                    "Film stiffness [kN/µm] and damping [kN·s/µm]",
-                )
-            )
-        if tilt_rows:
-            blocks.append(
-                Table(
-                    ["case", "K My,ty", "K My,tz", "K Mz,ty", "K Mz,tz", "C My,ty", "C My,tz", "C Mz,ty", "C Mz,tz"],
-                    tilt_rows,
-                    "Film tilt stiffness [kN·m/µrad] and damping [kN·m·s/µrad]: moments about mid-length by "
-                    "journal tilt (the full 4 × 4 with the force and offset terms is in the JSON)",
-                )
-            )
-        if result.stribeck is not None:
-            blocks.append(_stribeck_table(result))
-            blocks.append(
-                Figure(
-                    "bearing_stribeck.png",
-                    figures.stribeck,
-                    (result.stribeck, result.cases[0].case.name),
-                    caption="Stribeck curve (friction coefficient) and h_min against speed, with the "
-                    "lubrication regimes of lambda = h_min/σ and the transition speed (asperity share below 1 %)",
-                )
-            )
-        if len(result.cases) > 1:
-            blocks.append(
-                Figure(
-                    "bearing_comparison.png",
-                    figures.comparison,
-                    ([r.case.name for r in result.cases], [r.equilibrium.state for r in result.cases]),
-                    caption="h_min, p_max and power loss of the base case and its variants",
-                )
-            )
+        blocks += _coefficient_tables(result)
+        blocks += _study_blocks(result)
         for index, run in enumerate(result.cases):
-            state, name = run.equilibrium.state, run.case.name
-            blocks.append(Heading(name))
-            blocks.append(
-                Figure(
-                    f"bearing_{index}_maps.png",
-                    figures.film_and_pressure_maps,
-                    (state, name),
-                    caption=f"{name}: film and pressure",
-                )
-            )
-            if state.rough is not None:
-                blocks.append(
-                    Figure(
-                        f"bearing_{index}_contact.png",
-                        figures.contact_maps,
-                        (state, name),
-                        caption=f"{name}: asperity contact pressure and film-thickness ratio λ = h/σ",
-                    )
-                )
-            if state.liner is not None:
-                model = run.case.geometry.liner.model if run.case.geometry.liner is not None else "column"
-                blocks.append(
-                    Figure(
-                        f"bearing_{index}_liner.png",
-                        figures.liner_maps,
-                        (state, name),
-                        caption=f"{name}: liner deformation ({model} model) and the film including it",
-                    )
-                )
-            if state.turbulence is not None:
-                blocks.append(
-                    Figure(
-                        f"bearing_{index}_reynolds.png",
-                        figures.reynolds_map,
-                        (state, name),
-                        caption=f"{name}: local Reynolds number ρωRh/μ of the film (turbulence coefficients "
-                        f"{'applied' if state.turbulence.turbulent else 'not applied'})",
-                    )
-                )
-            blocks.append(
-                Figure(
-                    f"bearing_{index}_circumferential.png",
-                    figures.circumferential_profile,
-                    (state, name),
-                    caption=f"{name}: around the bore in the plane of p_max",
-                )
-            )
-            blocks.append(
-                Figure(
-                    f"bearing_{index}_axial.png",
-                    figures.axial_profiles,
-                    (state, name),
-                    caption=f"{name}: along the bearing",
-                )
-            )
+            blocks += _case_figures(index, run)
         return blocks
+
+
+def _coefficient_tables(result: BearingStudyResult) -> list[Block]:
+    """The film's stiffness and damping of every case that has them, and its moment-by-tilt
+    block where the 4 x 4 coefficients were found."""
+    blocks: list[Block] = []
+    coefficient_rows = []
+    tilt_rows = []
+    for run in result.cases:
+        if run.coefficients is None:
+            continue
+        k, c = run.coefficients.stiffness, run.coefficients.damping
+        coefficient_rows.append(
+            [run.case.name]
+            + [fmt(v, 1e-9) for v in (k[0, 0], k[0, 1], k[1, 0], k[1, 1])]
+            + [fmt(v, 1e-9) for v in (c[0, 0], c[0, 1], c[1, 0], c[1, 1])]
+        )
+        k4, c4 = run.coefficients.stiffness_4x4, run.coefficients.damping_4x4
+        if k4 is not None and c4 is not None:
+            # The moment-by-tilt block; the whole 4 x 4 is in the JSON.
+            tilt_rows.append(
+                [run.case.name]
+                + [fmt(v, 1e-9) for v in (k4[2, 2], k4[2, 3], k4[3, 2], k4[3, 3])]
+                + [fmt(v, 1e-9) for v in (c4[2, 2], c4[2, 3], c4[3, 2], c4[3, 3])]
+            )
+    if coefficient_rows:
+        blocks.append(
+            Table(
+                ["case", "Kyy", "Kyz", "Kzy", "Kzz", "Cyy", "Cyz", "Czy", "Czz"],
+                coefficient_rows,
+                "Film stiffness [kN/µm] and damping [kN·s/µm]",
+            )
+        )
+    if tilt_rows:
+        blocks.append(
+            Table(
+                ["case", "K My,ty", "K My,tz", "K Mz,ty", "K Mz,tz", "C My,ty", "C My,tz", "C Mz,ty", "C Mz,tz"],
+                tilt_rows,
+                "Film tilt stiffness [kN·m/µrad] and damping [kN·m·s/µrad]: moments about mid-length by "
+                "journal tilt (the full 4 × 4 with the force and offset terms is in the JSON)",
+            )
+        )
+    return blocks
+
+
+def _study_blocks(result: BearingStudyResult) -> list[Block]:
+    """The blocks of the study as a whole: the Stribeck curve (table and figure) and the
+    comparison of the base case with its variants."""
+    from shaftline.film import figures
+
+    blocks: list[Block] = []
+    if result.stribeck is not None:
+        blocks.append(_stribeck_table(result))
+        blocks.append(
+            Figure(
+                "bearing_stribeck.png",
+                figures.stribeck,
+                (result.stribeck, result.cases[0].case.name),
+                caption="Stribeck curve (friction coefficient) and h_min against speed, with the "
+                "lubrication regimes of lambda = h_min/σ and the transition speed (asperity share below 1 %)",
+            )
+        )
+    if len(result.cases) > 1:
+        blocks.append(
+            Figure(
+                "bearing_comparison.png",
+                figures.comparison,
+                ([r.case.name for r in result.cases], [r.equilibrium.state for r in result.cases]),
+                caption="h_min, p_max and power loss of the base case and its variants",
+            )
+        )
+    return blocks
+
+
+def _case_figures(index: int, run: BearingResult) -> list[Block]:
+    """The heading and figures of case ``index`` of a study: film and pressure, and the
+    contact, liner and Reynolds-number maps where the case has them, and its profiles."""
+    from shaftline.film import figures
+
+    state, name = run.equilibrium.state, run.case.name
+    blocks: list[Block] = [Heading(name)]
+    blocks.append(
+        Figure(
+            f"bearing_{index}_maps.png",
+            figures.film_and_pressure_maps,
+            (state, name),
+            caption=f"{name}: film and pressure",
+        )
+    )
+    if state.rough is not None:
+        blocks.append(
+            Figure(
+                f"bearing_{index}_contact.png",
+                figures.contact_maps,
+                (state, name),
+                caption=f"{name}: asperity contact pressure and film-thickness ratio λ = h/σ",
+            )
+        )
+    if state.liner is not None:
+        model = run.case.geometry.liner.model if run.case.geometry.liner is not None else "column"
+        blocks.append(
+            Figure(
+                f"bearing_{index}_liner.png",
+                figures.liner_maps,
+                (state, name),
+                caption=f"{name}: liner deformation ({model} model) and the film including it",
+            )
+        )
+    if state.turbulence is not None:
+        blocks.append(
+            Figure(
+                f"bearing_{index}_reynolds.png",
+                figures.reynolds_map,
+                (state, name),
+                caption=f"{name}: local Reynolds number ρωRh/μ of the film (turbulence coefficients "
+                f"{'applied' if state.turbulence.turbulent else 'not applied'})",
+            )
+        )
+    blocks.append(
+        Figure(
+            f"bearing_{index}_circumferential.png",
+            figures.circumferential_profile,
+            (state, name),
+            caption=f"{name}: around the bore in the plane of p_max",
+        )
+    )
+    blocks.append(
+        Figure(
+            f"bearing_{index}_axial.png",
+            figures.axial_profiles,
+            (state, name),
+            caption=f"{name}: along the bearing",
+        )
+    )
+    return blocks
 
 
 def _stribeck_table(result: BearingStudyResult) -> Table:

@@ -27,8 +27,8 @@ from shaftline.film.case import (
     LubricantSection,
     SolverSection,
     SurfaceSection,
-    _rotation_alias,
 )
+from shaftline.film.case_geometry import _rotation_alias
 from shaftline.film.geometry import BearingGeometry, BoreAnchor
 from shaftline.film.problem import OperatingPoint
 from shaftline.shaft.film_supports import CouplingOptions, FilmSupport
@@ -135,7 +135,6 @@ def film_support(
     lubricant and film temperature (None for a viscosity given as such). ``notes``: where the
     film's notes go (the layer liner's resolution and the turbulence notes, as for [bearing])."""
     from shaftline.film.case import (
-        _bore,
         checked_surface,
         layer_note,
         liner_of,
@@ -143,6 +142,7 @@ def film_support(
         solver_options,
         turbulence_notes,
     )
+    from shaftline.film.case_geometry import _bore
     from shaftline.film.problem import BearingProblem
 
     bearing = section.bearings[k]
