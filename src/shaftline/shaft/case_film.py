@@ -193,7 +193,7 @@ def film_support(
     if notes is not None:
         # a shared [alignment.film] table gives its note once, not once per bearing
         fresh = turbulence_notes(film.solver, options, geometry, operating, f"alignment.{where}.solver")
-        # The layer liner's under-resolution note, as [bearing.liner] gives it (film/case.py).
+        # The layer liner's under-resolution note, as [bearing.liner] gives it (film/case_solver.py).
         layer = layer_note(geometry, options.axial_nodes, f"alignment.{where}.")
         fresh = ([] if layer is None else [layer]) + fresh
         notes.extend(note for note in fresh if note not in notes)
