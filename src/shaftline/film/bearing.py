@@ -19,11 +19,11 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import replace
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
-from shaftline.errors import InputError, require_finite
+from shaftline.errors import InputError
 from shaftline.film.geometry import BearingGeometry, Grid, JournalPosition
 from shaftline.film.lined import LinerConvergenceError, film_solver, sharing_solver
 from shaftline.film.problem import BearingProblem, OperatingPoint, SolverOptions, SupplyGroove
@@ -35,10 +35,6 @@ from shaftline.film.results import (
     TiltLinearisation,
 )
 from shaftline.film.solver import FilmSolver
-
-if TYPE_CHECKING:
-    from shaftline.film.cavitation import SolverCounts
-    from shaftline.film.equilibrium.newton import Found
 
 __all__ = [
     # Problem data and results, defined in their modules and re-exported here.
@@ -464,63 +460,8 @@ class JournalBearing:
             larger tilt for a misalignment that does not fit in the clearance, and
             ``"initial_deformation"`` for one that is not finite or not on the grid.
         """
-        from shaftline.film.equilibrium import find_equilibrium
+        from shaftline.film.equilibrium.result import solve_equilibrium
 
-        load = _checked_load(load_y, load_z, tilt_y, tilt_z)
-        deformation = self._initial_deformation(initial_deformation)
-        solver = self.solver
-        before = solver.counts.copy()
-        found = find_equilibrium(solver, load, tilt_y, tilt_z, initial, progress, initial_cavitated, deformation)
-        return self._equilibrium(found, load, before)
-
-    def _equilibrium(self, found: Found, load: np.ndarray, before: SolverCounts) -> Equilibrium:
-        """The result of the Newton driver's ``found`` under ``load`` (N), with the work it took
-        since the counts were ``before``: a start that did not converge with the film at its
-        floor is contact."""
-        from shaftline.film.state import bearing_state
-
-        solver = self.solver
-        state = bearing_state(solver, found.solution, load=load)
-        contact = found.contact
-        margin = self.options.newton.floor_margin
-        if found.started and not found.converged and solver.surfaces.at_floor(state.min_film_thickness, margin):
-            contact = True
-        if contact:
-            state = replace(state, contact=True)
-        return Equilibrium(
-            state,
-            float(load[0]),
-            float(load[1]),
-            found.converged,
-            contact,
-            found.iterations,
-            found.residual,
-            newton_iterations=found.newton_iterations,
-            film_solutions=solver.counts.film_solutions - before.film_solutions,
-            factorisations=solver.counts.factorisations - before.factorisations,
+        return solve_equilibrium(
+            self.solver, load_y, load_z, tilt_y, tilt_z, initial, progress, initial_cavitated, initial_deformation
         )
-
-    def _initial_deformation(self, initial_deformation: np.ndarray | None) -> np.ndarray | None:
-        """A caller's start deformation, checked against the grid (None without a liner)."""
-        if self.geometry.liner is None or initial_deformation is None:
-            return None
-        deformation = np.array(initial_deformation, dtype=float)
-        shape = (self.options.axial_nodes, self.options.circumferential_nodes)
-        if deformation.shape != shape or not np.all(np.isfinite(deformation)):
-            raise InputError(
-                "initial_deformation",
-                f"an array of shape {deformation.shape}",
-                "m",
-                f"finite values on the bearing's grid, shape {shape}",
-            )
-        return deformation
-
-
-def _checked_load(load_y: float, load_z: float, tilt_y: float, tilt_z: float) -> np.ndarray:
-    """The load (N, (2,)) of an equilibrium, its four inputs checked finite and the load not zero."""
-    load = np.array([require_finite("load_y", load_y, "N"), require_finite("load_z", load_z, "N")])
-    require_finite("tilt_y", tilt_y, "rad")
-    require_finite("tilt_z", tilt_z, "rad")
-    if float(np.hypot(*load)) == 0.0:
-        raise InputError("load_y", 0.0, "N", "a non-zero load (load_y, load_z): a loaded bearing")
-    return load

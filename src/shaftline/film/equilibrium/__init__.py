@@ -9,6 +9,7 @@ module          job
 ``starts``      the closed-form start, the grid continuation from the coarse grid, a lined
                 bearing's rigid start and retreat, the first film solution
 ``settling``    the stall and crawl rules and the pseudo-transient settling of a rigid rough bore
+``result``      an equilibrium from its inputs, checked, to its state and counters
 ==============  ============================================================================
 """
 
