@@ -33,7 +33,8 @@ from timing import median_time
 
 from shaftline.cases import load_case
 from shaftline.film import sweep
-from shaftline.film.study import BearingCase, solve_case
+from shaftline.film.solve import solve_case
+from shaftline.film.study import BearingCase
 
 ROOT = Path(__file__).resolve().parents[1]
 _POOL_STARTED: list[bool] = []
