@@ -84,7 +84,8 @@ def test_newton_iterations_are_reported_without_changing_the_result(bearing):
 
 
 def test_the_film_study_reports_iterations_and_coefficients():
-    from shaftline.film.study import BearingCase, BearingStudy, solve_study
+    from shaftline.film.solve import solve_study
+    from shaftline.film.study import BearingCase, BearingStudy
 
     b = make_bearing(1.0, axial_nodes=21, circumferential_nodes=60)
     case = BearingCase("base", b.geometry, b.operating, b.options, load_y=-2e4)

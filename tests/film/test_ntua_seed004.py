@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from shaftline.cases import load_case
-from shaftline.film.study import solve_case
+from shaftline.film.solve import solve_case
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "ntua_stern_tube.toml"
 
