@@ -7,8 +7,6 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-
 from shaftline.report.blocks import Paragraph, Table, fmt
 
 if TYPE_CHECKING:
@@ -94,8 +92,8 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                 },
                 "line_load": {"y": f.line_load[0].tolist(), "z": f.line_load[1].tolist()},
                 # null when not available (an elastic liner that does not settle there): NaN is not JSON.
-                "stiffness": f.stiffness.tolist() if np.isfinite(f.stiffness).all() else None,
-                "damping": f.damping.tolist() if np.isfinite(f.damping).all() else None,
+                "stiffness": f.stiffness.tolist() if all(map(math.isfinite, f.stiffness.flat)) else None,
+                "damping": f.damping.tolist() if all(map(math.isfinite, f.damping.flat)) else None,
                 "coefficients_note": f.coefficients_note,
             }
             for f in coupled.films
@@ -122,11 +120,11 @@ def _film_rows(coupled: CoupledResult) -> list[list[str]]:
                 f.name,
                 fmt(f.force_y, 1e-3),
                 fmt(state.min_film_thickness, 1e6),
-                f"{np.degrees(state.min_film_theta):.0f} / {state.min_film_z:.3f}",
+                f"{math.degrees(state.min_film_theta):.0f} / {state.min_film_z:.3f}",
                 fmt(state.max_pressure, 1e-6),
                 fmt(f.support_point, 1e3),
                 fmt(state.eccentricity_ratio, 1.0),
-                f"{np.degrees(state.attitude_angle):.1f}",
+                f"{math.degrees(state.attitude_angle):.1f}",
                 fmt(f.relative_slope, 1e3),
                 fmt(state.power_loss, 1e-3),
                 "CONTACT" if f.contact else "film",
