@@ -15,7 +15,9 @@ import pytest
 
 from shaftline.film import JournalPosition
 from shaftline.film.analytic import long_bearing_load, long_bearing_pressure, short_bearing_load
-from shaftline.film.reynolds import ReynoldsSolver, build_stencil
+from shaftline.film.cavitation import NodeGrid, ReynoldsCondition
+from shaftline.film.problem import SolverOptions
+from shaftline.film.stencil import build_stencil
 from tests.conftest import CLEARANCE, RADIUS, make_bearing
 
 
@@ -45,7 +47,7 @@ def test_long_bearing_mid_plane_pressure_is_sommerfeld(epsilon):
     edges = np.zeros(grid.shape, dtype=bool)
     edges[[0, -1]] = True
     d_theta, d_z = grid.d_theta, grid.dz / RADIUS
-    solver = ReynoldsSolver(grid.shape, d_theta, d_z, edges, np.zeros(grid.shape))
+    solver = ReynoldsCondition(NodeGrid.of(grid.shape, d_theta, d_z, edges, np.zeros(grid.shape)), SolverOptions())
     pressure = solver.solve_linear(build_stencil(film, d_theta, d_z))
     mid = pressure[pressure.shape[0] // 2]
     # theta measured from the thickest film: h = c (1 + eps cos(theta - pi))

@@ -12,16 +12,23 @@ roundings of 1e-16 per sweep).
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from shaftline.film import JournalPosition
-from shaftline.film import reynolds as reynolds_module
+from shaftline.film.cavitation import ReynoldsCondition, SolverCounts
+from shaftline.film.cavitation.node_set import NodeSetFactor
+from shaftline.film.options import ActiveSetOptions
 from shaftline.film.relaxation import projected_sor
-from shaftline.film.reynolds import SWITCH_MAX_NODES, ReynoldsSolver, Stencil, _NodeSetFactor
+from shaftline.film.stencil import Stencil, SymmetricPattern, stencil_diagonal
 from tests.conftest import CLEARANCE, make_bearing
+
+#: Switched nodes a kept factor carries by a bordered correction (the solver's default).
+SWITCH_MAX_NODES = ActiveSetOptions().switch_max_nodes
 
 
 def _free_matrix(stencil: Stencil, free: np.ndarray) -> sp.csc_matrix:
@@ -40,12 +47,20 @@ def _free_matrix(stencil: Stencil, free: np.ndarray) -> sp.csc_matrix:
     return sp.csc_matrix(full[index][:, index])
 
 
+def _slot_values(stencil: Stencil, pattern: SymmetricPattern) -> np.ndarray:
+    """Values of A on every slot of the upper-triangle pattern (``slot_source`` indexes
+    ``concat(diag(A), -c_theta, -c_z)``), as the Reynolds condition fills its node-set factors."""
+    source = np.concatenate([stencil_diagonal(stencil).ravel(), -stencil.c_theta.ravel(), -stencil.c_z.ravel()])
+    return source[pattern.slot_source]
+
+
 @pytest.fixture(scope="module")
 def loaded_film():
     bearing = make_bearing(1.0, axial_nodes=21, circumferential_nodes=48)
     position = JournalPosition(ey=-0.5 * CLEARANCE, ez=0.2 * CLEARANCE)
-    evaluation = bearing._evaluate(position, warm=False)
-    solver = bearing._solver_state().reynolds
+    evaluation = bearing.solver.evaluate(position, warm=False)
+    solver = bearing.solver.cavitation
+    assert isinstance(solver, ReynoldsCondition)
     return solver, evaluation
 
 
@@ -63,16 +78,16 @@ def test_a_switched_set_solves_as_its_own_factorisation(loaded_film, entering, l
     """Nodes entering the held set (their links cut) and leaving it (links restored), with the
     kept factor and a bordered correction: the solution of the new set's own matrix."""
     solver, evaluation = loaded_film
-    held = solver.fixed | evaluation.solution.cavitated
+    held = solver.fixed | evaluation.cavitated
     base = ~held.ravel()
-    factor = _NodeSetFactor.around(solver.pattern, base, solver.shape, 3)
-    values = solver._slot_values(evaluation.stencil)
-    factor.factorise(values, evaluation.stencil, base)
+    factor = NodeSetFactor.around(solver.pattern, base, solver.shape, 3)
+    values = _slot_values(evaluation.stencil, solver.pattern)
+    factor.factorise(values, evaluation.stencil, base, SolverCounts())
     to_hold, to_free = _boundary_nodes(base, solver.shape)
     new = base.copy()
     new[to_hold[:entering]] = False
     new[to_free[5 : 5 + leaving]] = True
-    assert factor.switch(values, evaluation.stencil, new)
+    assert factor.switch(values, evaluation.stencil, new, SWITCH_MAX_NODES)
     assert factor.is_for(evaluation.stencil, new)
     rhs = np.where(new, np.sin(np.arange(new.size)), 0.0)
     expected = spla.spsolve(_free_matrix(evaluation.stencil, new), rhs[new])
@@ -83,14 +98,14 @@ def test_a_switched_set_solves_as_its_own_factorisation(loaded_film, entering, l
 
 def test_a_switch_is_refused_for_another_film_or_too_many_nodes(loaded_film):
     solver, evaluation = loaded_film
-    base = ~(solver.fixed | evaluation.solution.cavitated).ravel()
-    factor = _NodeSetFactor.around(solver.pattern, base, solver.shape, 3)
-    values = solver._slot_values(evaluation.stencil)
-    factor.factorise(values, evaluation.stencil, base)
+    base = ~(solver.fixed | evaluation.cavitated).ravel()
+    factor = NodeSetFactor.around(solver.pattern, base, solver.shape, 3)
+    values = _slot_values(evaluation.stencil, solver.pattern)
+    factor.factorise(values, evaluation.stencil, base, SolverCounts())
     to_hold, _ = _boundary_nodes(base, solver.shape)
     many = base.copy()
     many[to_hold[: SWITCH_MAX_NODES + 1]] = False
-    assert not factor.switch(values, evaluation.stencil, many)
+    assert not factor.switch(values, evaluation.stencil, many, SWITCH_MAX_NODES)
     few = base.copy()
     few[to_hold[:1]] = False
     other = Stencil(
@@ -99,29 +114,25 @@ def test_a_switch_is_refused_for_another_film_or_too_many_nodes(loaded_film):
         evaluation.stencil.couette_face,
         evaluation.stencil.rhs,
     )
-    assert not factor.switch(values, other, few)
+    assert not factor.switch(values, other, few, SWITCH_MAX_NODES)
     assert factor.is_for(evaluation.stencil, base)  # a refused switch leaves the factor as it was
 
 
-def test_the_solver_uses_the_switch_and_reaches_the_same_solution(loaded_film, monkeypatch):
-    """A cold solution whose predicted set is a node or two off: with and without the switch,
-    the same set and pressures to rounding."""
+def test_the_solver_uses_the_switch_and_reaches_the_same_solution(loaded_film):
+    """A cold solution whose predicted set is a node or two off: with and without the switch
+    (``ActiveSetOptions.switch_max_nodes = 0``), the same set and pressures to rounding. The
+    switch is used: counted in ``factorisations`` (every numeric factorisation, on every grid),
+    the solution with it takes fewer (seen 1 against 2, both on the fine grid; the coarse grid
+    predicts by sweeps alone)."""
     solver, evaluation = loaded_film
     film = evaluation.film / CLEARANCE
-    switched = []
-    original = _NodeSetFactor.switch
-
-    def spy(self, *args):
-        switched.append(original(self, *args))
-        return switched[-1]
-
-    monkeypatch.setattr(_NodeSetFactor, "switch", spy)
-    solver.drop_factors()
-    with_switch = solver.solve(evaluation.stencil, film, "reynolds", None)
-    assert any(switched)  # this film's predicted set is a node or two off: the switch is used
-    solver.drop_factors()
-    monkeypatch.setattr(reynolds_module, "SWITCH_MAX_NODES", 0)
-    without = solver.solve(evaluation.stencil, film, "reynolds", None)
+    options = solver.solver_options
+    no_switch = replace(options, active_set=replace(options.active_set, switch_max_nodes=0))
+    with_counts, without_counts = SolverCounts(), SolverCounts()
+    with_switch = ReynoldsCondition(solver.nodes, options, with_counts).solve(evaluation.stencil, film)
+    without = ReynoldsCondition(solver.nodes, no_switch, without_counts).solve(evaluation.stencil, film)
+    # this film's predicted set is a node or two off: the switch is used, saving a factorisation
+    assert 1 <= with_counts.factorisations < without_counts.factorisations
     np.testing.assert_array_equal(with_switch.cavitated, without.cavitated)
     scale = np.abs(without.pressure).max()
     assert np.abs(with_switch.pressure - without.pressure).max() <= 1e-11 * scale
@@ -131,8 +142,8 @@ def test_the_set_prediction_keeps_the_solutions_own_set(loaded_film):
     """From the LCP solution itself the sweeps change nothing (it is their fixed point), so
     the predicted set is the solution's set, and the early stop ends them after one sweep."""
     solver, evaluation = loaded_film
-    predicted = solver.predicted_set(evaluation.stencil, evaluation.solution.pressure)
-    np.testing.assert_array_equal(predicted, evaluation.solution.cavitated)
+    predicted = solver.predicted_set(evaluation.stencil, evaluation.cavitation.pressure)
+    np.testing.assert_array_equal(predicted, evaluation.cavitated)
 
 
 def _python_sweeps(x, c_theta, c_z, rhs, fixed, sweeps, omega):
@@ -185,28 +196,24 @@ def test_the_sweeps_converge_to_the_active_set_solution(loaded_film):
     stencil = evaluation.stencil
     start = np.where(solver.fixed, solver.fixed_pressure, 0.0)
     relaxed = projected_sor(start, stencil.c_theta, stencil.c_z, stencil.rhs, solver.fixed, 4000, 1.9, False)
-    exact = evaluation.solution.pressure
+    exact = evaluation.cavitation.pressure
     assert np.abs(relaxed - exact).max() <= 1e-9 * np.abs(exact).max()
 
 
-def test_the_small_coarse_grids_predict_the_set_without_factorising(monkeypatch):
+def test_the_small_coarse_grids_predict_the_set_without_factorising():
     """A cold solution of the NTUA-like loaded film (100 x 60): the coarse grids below it (50 x 30,
     25 x 15) predict the set by sweeps alone, and the fine set starts within a bordered switch
-    of the final one, so the solution costs one factorisation."""
+    of the final one, so the solution costs one factorisation. Counted: the solver's
+    ``factorisations`` (every numeric factorisation on every grid, the coarse grids' masked ones
+    included), so one means the fine grid's alone."""
     bearing = make_bearing(1.0, axial_nodes=100, circumferential_nodes=60)
-    factorised: list[int] = []
-    original = _NodeSetFactor.factorise
-
-    def spy(self, *args):
-        factorised.append(self.nodes.size)
-        return original(self, *args)
-
-    monkeypatch.setattr(_NodeSetFactor, "factorise", spy)
+    before = bearing.solver.counts.copy()
     state = bearing.solve_at(JournalPosition(ey=-0.6 * CLEARANCE, ez=0.3 * CLEARANCE), warm_start=False)
     assert state.cavitated.any()
-    assert factorised == [100 * 60]
-    coarse = bearing._solver_state().reynolds.coarse_grid()
-    assert coarse is not None and isinstance(coarse.solver, ReynoldsSolver) and coarse.solver.masked
+    assert bearing.solver.counts.film_solutions - before.film_solutions == 1
+    assert bearing.solver.counts.factorisations - before.factorisations == 1
+    coarse = bearing.solver.cavitation.coarse_grid()
+    assert coarse is not None and isinstance(coarse.model, ReynoldsCondition) and coarse.model.masked
 
 
 def test_a_long_coarsest_grid_solves_its_own_set_before_the_sweeps():
@@ -215,8 +222,8 @@ def test_a_long_coarsest_grid_solves_its_own_set_before_the_sweeps():
     iterations), so that grid solves its own active set and the fine set starts near the
     final one (4 iterations)."""
     bearing = make_bearing(1.0, axial_nodes=200, circumferential_nodes=122)
-    coarse = bearing._solver_state().reynolds.coarse_grid()
-    assert coarse is not None and coarse.solver.shape == (100, 61) and coarse.solver.coarse_grid() is None
+    coarse = bearing.solver.cavitation.coarse_grid()
+    assert coarse is not None and coarse.model.shape == (100, 61) and coarse.model.coarse_grid() is None
     state = bearing.solve_at(JournalPosition(ey=-0.6 * CLEARANCE, ez=0.3 * CLEARANCE), warm_start=False)
     assert state.cavitated.any()
     assert state.iterations <= 6

@@ -43,10 +43,10 @@ import numpy as np
 import pytest
 
 from shaftline.film import BearingGeometry, JournalBearing, JournalPosition, OperatingPoint, SolverOptions
+from shaftline.film.cavitation import CAVITATION_MODELS, NodeGrid
 from shaftline.film.geometry import FilmProfile
-from shaftline.film.jfo import solve_jfo
 from shaftline.film.problem import SupplyGroove
-from shaftline.film.reynolds import ReynoldsSolver, build_stencil
+from shaftline.film.stencil import build_stencil
 
 # -- the published definition (LCP_pocket_pad.m) ----------------------------------------------
 LENGTH = 20e-3  # m, slider length = bearing circumference
@@ -129,9 +129,10 @@ def solve_slice(nodes: int, model: str) -> dict[str, np.ndarray]:
     fixed[[0, 2]] = True
     fixed[1, 0] = True  # the groove, on the grid's first angle
     feed = (AMBIENT - CAVITATION) / bearing.pressure_scale
-    solver = ReynoldsSolver((3, nodes), d_theta, d_z, fixed, np.where(fixed, feed, 0.0))
+    grid_nodes = NodeGrid.of((3, nodes), d_theta, d_z, fixed, np.where(fixed, feed, 0.0))
+    solver = CAVITATION_MODELS[model](grid_nodes, SolverOptions())
     stencil = build_stencil(films, d_theta, d_z)
-    solution = solve_jfo(solver, stencil, films) if model == "jfo" else solver.solve(stencil, films, "reynolds")
+    solution = solver.solve(stencil, films)
     pressure = np.where(fixed, feed, solution.pressure)[1] * bearing.pressure_scale + CAVITATION
     x = ((grid.theta - grid.theta[0]) % (2 * np.pi)) * RADIUS
     return {
