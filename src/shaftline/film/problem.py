@@ -16,10 +16,9 @@ import math
 import os
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Literal, get_args
+from typing import TYPE_CHECKING, Any, Literal, get_args
 
 from shaftline.errors import InputError, require_finite, require_positive
-from shaftline.film.cavitation import CAVITATION_MODELS, CavitationModel, cavitation_model
 from shaftline.film.geometry import (
     BORE_ANCHORS,
     MIN_AXIAL_NODES,
@@ -45,6 +44,9 @@ from shaftline.film.options import (
 )
 from shaftline.film.turbulence import TURBULENCE_MODELS, TURBULENCE_MODES, TurbulenceMode, TurbulenceModel
 
+if TYPE_CHECKING:
+    from shaftline.film.cavitation import CavitationModel
+
 #: The cavitation models a case file names (:data:`shaftline.film.cavitation.CAVITATION_MODELS`
 #: holds their classes; a class of one's own serves from Python).
 Cavitation = Literal["reynolds", "jfo", "half_sommerfeld"]
@@ -59,7 +61,6 @@ CAVITATED_SHEARS: tuple[CavitatedShear, ...] = get_args(CavitatedShear)
 __all__ = [
     "BORE_ANCHORS",
     "CAVITATED_SHEARS",
-    "CAVITATION_MODELS",
     "FILM_STARTS",
     "ROTATIONS",
     "ActiveSetOptions",
@@ -181,6 +182,8 @@ def estimated_memory(
     while shape is not None:
         total += _DENSE_BYTES * shape[0] * shape[1] + _FREE_FACTOR_SHARE * _FACTOR_BYTES * _factor_fill(*shape)
         shape = coarse_shape(shape)
+    from shaftline.film.cavitation import cavitation_model
+
     model = cavitation_model(cavitation)
     if model.dense_bytes or model.factor_bytes:
         nodes = int(axial_nodes) * int(circumferential_nodes)
@@ -392,10 +395,15 @@ class SolverOptions:
     def __post_init__(self) -> None:
         require_nodes("axial_nodes", self.axial_nodes, MIN_AXIAL_NODES)
         require_nodes("circumferential_nodes", self.circumferential_nodes, MIN_CIRCUMFERENTIAL_NODES)
-        try:
-            cavitation_model(self.cavitation)
-        except ValueError as exc:
-            raise InputError("cavitation", self.cavitation, "", str(exc)) from None
+        # A model named in a case file is known without importing the models (the start-up of an
+        # input error); another name or a class is checked against the registry.
+        if not (isinstance(self.cavitation, str) and self.cavitation in get_args(Cavitation)):
+            from shaftline.film.cavitation import cavitation_model
+
+            try:
+                cavitation_model(self.cavitation)
+            except ValueError as exc:
+                raise InputError("cavitation", self.cavitation, "", str(exc)) from None
         groups = {
             "active_set": ActiveSetOptions,
             "jfo": JfoOptions,
@@ -435,6 +443,8 @@ class SolverOptions:
     @property
     def cavitation_model(self) -> type[CavitationModel]:
         """The class of :attr:`cavitation` (:func:`shaftline.film.cavitation.cavitation_model`)."""
+        from shaftline.film.cavitation import cavitation_model
+
         return cavitation_model(self.cavitation)
 
     def _check_memory(self) -> None:
@@ -502,6 +512,8 @@ class BearingProblem:
     options: SolverOptions = field(default_factory=SolverOptions)
 
     def __post_init__(self) -> None:
+        from shaftline.film.cavitation import CAVITATION_MODELS
+
         self._check_cell_shape()
         model = self.options.cavitation_model
         if self.geometry.surface is not None and not model.rough_surfaces:
@@ -567,3 +579,13 @@ class BearingProblem:
         """Flow scale ``omega R^2 c / 2``, m^3/s."""
         g = self.geometry
         return 0.5 * self.operating.speed * g.radius**2 * g.radial_clearance
+
+
+def __getattr__(name: str) -> Any:
+    # The registry is the cavitation package's; importing it here would import every model
+    # with the problem (which the case schema imports), so it is looked up when asked for.
+    if name == "CAVITATION_MODELS":
+        from shaftline.film.cavitation import CAVITATION_MODELS
+
+        return CAVITATION_MODELS
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
