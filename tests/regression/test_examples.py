@@ -32,8 +32,6 @@ from typing import Any
 
 import pytest
 
-from shaftline.cases import load_case
-from shaftline.pipeline import dumps, results_document, run_case
 from tests.conftest import invoke
 
 HERE = Path(__file__).parent
@@ -161,10 +159,9 @@ def test_compare_sees_a_change():
         pytest.param("cpp_blade_bearing", marks=pytest.mark.slow),
     ],
 )
-def test_run_matches_baseline(name):
-    result = run_case(load_case(EXAMPLES / f"{name}.toml"))
+def test_run_matches_baseline(name, example_document):
     expected = new_layout(baseline(name))
-    actual = json.loads(dumps(results_document(result)))
+    actual = example_document(name)
     actual["shaftline_version"] = expected["shaftline_version"]
     actual = without_added(actual)
     assert compare(actual, expected, rtol=RTOL_CARRIER if name == "cpp_blade_bearing" else RTOL) == []

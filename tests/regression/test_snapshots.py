@@ -22,8 +22,6 @@ from typing import Any
 
 import pytest
 
-from shaftline.cases import load_case
-from shaftline.pipeline import dumps, results_document, run_case
 from tests.conftest import invoke
 
 HERE = Path(__file__).parent
@@ -89,9 +87,8 @@ def test_differences_see_a_change_of_one_part_in_a_hundred_billion():
 
 
 @pytest.mark.parametrize("name", RUNS)
-def test_run_gives_the_snapshot(name, monkeypatch):
-    monkeypatch.chdir(EXAMPLES)  # the case names its data files relative to itself, as the CLI writes them
-    actual = json.loads(dumps(results_document(run_case(load_case(Path(f"{name}.toml"))))))
+def test_run_gives_the_snapshot(name, example_document):
+    actual = example_document(name)
     actual.pop("shaftline_version", None)
     assert differences(actual, snapshot(name)) == []
 
