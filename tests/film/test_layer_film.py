@@ -19,12 +19,11 @@ import pytest
 from shaftline.cases import load_case
 from shaftline.errors import InputError
 from shaftline.film import JournalBearing
-from shaftline.film.bearing import LINER_TOLERANCE
 from shaftline.film.layer import layer_operator
 from shaftline.film.liner import Liner
 from shaftline.film.roughness import SurfaceRoughness, gaussian_integral
 from tests.conftest import invoke
-from tests.film.test_liner import RIG
+from tests.film.test_liner import LINER_TOLERANCE, RIG
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -45,7 +44,7 @@ def test_coupled_solution_obeys_the_layer_compliance_node_by_node(ntua) -> None:
     eq = bearing.equilibrium(ntua.load_y, ntua.load_z)
     assert eq.converged
     state = eq.state
-    assert state.liner_deformation is not None and state.asperity_pressure is not None
+    assert state.liner is not None and state.rough is not None
     nz, nt = state.film.shape
     layer = layer_operator(
         (nz, nt),
@@ -56,15 +55,15 @@ def test_coupled_solution_obeys_the_layer_compliance_node_by_node(ntua) -> None:
         liner.poisson,
         half_end_cells=True,
     )
-    expected = layer.apply(state.pressure + state.asperity_pressure)
+    expected = layer.apply(state.pressure + state.rough.asperity_pressure)
     c = ntua.geometry.radial_clearance
-    assert np.abs(state.liner_deformation - expected).max() <= LINER_TOLERANCE * c
+    assert np.abs(state.liner.deformation - expected).max() <= LINER_TOLERANCE * c
     rigid = bearing.film(state.position)
-    np.testing.assert_allclose(state.film, rigid + state.liner_deformation, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(state.film, rigid + state.liner.deformation, rtol=0, atol=1e-15)
     assert state.max_liner_deformation > 1e-6  # micrometres: not a stiff liner
     # The layer spreads the load: the deformation is not the column law of the local pressure.
-    column = liner.compliance * (state.pressure + state.asperity_pressure)
-    assert np.abs(state.liner_deformation - column).max() > 0.05 * column.max()
+    column = liner.compliance * (state.pressure + state.rough.asperity_pressure)
+    assert np.abs(state.liner.deformation - column).max() > 0.05 * column.max()
 
 
 @pytest.mark.parametrize("rough", [False, True])
@@ -79,15 +78,16 @@ def test_film_layer_jacobian_matches_central_differences(ntua, rough: bool) -> N
     bearing = JournalBearing(geometry, replace(ntua.operating, speed=speed), ntua.options)
     eq = bearing.equilibrium(ntua.load_y, ntua.load_z)
     position = eq.state.position
-    evaluation = bearing._evaluate(position, warm=False)
-    jacobian = bearing._position_jacobian(evaluation)
+    solver = bearing.solver
+    evaluation = solver.evaluate(position, warm=False)
+    jacobian = solver.position_response(evaluation)[0]
     step = 1e-4 * ntua.geometry.radial_clearance
     columns = []
     for axis in ("ey", "ez"):
         forces = []
         for sign in (1.0, -1.0):
             moved = replace(position, **{axis: getattr(position, axis) + sign * step})
-            forces.append(bearing._evaluate(moved, warm=False, deformation=evaluation.deformation).force)
+            forces.append(solver.evaluate(moved, warm=False, deformation=evaluation.deformation).force)
         columns.append((forces[0] - forces[1]) / (2 * step))
     numeric = np.column_stack(columns)
     assert np.abs(jacobian - numeric).max() <= 5e-3 * np.abs(numeric).max()
@@ -194,7 +194,7 @@ def test_layer_on_the_lined_rig_lifts_the_end_film_and_runs_the_low_speed_ends_i
     surface = case.geometry.surface
     assert surface is not None
     cap = float(surface.greenwood_tripp_constant * gaussian_integral(2.5, 0.0))
-    assert eq.state.max_asperity_pressure > 1.5 * cap
+    assert eq.state.rough.max_asperity_pressure > 1.5 * cap
 
 
 def test_under_resolved_layer_is_noted(tmp_path: Path) -> None:

@@ -17,6 +17,7 @@ import pytest
 
 from shaftline.errors import InputError
 from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
+from shaftline.film.equilibrium.steps import moved
 from shaftline.film.roughness import SurfaceRoughness
 
 POLYMER = SurfaceRoughness.preset("steel_polymer")
@@ -47,14 +48,16 @@ def test_thick_film_reproduces_the_smooth_solver() -> None:
     assert rough.min_film_ratio > 80
     for name in ("eccentricity_ratio", "attitude_angle", "min_film_thickness", "max_pressure", "friction_force"):
         assert getattr(rough, name) == pytest.approx(getattr(smooth, name), rel=1e-9), name
-    assert rough.asperity_load == 0.0 and rough.boundary_friction_force == 0.0
-    assert rough.lubrication_regime == "full film"
+    assert rough.rough.asperity_load == 0.0 and rough.rough.boundary_friction_force == 0.0
+    assert rough.rough.lubrication_regime == "full film"
 
 
 def test_smooth_state_reports_no_contact_and_all_fluid_friction() -> None:
     state = _rig(60, replace(RIG, surface=None)).equilibrium(load_y=-LOAD).state
-    assert state.asperity_pressure is None and state.film_ratio is None and state.lubrication_regime is None
-    assert state.fluid_friction_force == state.friction_force and state.boundary_friction_force == 0.0
+    # No rough part (asperity pressure, film ratio, regime, and the friction split: a smooth film's
+    # friction is all the film's shear) and none of its load or film ratio.
+    assert state.rough is None and not state.contact
+    assert state.asperity_load_share == 0.0 and state.min_film_ratio == math.inf
 
 
 def test_asperities_carry_part_of_a_slow_heavy_load_and_less_as_speed_rises(sweep: dict[float, object]) -> None:
@@ -63,14 +66,15 @@ def test_asperities_carry_part_of_a_slow_heavy_load_and_less_as_speed_rises(swee
     shares = [sweep[rpm].asperity_load_share for rpm in sorted(sweep)]  # type: ignore[attr-defined]
     assert shares[0] > 0.1 and sweep[15].asperity_load_share > 0.01  # type: ignore[attr-defined]
     assert all(a > b for a, b in zip(shares[:6], shares[1:6], strict=False))
-    assert sweep[15].lubrication_regime == "boundary"  # type: ignore[attr-defined]
-    assert sweep[35].lubrication_regime == "mixed"  # type: ignore[attr-defined]
-    assert sweep[95].lubrication_regime == "full film"  # type: ignore[attr-defined]
+    assert sweep[15].rough.lubrication_regime == "boundary"  # type: ignore[attr-defined]
+    assert sweep[35].rough.lubrication_regime == "mixed"  # type: ignore[attr-defined]
+    assert sweep[95].rough.lubrication_regime == "full film"  # type: ignore[attr-defined]
     assert abs(sweep[400].asperity_load_share) < 1e-9  # type: ignore[attr-defined]
     for state in sweep.values():
         # The friction split adds up; the boundary part is the boundary coefficient on the asperities.
-        assert state.fluid_friction_force + state.boundary_friction_force == pytest.approx(state.friction_force)  # type: ignore[attr-defined]
-        assert state.boundary_friction_force <= POLYMER.boundary_friction * state.asperity_load * 1.5 + 1e-9  # type: ignore[attr-defined]
+        rough = state.rough  # type: ignore[attr-defined]
+        assert rough.fluid_friction_force + rough.boundary_friction_force == pytest.approx(state.friction_force)  # type: ignore[attr-defined]
+        assert rough.boundary_friction_force <= POLYMER.boundary_friction * rough.asperity_load * 1.5 + 1e-9
 
 
 def test_friction_coefficient_falls_then_rises_stribeck(sweep: dict[float, object]) -> None:
@@ -99,15 +103,16 @@ def test_equilibrium_jacobian_is_exact_with_flow_factors_and_asperities() -> Non
     the analytic Jacobian to 2e-6 of its norm (1e-5 with the coarser)."""
     bearing = _rig(15)
     position = bearing.equilibrium(load_y=-LOAD).state.position
-    evaluation = bearing._evaluate(position, warm=False)
-    jacobian = bearing._position_jacobian(evaluation)
+    solver = bearing.solver
+    evaluation = solver.evaluate(position, warm=False)
+    jacobian = solver.position_response(evaluation)[0]
     for step, tolerance in ((1e-8, 1e-5), (3e-9, 2e-6)):
         columns = []
         for k in range(2):
             d = np.zeros(2)
             d[k] = step
-            plus = bearing._evaluate(bearing._moved(position, d), warm=False).force
-            minus = bearing._evaluate(bearing._moved(position, -d), warm=False).force
+            plus = solver.evaluate(moved(position, d), warm=False).force
+            minus = solver.evaluate(moved(position, -d), warm=False).force
             columns.append((plus - minus) / (2 * step))
         assert np.abs(np.column_stack(columns) - jacobian).max() < tolerance * np.abs(jacobian).max()
 
@@ -125,7 +130,8 @@ def test_damping_acts_on_the_mean_gap() -> None:
         up = replace(position, **{name: getattr(position, name) + step})
         down = replace(position, **{name: getattr(position, name) - step})
         columns.append(
-            (bearing._evaluate(up, warm=False).force - bearing._evaluate(down, warm=False).force) / (2 * step)
+            (bearing.solver.evaluate(up, warm=False).force - bearing.solver.evaluate(down, warm=False).force)
+            / (2 * step)
         )
     np.testing.assert_allclose(lin.velocity_derivative, np.column_stack(columns), rtol=1e-6)
 
@@ -141,7 +147,7 @@ def test_film_load_rows_include_the_asperities() -> None:
     np.testing.assert_allclose(
         load.row_force.sum(axis=1), [state.force_y, state.force_z], rtol=0.0, atol=1e-9 * state.load_capacity
     )
-    assert load.state.asperity_load > 0.05 * LOAD
+    assert load.state.rough.asperity_load > 0.05 * LOAD
 
 
 def test_mass_conserving_model_with_roughness_is_refused() -> None:
@@ -164,7 +170,7 @@ def test_rough_pressure_does_not_depend_on_the_path() -> None:
     nearby = replace(position, ey=0.999 * position.ey, ez=position.ez + 2e-6)
     reference = _reference(bearing, position)
     cold = bearing.solve_at(position, warm_start=False)
-    assert cold.lubrication_regime == "boundary"
+    assert cold.rough.lubrication_regime == "boundary"
     assert _relative(bearing, cold.pressure, reference) <= TOLERANCE
     bearing.solve_at(nearby, warm_start=False)
     warm = bearing.solve_at(position, warm_start=True)
@@ -191,7 +197,7 @@ def test_seed001_rig_example_moves_from_boundary_towards_full_film() -> None:
         eq = bearing.equilibrium(case.load_y, case.load_z)
         assert eq.converged and not eq.contact
         states.append(eq.state)
-    assert states[0].lubrication_regime in ("boundary", "mixed") and states[0].asperity_load_share > 0.01
+    assert states[0].rough.lubrication_regime in ("boundary", "mixed") and states[0].asperity_load_share > 0.01
     assert states[0].min_film_ratio < states[1].min_film_ratio < states[2].min_film_ratio
     assert states[0].asperity_load_share > states[1].asperity_load_share > states[2].asperity_load_share
 
@@ -215,7 +221,7 @@ def test_stribeck_curve_is_the_same_on_a_pool_and_a_rough_bearing_pickles() -> N
     copy = pickle.loads(pickle.dumps(bearing))
     a = bearing.equilibrium(load_y=-LOAD).state
     b = copy.equilibrium(load_y=-LOAD).state
-    assert a.asperity_load == b.asperity_load and a.friction_force == b.friction_force
+    assert a.rough.asperity_load == b.rough.asperity_load and a.friction_force == b.friction_force
 
 
 def test_stribeck_curve_runs_serially_below_the_work_estimate(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -12,13 +12,18 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import shaftline.film.bearing as bearing_module
+import shaftline.film.equilibrium.newton as newton_module
 from shaftline.cases import load_case
-from shaftline.film import JournalBearing
+from shaftline.film import Equilibrium, JournalBearing
 from shaftline.film.geometry import JournalPosition
 from shaftline.film.study import BearingCase
 
 ROOT = Path(__file__).resolve().parents[2]
+
+
+def _with_options(bearing: JournalBearing, **changes: object) -> JournalBearing:
+    """``bearing`` with some of its solver options replaced (``settling=``, ``newton=``...)."""
+    return JournalBearing.from_problem(replace(bearing.problem, options=replace(bearing.options, **changes)))
 
 
 def _rig(rpm: float, axial: int = 41, circumferential: int = 120) -> tuple[JournalBearing, float, float]:
@@ -49,9 +54,7 @@ def test_contact_zone_nodes_count_the_film_within_sigma_of_its_minimum(circumfer
 
 
 @pytest.mark.slow
-def test_warm_and_cold_starts_reach_the_same_boundary_equilibrium_of_a_resolved_rigid_bore(
-    monkeypatch: pytest.MonkeyPatch,
-) -> None:
+def test_warm_and_cold_starts_reach_the_same_boundary_equilibrium_of_a_resolved_rigid_bore() -> None:
     """Seed 001's rigid rig on 11 x 480 nodes (0.75 degree: 14 nodes across the contact zone) at
     3.5 and 7.7 rpm. From the closed-form start Newton stalls (residual 1-2 % of the load; checked
     below with the settling switched off), warm-started from the 20 rpm equilibrium it converges;
@@ -76,10 +79,10 @@ def test_warm_and_cold_starts_reach_the_same_boundary_equilibrium_of_a_resolved_
         assert math.hypot(a.ey - b.ey, a.ez - b.ez) < 1e-7 * c, rpm
         assert 0.0 < cold.state.min_film_ratio < 0.2 and 0.05 < cold.state.asperity_load_share < 0.15
         films.append(cold.state.min_film_thickness)
-        # Without the settling the cold start stalls (what the test guards).
-        with monkeypatch.context() as patch:
-            patch.setattr(bearing_module, "SETTLE_ZONE_NODES", 10**6)
-            newton = bearing.equilibrium(load_y, load_z)
+        # Without the settling (no grid resolves a zone of 10**6 nodes) the cold start stalls
+        # (what the test guards).
+        unsettled = _with_options(bearing, settling=replace(bearing.options.settling, zone_nodes=10**6))
+        newton = unsettled.equilibrium(load_y, load_z)
         assert not newton.converged, rpm
     assert films[0] < films[1] < start.state.min_film_thickness
 
@@ -88,20 +91,21 @@ def test_an_unresolved_contact_zone_is_not_settled(monkeypatch: pytest.MonkeyPat
     """On the example's own 3 degree grid (3-4 nodes across the contact zone) the film pressure of
     the contact is a spike on one node and the discrete force jumps as the minimum moves between
     nodes: the settling is not tried and the stalled equilibrium is reported not converged (not
-    contact: its film is far above the boundary limit), as quickly as before."""
+    contact: its film is far above the boundary limit), as quickly as before. (The settling is
+    spied on where the Newton iteration calls it: :func:`shaftline.film.equilibrium.settling.settle`.)"""
     bearing, load_y, load_z = _rig(3.5)
     called = []
-    settle = JournalBearing._settle
+    settle = newton_module.settle
 
-    def spy(self, *args, **kwargs):  # type: ignore[no-untyped-def]
+    def spy(*args, **kwargs):  # type: ignore[no-untyped-def]
         called.append(True)
-        return settle(self, *args, **kwargs)
+        return settle(*args, **kwargs)
 
-    monkeypatch.setattr(JournalBearing, "_settle", spy)
+    monkeypatch.setattr(newton_module, "settle", spy)
     eq = bearing.equilibrium(load_y, load_z)
     assert not eq.converged and not eq.contact
     assert not called
-    assert bearing.contact_zone_nodes(eq.state.film) < bearing_module.SETTLE_ZONE_NODES
+    assert bearing.contact_zone_nodes(eq.state.film) < bearing.options.settling.zone_nodes
     assert eq.state.min_film_ratio > -1.0
     assert np.isfinite(eq.residual)
 
@@ -118,26 +122,23 @@ def _ntua_rough(index: int) -> tuple[JournalBearing, BearingCase]:
     return JournalBearing(geometry, operating, case.options), case
 
 
-def test_a_crawling_newton_iteration_stops_with_the_status_it_ends_with_anyway(
-    monkeypatch: pytest.MonkeyPatch,
-) -> None:
+def test_a_crawling_newton_iteration_stops_with_the_status_it_ends_with_anyway() -> None:
     """The NTUA rigid rough bore at 12.36 rpm (the curve's third speed) from a cold start: below
     the mean plane with one node in its contact zone, the line search cuts every Newton step to
     1/16 or 1/8 and the residual falls 1-3 % an iteration, above the 1 % of the stall rule. The
-    crawl rule (CRAWL_ITERATIONS such steps in a row, each leaving over CRAWL_REDUCTION of the
-    residual) stops it after 22 iterations; without it the iteration spends all 60 and ends
+    crawl rule (``NewtonOptions.crawl_iterations`` such steps in a row, each leaving over
+    ``crawl_reduction`` of the residual) stops it after 22 iterations; without it the iteration spends all 60 and ends
     with the same status: not converged, not in contact."""
     bearing, case = _ntua_rough(2)
     assert bearing.operating.speed * 30 / math.pi == pytest.approx(12.364, abs=1e-3)
 
-    def solve(b: JournalBearing) -> bearing_module.Equilibrium:
+    def solve(b: JournalBearing) -> Equilibrium:
         return b.equilibrium(case.load_y, case.load_z, tilt_y=case.tilt_y, tilt_z=case.tilt_z)
 
     stopped = solve(bearing)
     assert not stopped.converged and not stopped.contact
-    assert stopped.iterations <= 2 * bearing_module.CRAWL_ITERATIONS + 2
-    monkeypatch.setattr(bearing_module, "CRAWL_ITERATIONS", 10**6)
-    spent = solve(JournalBearing(bearing.geometry, bearing.operating, bearing.options))
+    assert stopped.iterations <= 2 * bearing.options.newton.crawl_iterations + 2
+    spent = solve(_with_options(bearing, newton=replace(bearing.options.newton, crawl_iterations=10**6)))
     assert spent.iterations == bearing.options.max_iterations
     assert not spent.converged and not spent.contact
 

@@ -29,6 +29,9 @@ import scipy.sparse.linalg as spla
 
 from shaftline.errors import InputError
 from shaftline.film import JournalPosition
+from shaftline.film.equilibrium import find_equilibrium
+from shaftline.film.equilibrium.starts import coarse_start
+from shaftline.film.options import ActiveSetOptions
 from tests.conftest import CLEARANCE, make_bearing
 
 TOLERANCE = 1e-9
@@ -69,10 +72,10 @@ def _reference_pressure(stencil, fixed: np.ndarray, fixed_pressure: np.ndarray) 
 
 def _reference(bearing, position: JournalPosition) -> np.ndarray:
     """Reference pressure (dimensionless, above cavitation, fixed nodes included) at ``position``."""
-    evaluation = bearing._evaluate(position, warm=False)
-    solver = bearing._solver_state().reynolds
-    pressure = _reference_pressure(evaluation.stencil, solver.fixed, solver.fixed_pressure)
-    return np.where(solver.fixed, solver.fixed_pressure, pressure)
+    evaluation = bearing.solver.evaluate(position, warm=False)
+    nodes = bearing.solver.nodes
+    pressure = _reference_pressure(evaluation.stencil, nodes.fixed, nodes.fixed_pressure)
+    return np.where(nodes.fixed, nodes.fixed_pressure, pressure)
 
 
 def _relative(bearing, state_pressure: np.ndarray, reference: np.ndarray) -> float:
@@ -104,7 +107,7 @@ def test_cold_and_warm_start_match_the_reference(length_to_diameter, epsilon):
     cold = bearing.solve_at(position, warm_start=False)
     assert _relative(bearing, cold.pressure, reference) <= TOLERANCE
     bearing.solve_at(nearby, warm_start=False)
-    solver = bearing._solver_state().reynolds
+    solver = bearing.solver.cavitation
     before = solver.pcg_iterations
     warm = bearing.solve_at(position, warm_start=True)
     assert _relative(bearing, warm.pressure, reference) <= TOLERANCE
@@ -135,11 +138,11 @@ def test_frozen_set_derivatives_match_a_direct_solve():
     stiffness and damping) against ``spsolve`` on the free sub-matrix of the reference
     operator: the same linear system, so the same 1e-9."""
     bearing = _design_bearing(1.0)
-    evaluation = bearing._evaluate(JournalPosition.from_polar(0.6 * CLEARANCE, np.pi), warm=False)
-    solver = bearing._solver_state().reynolds
+    evaluation = bearing.solver.evaluate(JournalPosition.from_polar(0.6 * CLEARANCE, np.pi), warm=False)
+    solver = bearing.solver.cavitation
     change = np.random.default_rng(10).normal(size=evaluation.film.shape)
-    d_pressure = solver.linear_response(evaluation.stencil, evaluation.solution, change)[0]
-    free = ~(solver.fixed | evaluation.solution.cavitated).ravel()
+    d_pressure = solver.pressure_response(evaluation.stencil, evaluation.cavitation, change)[0]
+    free = ~(bearing.solver.nodes.fixed | evaluation.cavitated).ravel()
     matrix = _operator(evaluation.stencil)[free][:, free].tocsc()
     expected = np.zeros(free.size)
     expected[free] = spla.spsolve(matrix, -change.ravel()[free])
@@ -174,13 +177,13 @@ def test_equilibrium_started_from_a_neighbours_set_is_the_same_equilibrium(tilt_
     neighbour = bearing.equilibrium(0.9 * load, tilt_y=tilt_y)
     start = neighbour.state.position
     from_start = bearing.equilibrium(load, tilt_y=tilt_y, initial=start)
-    solver = bearing._solver_state().reynolds
+    solver = bearing.solver.cavitation
     starts = []
     solve = solver.solve
 
-    def recording(stencil, film, cavitation="reynolds", initial_cavitated=None, **options):
-        starts.append(initial_cavitated)
-        return solve(stencil, film, cavitation, initial_cavitated, **options)
+    def recording(stencil, film, start=None, **options):
+        starts.append(start)
+        return solve(stencil, film, start, **options)
 
     solver.solve = recording
     from_set = bearing.equilibrium(load, tilt_y=tilt_y, initial=start, initial_cavitated=neighbour.state.cavitated)
@@ -223,35 +226,41 @@ def test_linearisation_from_the_equilibrium_set_is_the_cold_linearisation():
 
 
 def test_a_refined_trial_is_the_reference_solution_without_a_factorisation():
-    """A Newton trial near the equilibrium (film/bearing.py, ``REFINE_RESIDUAL``) iterates its
+    """A Newton trial near the equilibrium (``NewtonOptions.refine_residual``) iterates its
     pressure from the step's linear guess with the kept factor of the film it steps from: it
     must land on the reference LCP solution at the new position to the module's tolerance and
     leave the kept factor that of the old film (no factorisation of the new one). From a guess
     of zero (a long way off) it must still reach the reference: the iteration then needs more
-    steps or falls back to a factorisation, never a wrong answer."""
+    steps or falls back to a factorisation, never a wrong answer. What is factorised is counted
+    by the solver's ``counts.factorisations`` (every numeric factorisation; a kept factor's
+    frozen-set solves and bordered updates are not one): unchanged over the trial, and over the
+    old film's frozen-set derivatives after it, which a factor of any other film would need."""
     bearing = make_bearing(1.0, axial_nodes=41, circumferential_nodes=144)
     position = JournalPosition.from_polar(0.6 * CLEARANCE, np.pi, tilt_y=4e-4)
-    evaluation = bearing._evaluate(position, warm=False)
-    _, _, d_pressure = bearing._position_response(evaluation)  # factorises the current film
-    solver = bearing._solver_state().reynolds
-    kept = solver._factor
-    assert kept is not None and kept.stencil is evaluation.stencil
+    solver = bearing.solver
+    evaluation = solver.evaluate(position, warm=False)
+    factorisations = solver.counts.factorisations
+    _, _, d_pressure = solver.position_response(evaluation)
+    # The kept factor is the current film's (its frozen-set derivatives cost no factorisation).
+    assert solver.counts.factorisations == factorisations
     step = np.array([2e-4, -1e-4]) * CLEARANCE
     moved = JournalPosition(
         ey=position.ey + step[0], ez=position.ez + step[1], tilt_y=position.tilt_y, tilt_z=position.tilt_z
     )
     guess = evaluation.relative_pressure + np.tensordot(step, d_pressure, axes=1)
-    trial = bearing._evaluate(moved, start=evaluation.solution.cavitated, refine_from=guess)
-    assert solver._factor is kept and kept.stencil is evaluation.stencil  # nothing factorised
+    trial = solver.evaluate(moved, start=evaluation.cavitated, refine_from=guess)
+    assert solver.counts.factorisations == factorisations  # nothing factorised
+    solver.position_response(evaluation)
+    assert solver.counts.factorisations == factorisations  # the kept factor is still the old film's
     reference = _reference(bearing, moved)
     assert np.abs(trial.relative_pressure - reference).max() <= TOLERANCE * np.abs(reference).max()
-    bearing._position_response(evaluation)  # the old film's factor again
-    far = bearing._evaluate(moved, start=evaluation.solution.cavitated, refine_from=np.zeros_like(guess))
+    solver.position_response(evaluation)  # the old film's factor again
+    far = solver.evaluate(moved, start=evaluation.cavitated, refine_from=np.zeros_like(guess))
     assert np.abs(far.relative_pressure - reference).max() <= TOLERANCE * np.abs(reference).max()
 
 
 def test_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium():
-    """Grid continuation (5 000 nodes or more, film/bearing.py ``CONTINUATION_NODES``) changes
+    """Grid continuation (5 000 nodes or more, ``ContinuationOptions.nodes``) changes
     the start, not the answer: the default equilibrium on 80 x 72 (5 760 nodes) against the one
     started from the closed-form position (``initial``, which skips the coarse grid), both to a
     force tolerance of 1e-10 of the load: the journal positions agree to 1e-8 of the clearance
@@ -259,19 +268,19 @@ def test_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium(
     pressures to 1e-6 of the peak; the continuation takes fewer fine Newton iterations."""
     bearing = make_bearing(1.0, axial_nodes=80, circumferential_nodes=72, tolerance=1e-10)
     load, tilt_y = -6e3, 4e-4
-    assert bearing._coarse_equilibrium(load, 0.0, tilt_y, 0.0) is not None  # it does continue
+    assert coarse_start(bearing.solver, np.array([load, 0.0]), tilt_y, 0.0, find_equilibrium) is not None  # continues
     continued = bearing.equilibrium(load, tilt_y=tilt_y)
-    closed_form = bearing._initial_position(np.array([load, 0.0]), tilt_y, 0.0)
+    closed_form = bearing.initial_position(load, 0.0, tilt_y, 0.0)
     direct = bearing.equilibrium(load, tilt_y=tilt_y, initial=closed_form)
     assert direct.converged and not direct.contact
     _assert_same_equilibrium(continued, direct, 1e-8 * CLEARANCE)
     assert continued.iterations < direct.iterations
 
 
-def _two_nodes_off(solver, cavitated: np.ndarray) -> np.ndarray:
+def _two_nodes_off(bearing, cavitated: np.ndarray) -> np.ndarray:
     """``cavitated`` with two of its nodes next to the pressurised film made free: a start set
     two nodes short of the settled one (their pressures go negative when solved)."""
-    free = ~(solver.fixed | cavitated)
+    free = ~(bearing.solver.nodes.fixed | cavitated)
     beside = cavitated & (np.roll(free, 1, axis=1) | np.roll(free, -1, axis=1))
     rows, columns = np.nonzero(beside)
     middle = np.argsort(np.abs(rows - cavitated.shape[0] // 2))[:2]  # mid-length: well inside the film
@@ -281,31 +290,32 @@ def _two_nodes_off(solver, cavitated: np.ndarray) -> np.ndarray:
 
 
 def test_an_unsettled_iterate_is_finished_by_its_own_factor():
-    """``settle=False`` (film/reynolds.py ``UNSETTLED_MAX_NODES``, the Newton iterates far from the
+    """``settle=False`` (``ActiveSetOptions.unsettled_max_nodes``, the Newton iterates far from the
     equilibrium) stops at a set two nodes short of settling: its pressure is that set's, clipped
     at zero, and is marked unsettled; its force is within 1e-4 of the settled one's (the two
     nodes sit on the cavitation boundary, where P is small). Finishing it on its own stencil
-    (``_settled_set``) must reach the reference LCP solution to the module's tolerance with the
-    kept factor and a low-rank update (no new factorisation)."""
+    (``FilmSolver.settled``) must reach the reference LCP solution to the module's tolerance with the
+    kept factor and a low-rank update (no new factorisation: ``solver.counts.factorisations``
+    unchanged; below ``pcg_min_nodes`` every other path to a new set factorises)."""
     bearing = make_bearing(1.0, axial_nodes=41, circumferential_nodes=144)
     position = JournalPosition.from_polar(0.6 * CLEARANCE, np.pi, tilt_y=4e-4)
-    settled = bearing._evaluate(position, warm=False)
-    solver = bearing._solver_state().reynolds
-    start = _two_nodes_off(solver, settled.solution.cavitated)
-    loose = bearing._evaluate(position, start=start, settle=False)
-    assert not loose.solution.settled
-    np.testing.assert_array_equal(loose.solution.cavitated, start)
-    assert loose.solution.pressure.min() >= 0.0
+    solver = bearing.solver
+    settled = solver.evaluate(position, warm=False)
+    start = _two_nodes_off(bearing, settled.cavitated)
+    loose = solver.evaluate(position, start=start, settle=False)
+    assert not loose.settled
+    np.testing.assert_array_equal(loose.cavitated, start)
+    assert loose.cavitation.pressure.min() >= 0.0
     scale = float(np.hypot(*settled.force))
     assert 0.0 < float(np.hypot(*(loose.force - settled.force))) < 1e-4 * scale
-    factor = solver._factor
-    finished = bearing._settled_set(loose)
-    assert finished.solution.settled
-    assert solver._factor is factor and factor.correction is not None  # switched, not factorised
+    factorisations = solver.counts.factorisations
+    finished = solver.settled(loose)
+    assert finished.settled
+    assert solver.counts.factorisations == factorisations  # switched, not factorised
     reference = _reference(bearing, position)
     assert np.abs(finished.relative_pressure - reference).max() <= TOLERANCE * np.abs(reference).max()
-    np.testing.assert_array_equal(finished.solution.cavitated, settled.solution.cavitated)
-    assert bearing._settled_set(finished) is finished
+    np.testing.assert_array_equal(finished.cavitated, settled.cavitated)
+    assert solver.settled(finished) is finished
 
 
 def test_equilibrium_through_unsettled_iterates_ends_on_the_exact_solution(monkeypatch):
@@ -313,36 +323,46 @@ def test_equilibrium_through_unsettled_iterates_ends_on_the_exact_solution(monke
     a start set two nodes off (``initial_cavitated``) and on the continued 80 x 72 grid, the
     equilibrium must (a) pass through unsettled iterates, (b) end on the reference LCP solution at
     its own position to the module's tolerance, and (c) land where the equilibrium with every
-    iterate settled (``UNSETTLED_MAX_NODES = 0``) lands: positions to 1e-8 of the clearance and
-    pressures to 1e-6 of the peak (both converge to a force tolerance of 1e-10 of the load; see
-    ``test_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium``)."""
-    import shaftline.film.reynolds as reynolds
-
+    iterate settled (``ActiveSetOptions(unsettled_max_nodes=0)``) lands: positions to 1e-8 of the
+    clearance and pressures to 1e-6 of the peak (both converge to a force tolerance of 1e-10 of
+    the load; see ``test_equilibrium_from_the_coarse_grid_is_the_closed_form_starts_equilibrium``).
+    The fine grid's film solutions are recorded at its cavitation model's ``solve``."""
     bearing = make_bearing(1.0, axial_nodes=80, circumferential_nodes=72, tolerance=1e-10)
     load, tilt_y = -6e3, 4e-4
-    solver = bearing._solver_state().reynolds
     solutions = []
-    solve = solver.solve
 
-    def recording(*args, **options):
-        solution = solve(*args, **options)
-        solutions.append(solution)
-        return solution
+    def record(bearing) -> None:
+        model = bearing.solver.cavitation
+        solve = model.solve
 
-    monkeypatch.setattr(solver, "solve", recording)
+        def recording(*args, **options):
+            solution = solve(*args, **options)
+            solutions.append(solution)
+            return solution
+
+        monkeypatch.setattr(model, "solve", recording)
+
+    record(bearing)
     loose = bearing.equilibrium(load, tilt_y=tilt_y)
     assert any(not s.settled for s in solutions) and solutions[-1].settled
     reference = _reference(bearing, loose.state.position)
     assert _relative(bearing, loose.state.pressure, reference) <= TOLERANCE
-    start = _two_nodes_off(solver, loose.state.cavitated)
+    start = _two_nodes_off(bearing, loose.state.cavitated)
     solutions.clear()
     from_set = bearing.equilibrium(load, tilt_y=tilt_y, initial=loose.state.position, initial_cavitated=start)
     assert not solutions[0].settled and solutions[-1].settled
     reference = _reference(bearing, from_set.state.position)
     assert _relative(bearing, from_set.state.pressure, reference) <= TOLERANCE
-    monkeypatch.setattr(reynolds, "UNSETTLED_MAX_NODES", 0)
+    every = make_bearing(
+        1.0,
+        axial_nodes=80,
+        circumferential_nodes=72,
+        tolerance=1e-10,
+        active_set=ActiveSetOptions(unsettled_max_nodes=0),
+    )
+    record(every)
     solutions.clear()
-    settled = bearing.equilibrium(load, tilt_y=tilt_y)
+    settled = every.equilibrium(load, tilt_y=tilt_y)
     assert all(s.settled for s in solutions)
     _assert_same_equilibrium(loose, settled, 1e-8 * CLEARANCE)
     _assert_same_equilibrium(from_set, settled, 1e-8 * CLEARANCE)
@@ -363,7 +383,7 @@ def test_an_equilibrium_never_reports_an_unsettled_set():
         ({"tolerance": 1e-10, "max_iterations": 1}, "closed form"),
     ):
         bearing = make_bearing(1.0, axial_nodes=80, circumferential_nodes=72, **options)
-        solver = bearing._solver_state().reynolds
+        solver = bearing.solver.cavitation
         settled = []
         solve = solver.solve
 
@@ -378,11 +398,11 @@ def test_an_equilibrium_never_reports_an_unsettled_set():
                 load,
                 tilt_y=tilt_y,
                 initial=exact.state.position,
-                initial_cavitated=_two_nodes_off(solver, exact.state.cavitated),
+                initial_cavitated=_two_nodes_off(bearing, exact.state.cavitated),
             )
             assert result.converged and result.iterations == 0
         else:
-            initial = bearing._initial_position(np.array([load, 0.0]), tilt_y, 0.0)
+            initial = bearing.initial_position(load, 0.0, tilt_y, 0.0)
             result = bearing.equilibrium(load, tilt_y=tilt_y, initial=initial)
             assert not result.converged and result.iterations == 1
         assert settled[-2:] == [False, True], (start, settled)
@@ -395,7 +415,7 @@ def test_an_unsettled_start_at_the_root_still_converges():
     last position: here the viscosity 6.3e-7 higher) is evaluated unsettled, its force off by
     about 1e-6 of the load, about its true residual. Stepping from it, the line search measured
     progress against that error and rejected every step (review of the eighth session: reported
-    not converged at 6.4e-7 of the load). An unsettled iterate below ``REFINE_RESIDUAL`` is
+    not converged at 6.4e-7 of the load). An unsettled iterate below ``NewtonOptions.refine_residual`` is
     settled before its step, so it must converge in one iteration, over a scan of viscosity
     changes of 1e-7 to 1e-2 either way too."""
     from dataclasses import replace

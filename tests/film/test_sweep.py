@@ -17,10 +17,11 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from shaftline import parallel
 from shaftline.errors import InputError
 from shaftline.film import BearingGeometry, OperatingPoint, SolverOptions, sweep
-from shaftline.film.study import BearingCase, solve_case
-from shaftline.film.sweeps import _chunks
+from shaftline.film.solve import solve_case
+from shaftline.film.study import BearingCase
 from tests.conftest import MINIMAL_CASE, invoke
 
 GEOMETRY = BearingGeometry(length=0.1, diameter=0.1, radial_clearance=1e-4)
@@ -60,6 +61,26 @@ def alone() -> list:
     return [solve_case(case) for case in cases()]
 
 
+class _Recorded(Exception):
+    """Raised by the recording ``parallel.map`` of :func:`_chunk_count`, so nothing is solved."""
+
+
+def _chunk_count(monkeypatch: pytest.MonkeyPatch, given: list[BearingCase], chunk_size: int) -> int:
+    """How many chunks ``sweep(given, chunk_size=chunk_size)`` hands to ``shaftline.parallel.map``
+    (the work items its workers receive), recorded there without solving them."""
+    counted: list[int] = []
+
+    def record(function: object, items: list, **options: object) -> object:
+        counted.append(len(items))
+        raise _Recorded
+
+    with monkeypatch.context() as patch:
+        patch.setattr(parallel, "map", record)
+        with pytest.raises(_Recorded):
+            sweep(given, chunk_size=chunk_size, coefficients=True)
+    return counted[0]
+
+
 def _numbers(result) -> np.ndarray:
     state = result.equilibrium.state
     return np.concatenate(
@@ -71,12 +92,12 @@ def _numbers(result) -> np.ndarray:
     )
 
 
-def test_serial_process_pool_and_dask_give_the_same_numbers(scheduler):
+def test_serial_process_pool_and_dask_give_the_same_numbers(scheduler, monkeypatch):
     given = cases()
     serial = sweep(given, backend="serial", chunk_size=4)
     pooled = sweep(given, workers=2, chunk_size=4)
     on_dask = sweep(given, scheduler=scheduler, chunk_size=4)
-    assert len(_chunks(given, 4, True)) == 6  # two problems (speeds) of ten cases: three chunks each
+    assert _chunk_count(monkeypatch, given, 4) == 6  # two problems (speeds) of ten cases: three chunks each
     for a, b, c, case in zip(serial, pooled, on_dask, given, strict=True):
         assert a.case is case and b.case is case and c.case is case  # input order, the caller's objects
         np.testing.assert_allclose(_numbers(b), _numbers(a), rtol=1e-12, atol=0)
@@ -111,7 +132,7 @@ def test_warm_starts_save_newton_iterations():
     assert sum(swept) <= 0.7 * sum(cold), (swept, cold)
 
 
-def test_equal_problems_built_apart_share_a_bearing():
+def test_equal_problems_built_apart_share_a_bearing(monkeypatch):
     """Cases compare by the value of their problem, not by the identity of its objects."""
     given = [
         BearingCase(
@@ -119,10 +140,10 @@ def test_equal_problems_built_apart_share_a_bearing():
         )
         for k in range(1, 4)
     ]
-    assert len(_chunks(given, 32, True)) == 1
-    assert len(_chunks(given, 2, True)) == 2
+    assert _chunk_count(monkeypatch, given, 32) == 1
+    assert _chunk_count(monkeypatch, given, 2) == 2
     other = replace(given[0], operating=OperatingPoint(speed=101.0, viscosity=0.02))
-    assert len(_chunks([*given, other], 32, True)) == 2
+    assert _chunk_count(monkeypatch, [*given, other], 32) == 2
 
 
 def test_a_case_at_the_film_floor_gets_its_answer_alone():

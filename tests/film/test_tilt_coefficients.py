@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 from shaftline.film import JournalPosition, TiltLinearisation, dynamic_coefficients
+from shaftline.film.state import bearing_state
 from tests.conftest import CLEARANCE, make_bearing
 
 NAMES = ("ey", "ez", "tilt_y", "tilt_z")
@@ -28,7 +29,7 @@ NAMES = ("ey", "ez", "tilt_y", "tilt_z")
 
 def _loads(bearing, position, rates=(0.0, 0.0)) -> np.ndarray:
     """(F_y, F_z, M_y, M_z) of the film solution at ``position`` with tilt ``rates``, started cold."""
-    state = bearing._state(bearing._evaluate(position, warm=False, tilt_rates=rates))
+    state = bearing_state(bearing.solver, bearing.solver.evaluate(position, warm=False, tilt_rates=rates))
     return np.array([state.force_y, state.force_z, state.moment_y, state.moment_z])
 
 

@@ -17,6 +17,7 @@ from scipy.integrate import quad
 
 from shaftline.errors import InputError
 from shaftline.film import BearingGeometry, JournalBearing, OperatingPoint, SolverOptions
+from shaftline.film.equilibrium.steps import moved
 from shaftline.film.geometry import JournalPosition
 from shaftline.film.roughness import SurfaceRoughness
 from shaftline.film.turbulence import (
@@ -82,8 +83,8 @@ def test_laminar_limit_reproduces_the_laminar_solver() -> None:
     """As Re -> 0 every coefficient is its laminar value in floating point (12 + 1e-290 is 12),
     so the turbulent path (the flow-factor stencil with a factor of exactly 1) gives the laminar
     solver's equilibrium, smooth and rough: the same film matrices, to rounding. Not bit for
-    bit: the last Newton trial's pressure is iterated from the step's linear guess (film/
-    bearing.py, REFINE_RESIDUAL), whose derivative the turbulent path computes with its own
+    bit: the last Newton trial's pressure is iterated from the step's linear guess
+    (``NewtonOptions.refine_residual``), whose derivative the turbulent path computes with its own
     (here unit) factors, so its last bits may differ (5e-17 of the peak seen); 1e-13 of the
     peak pressure, the clearance and the friction is rounding, far below what a coefficient
     that is not exactly its laminar value would move."""
@@ -94,7 +95,8 @@ def test_laminar_limit_reproduces_the_laminar_solver() -> None:
         turbulent_bearing = JournalBearing(geometry, operating, SolverOptions(turbulence="on"))
         assert turbulent_bearing.turbulent
         turbulent = turbulent_bearing.equilibrium(load_y=-LOAD)
-        assert turbulent.state.max_reynolds_number < 1e-290
+        assert turbulent.state.turbulence is not None
+        assert turbulent.state.turbulence.max_reynolds_number < 1e-290
         peak = float(laminar.state.pressure.max())
         np.testing.assert_allclose(turbulent.state.pressure, laminar.state.pressure, rtol=0.0, atol=1e-13 * peak)
         for offset in ("ey", "ez"):
@@ -193,15 +195,16 @@ def test_equilibrium_jacobian_is_exact_with_turbulence(surface: SurfaceRoughness
     differences of the force, steps 1e-8 m: within 1e-5 of its norm, as the rough film's."""
     bearing = _rig(350, replace(RIG, surface=surface), turbulence="on")
     position = bearing.equilibrium(load_y=-LOAD).state.position
-    evaluation = bearing._evaluate(position, warm=False)
-    jacobian = bearing._position_jacobian(evaluation)
+    solver = bearing.solver
+    evaluation = solver.evaluate(position, warm=False)
+    jacobian = solver.position_response(evaluation)[0]
     step = 1e-8
     columns = []
     for k in range(2):
         d = np.zeros(2)
         d[k] = step
-        plus = bearing._evaluate(bearing._moved(position, d), warm=False).force
-        minus = bearing._evaluate(bearing._moved(position, -d), warm=False).force
+        plus = solver.evaluate(moved(position, d), warm=False).force
+        minus = solver.evaluate(moved(position, -d), warm=False).force
         columns.append((plus - minus) / (2 * step))
     assert np.abs(np.column_stack(columns) - jacobian).max() < 1e-5 * np.abs(jacobian).max()
 
@@ -219,20 +222,22 @@ def test_a_rough_film_past_the_mean_plane_has_a_laminar_reynolds_number_not_a_ne
     position = JournalPosition(ey=-(c + 0.5 * surface.sigma), ez=0.0)
     state = bearing.solve_at(position, warm_start=False)
     film = state.film
-    assert film.min() < 0.0 and state.reynolds_number is not None
-    assert state.reynolds_number.min() == 0.0
-    np.testing.assert_array_equal(state.reynolds_number[film <= 0.0], 0.0)
+    assert film.min() < 0.0 and state.turbulence is not None
+    reynolds = state.turbulence.reynolds_number
+    assert reynolds.min() == 0.0
+    np.testing.assert_array_equal(reynolds[film <= 0.0], 0.0)
     above = film > 0.0
-    np.testing.assert_allclose(state.reynolds_number[above], bearing.reynolds_number * film[above] / c, rtol=1e-12)
-    flow = bearing._rough_film()
+    np.testing.assert_allclose(reynolds[above], bearing.reynolds_number * film[above] / c, rtol=1e-12)
+    # The film equation's flow factors (FilmSolver.flow: the roughness's with the turbulence's).
+    flow = bearing.solver.flow
     assert flow is not None
     closed = np.array([-0.5, -0.01]) * surface.sigma / c
     rough_flow = replace(RIG, surface=surface)
-    laminar = _rig(350, rough_flow)._rough_film()
+    laminar = _rig(350, rough_flow).solver.flow
     assert laminar is not None
     np.testing.assert_array_equal(flow.conductance(closed), laminar.conductance(closed))
     np.testing.assert_array_equal(flow.conductance_derivative(closed), laminar.conductance_derivative(closed))
-    assert np.all(np.isfinite(state.pressure)) and state.max_reynolds_number > 0.0
+    assert np.all(np.isfinite(state.pressure)) and state.turbulence.max_reynolds_number > 0.0
 
 
 def test_water_stern_tube_at_high_speed_is_turbulent_and_lifts_the_journal() -> None:
@@ -246,8 +251,9 @@ def test_water_stern_tube_at_high_speed_is_turbulent_and_lifts_the_journal() -> 
     bearing = _rig(350, turbulence="auto")
     assert bearing.turbulent
     turbulent = bearing.equilibrium(load_y=-LOAD).state
-    assert turbulent.turbulent and turbulent.max_reynolds_number > 5000
-    assert turbulent.max_reynolds_number == pytest.approx(
+    assert turbulent.turbulence is not None
+    assert turbulent.turbulence.turbulent and turbulent.turbulence.max_reynolds_number > 5000
+    assert turbulent.turbulence.max_reynolds_number == pytest.approx(
         bearing.reynolds_number * turbulent.film.max() / RIG.radial_clearance
     )
     assert turbulent.min_film_thickness > 1.2 * laminar.min_film_thickness
@@ -262,9 +268,11 @@ def test_auto_stays_laminar_below_the_transition_and_off_reports_nothing() -> No
     bearing = _rig(20, turbulence="auto")
     assert not bearing.turbulent
     state = bearing.equilibrium(load_y=-LOAD).state
-    assert not state.turbulent and state.reynolds_number is not None and state.max_reynolds_number > 0
+    turbulence = state.turbulence
+    assert turbulence is not None and not turbulence.turbulent
+    assert turbulence.reynolds_number.shape == state.film.shape and turbulence.max_reynolds_number > 0
     off = _rig(20).equilibrium(load_y=-LOAD).state
-    assert off.reynolds_number is None and off.max_reynolds_number == 0.0
+    assert off.turbulence is None  # no Reynolds number map, no largest Reynolds number
     np.testing.assert_array_equal(state.pressure, off.pressure)
 
 
