@@ -27,7 +27,7 @@ from collections.abc import Callable, Collection, Iterator
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["Export", "clean", "part", "quantity", "rows", "to_dict", "units"]
+__all__ = ["Export", "Exported", "clean", "part", "quantity", "rows", "to_dict", "units"]
 
 _KEY = "export"
 
@@ -138,3 +138,11 @@ def rows(kind: Any, parts: Collection[type] = ()) -> list[tuple[str, str, str]]:
 def units(kind: Any, parts: Collection[type] = ()) -> dict[str, str]:
     """The unit of every key of :func:`rows`."""
     return {key: unit for key, unit, _ in rows(kind, parts)}
+
+
+class Exported:
+    """A result dataclass that writes itself: :meth:`to_dict` gives its exported fields."""
+
+    def to_dict(self) -> dict[str, Any]:
+        """Every written field, keyed and in the units its metadata holds (plain JSON)."""
+        return to_dict(self)

@@ -40,7 +40,7 @@ _CONTACT = (
 
 
 @dataclass(frozen=True, eq=False)
-class RoughContact:
+class RoughContact(export.Exported):
     """What rough surfaces add to a film solution (Greenwood-Tripp asperity contact).
 
     Attributes
@@ -84,12 +84,9 @@ class RoughContact:
     asperity_pressure: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
     film_ratio: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
 
-    def to_dict(self) -> dict[str, Any]:
-        return export.to_dict(self)
-
 
 @dataclass(frozen=True, eq=False)
-class LinerState:
+class LinerState(export.Exported):
     """What an elastic liner adds to a film solution.
 
     Attributes
@@ -111,12 +108,9 @@ class LinerState:
     deformation: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
     iterations: int = 0
 
-    def to_dict(self) -> dict[str, Any]:
-        return export.to_dict(self)
-
 
 @dataclass(frozen=True, eq=False)
-class TurbulenceState:
+class TurbulenceState(export.Exported):
     """What a turbulent-film model adds to a film solution (``options.turbulence`` on or auto).
 
     Attributes
@@ -135,9 +129,6 @@ class TurbulenceState:
         "-", "whether the turbulence coefficients were applied (on, or auto above 41.3 sqrt(R/c))"
     )
     reynolds_number: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)), repr=False)
-
-    def to_dict(self) -> dict[str, Any]:
-        return export.to_dict(self)
 
 
 @dataclass(frozen=True, eq=False)

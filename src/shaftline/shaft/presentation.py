@@ -78,7 +78,7 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                 "relative_slope": f.relative_slope,
                 "power_loss": f.state.power_loss,
                 "side_leakage": f.state.side_leakage,
-                # Mixed lubrication and the liner (issue 15): a water-lubricated, soft-lined stern tube.
+                # Mixed lubrication and the liner: a water-lubricated, soft-lined stern tube.
                 "asperity_load_share": f.state.asperity_load_share,
                 "min_film_ratio": f.state.min_film_ratio if math.isfinite(f.state.min_film_ratio) else None,
                 "max_liner_deformation": f.state.max_liner_deformation,
