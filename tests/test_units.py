@@ -100,3 +100,35 @@ def test_a_known_unit_needs_no_pint(tmp_path):
             (tmp_path / "unit-conversions-1.json").write_text("{not json")
         value, imported = run().stdout.split()
         assert float(value) == pytest.approx(0.45e-3, rel=1e-15) and imported == pint_imported, cache
+
+
+def test_a_refused_unit_is_refused_again_without_pint(tmp_path):
+    """A unit of the wrong dimension ("0.1 kg" for a length) gives the same one-line message
+    the second time without importing pint, and a remembered refusal holds for that kind only
+    ("kg" stays a mass)."""
+    import os
+    import subprocess
+    import sys
+
+    script = (
+        "import sys\n"
+        "from shaftline.errors import InputError\n"
+        "from shaftline.units import to_si\n"
+        "try:\n"
+        "    to_si(sys.argv[1], sys.argv[2], 'bearing.radial_clearance')\n"
+        "except InputError as error:\n"
+        "    print(error, '|', 'pint' in sys.modules)\n"
+        "else:\n"
+        "    print('accepted |', 'pint' in sys.modules)\n"
+    )
+    env = {**os.environ, "SHAFTLINE_CACHE_DIR": str(tmp_path)}
+
+    def run(text: str, kind: str) -> list[str]:
+        done = subprocess.run([sys.executable, "-c", script, text, kind], capture_output=True, text=True, env=env)
+        return [part.strip() for part in done.stdout.split("|")]
+
+    first, pint_first = run("0.1 kg", "length")
+    again, pint_again = run("0.2 kg", "length")
+    assert "a quantity of length (got unit kg)" in first and pint_first == "True"
+    assert again == first.replace("0.1 kg", "0.2 kg") and pint_again == "False"
+    assert run("3 kg", "mass") == ["accepted", "True"]

@@ -7,9 +7,10 @@ once, here, to SI floats; the models never see units.
 pint does every conversion, but importing it costs about 0.15 s, more than the rest of
 a short command. So the conversion of each unit pint has converted once, an affine map
 ``si = scale * number + offset``, is kept in a small cache file (:func:`cache_path`) and
-used for later strings of the form ``"<number> <unit>"`` with the same unit; pint is
-imported only for a unit not seen before, or for text of any other form. A missing,
-unreadable or unwritable cache only means pint is imported.
+used for later strings of the form ``"<number> <unit>"`` with the same unit, as is a unit
+pint has refused for a kind (``"0.1 kg"`` for a length), so that the same message comes back
+without pint; pint is imported only for a unit not seen before, or for text of any other
+form. A missing, unreadable or unwritable cache only means pint is imported.
 """
 
 from __future__ import annotations
@@ -59,13 +60,13 @@ SI_UNITS: dict[str, str] = {
     "rotational_stiffness": "N*m",
     "rotational_damping": "N*m*s",
     "memory": "byte",
-    # surface speed of a contact (issue 14); "speed" is a shaft's angular speed
+    # surface speed of a contact; "speed" is a shaft's angular speed
     "velocity": "m/s",
     # output of a displacement probe per unit gap (shaftline.monitor): "8 mV/um"
     "sensitivity": "V/m",
-    # C of seed 002's scuffing parameter (issue 14)
+    # C of the scuffing parameter of Ciulli et al. (2010)
     "thermal_conductivity": "W/(m*K)",
-    # asperities per unit area of a rough surface (Greenwood-Williamson's eta, issue 15)
+    # asperities per unit area of a rough surface (Greenwood-Williamson's eta)
     "areal_density": "1/m**2",
 }
 
@@ -180,8 +181,16 @@ def cache_path() -> Path | None:
     return Path(folder) / "unit-conversions-1.json"
 
 
+class _WrongDimension(InputError):
+    """A unit of another dimension than its field's kind: ``unit`` as pint abbreviates it."""
+
+    def __init__(self, field: str, text: str, kind: str, unit: str) -> None:
+        super().__init__(field, text, "", f"a quantity of {kind.replace('_', ' ')} (got unit {unit})")
+        self.unit = unit
+
+
 @lru_cache(maxsize=1)
-def _remembered() -> dict[str, list[float]]:
+def _remembered() -> dict[str, list[float] | str]:
     path = cache_path()
     try:
         data = json.loads(path.read_text(encoding="utf-8")) if path is not None else {}
@@ -192,13 +201,16 @@ def _remembered() -> dict[str, list[float]]:
     return {
         key: value
         for key, value in data.items()
-        if isinstance(value, list) and len(value) == 2 and all(isinstance(v, float) for v in value)
+        if isinstance(value, str)
+        or (isinstance(value, list) and len(value) == 2 and all(isinstance(v, float) for v in value))
     }
 
 
-def _remember(key: str, scale: float, offset: float) -> None:
+def _remember(key: str, conversion: list[float] | str) -> None:
+    """Keep ``conversion`` of ``key`` (``kind|unit``): ``[scale, offset]``, or the unit pint
+    refused for the kind, as pint wrote it."""
     remembered = _remembered()
-    remembered[key] = [scale, offset]
+    remembered[key] = conversion
     path = cache_path()
     if path is None:
         return
@@ -220,14 +232,20 @@ def _convert(text: str, kind: str, field: str) -> float:
     number, unit = float(match.group(1)), " ".join(match.group(2).split())
     key = f"{kind}|{unit}"
     known = _remembered().get(key)
+    if isinstance(known, str):
+        raise _WrongDimension(field, text, kind, known)
     if known is not None:
         return known[0] * number + known[1]
-    value = _parse_with_unit(text, kind, field)
+    try:
+        value = _parse_with_unit(text, kind, field)
+    except _WrongDimension as refused:
+        _remember(key, refused.unit)
+        raise
     offset = _parse_with_unit(f"0 {unit}", kind, field)
     scale = _parse_with_unit(f"1 {unit}", kind, field) - offset
     # Keep the map only if it reproduces pint for this number (an affine unit, as expected).
     if math.isclose(scale * number + offset, value, rel_tol=1e-12, abs_tol=1e-300):
-        _remember(key, scale, offset)
+        _remember(key, [scale, offset])
     return value
 
 
@@ -253,5 +271,5 @@ def _parse_with_unit(text: str, kind: str, field: str) -> float:
             number = float(quantity.to(SI_UNITS[kind]).magnitude)
     except pint.errors.DimensionalityError:
         unit = f"{quantity.units:~}" if str(quantity.units) else "(no unit)"
-        raise InputError(field, text, "", f"a quantity of {kind.replace('_', ' ')} (got unit {unit})") from None
+        raise _WrongDimension(field, text, kind, unit) from None
     return number
