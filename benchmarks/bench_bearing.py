@@ -79,7 +79,7 @@ def unit_timers(bearing: JournalBearing, position) -> tuple[dict[str, Any], int]
     its two variants), and the free nodes."""
     evaluation = bearing.solver.evaluate(position, warm=False)
     fixed = bearing.solver.nodes.fixed
-    cavitated = evaluation.solution.cavitated
+    cavitated = evaluation.cavitation.cavitated
     free = operator_matrix(evaluation.stencil, fixed, cavitated, free_only=True)
     full = operator_matrix(evaluation.stencil, fixed, cavitated, free_only=False)
     rhs_free, rhs_full = np.ones(free.shape[0]), np.ones(full.shape[0])
