@@ -33,6 +33,7 @@ from timing import median_time
 
 from shaftline.film import BearingProblem, JournalBearing, OperatingPoint, SolverOptions
 from shaftline.film.geometry import BearingGeometry
+from shaftline.film.solver import FilmSolver
 from shaftline.shaft import AlignmentModel, Bearing, ShaftLine, ShaftSegment
 from shaftline.shaft.coupled import CoupledAlignment, CoupledResult, FilmSupport
 from shaftline.shaft.fast_path import FastPathResult, fast_path
@@ -103,7 +104,7 @@ def instrumented(repeat: int) -> dict[str, float]:
         patched.append((owner, name, original))
         setattr(owner, name, timed)
 
-    wrap(JournalBearing, "_pressure_derivatives", "film derivatives (frozen set)")
+    wrap(FilmSolver, "load_changes", "film derivatives (frozen set)")
     wrap(JournalBearing, "film_load", "film solutions incl. derivatives")
     wrap(AlignmentModel, "solve_condition", "inner alignment solves")
     wrap(AlignmentModel, "displacement_response", "alignment unit-load response")

@@ -113,7 +113,7 @@ def main() -> None:
         print(
             f"{label}: laminar {t_off:.3f} s (h_min {eq_off.state.min_film_thickness * 1e6:.2f} um), turbulent "
             f"{t_on:.3f} s (h_min {eq_on.state.min_film_thickness * 1e6:.2f} um, Re_h max "
-            f"{eq_on.state.max_reynolds_number:.0f}); ratio {t_on / t_off:.2f}"
+            f"{eq_on.state.turbulence.max_reynolds_number:.0f}); ratio {t_on / t_off:.2f}"
         )
     ntua = load_case(ROOT / "examples" / "ntua_stern_tube.toml").studies["bearing"]
     lined = load_case(ROOT / "examples" / "seed001_water_rig_liner.toml").studies["bearing"]
