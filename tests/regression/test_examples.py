@@ -26,13 +26,13 @@ The new keys on the periodic state are in :data:`ADDED`.
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
 from typing import Any
 
 import pytest
 
 from tests.conftest import invoke
+from tests.regression.compare import compare as compare_documents
 
 HERE = Path(__file__).parent
 EXAMPLES = HERE.parents[1] / "examples"
@@ -61,23 +61,6 @@ ADDED = (
 RTOL = 1e-7
 RTOL_CARRIER = 1e-6
 ATOL_SHARE = 1e-9
-#: Numbers that are Newton residuals of a film equilibrium where the load has no such
-#: component (a vertical load's horizontal force, the moments of an aligned or symmetric
-#: film, the load centre's offset then): their value is rounding below the solver's force
-#: tolerance (1e-8 of the load, 3.1e-3 N on the NTUA case), and any solver change that
-#: rounds differently or takes another Newton path moves them by orders of magnitude (1e-10 to
-#: 1e-3 N; tests/regression/README.md). Compared against
-#: these absolute bounds, far below anything physical (a real horizontal load or moment in
-#: the examples is 1e3 N or N m or more, a real load-centre offset a millimetre).
-RESIDUAL_ATOL = {
-    # the solver's own bound on the NTUA case (1e-8 of its load), below which the last Newton
-    # step may land anywhere
-    "force_z": 3.1e-3,  # N
-    "force_residual": 3.1e-3,  # N
-    "moment_y": 1e-5,  # N m
-    "moment_z": 1e-5,  # N m
-    "load_centre_offset": 1e-12,  # m
-}
 
 
 def baseline(name: str) -> dict[str, Any]:
@@ -112,31 +95,9 @@ def without_added(document: dict[str, Any]) -> dict[str, Any]:
     return document
 
 
-def compare(actual: Any, expected: Any, path: str = "", scale: float = 0.0, rtol: float = RTOL) -> list[str]:
+def compare(actual: Any, expected: Any, rtol: float = RTOL) -> list[str]:
     """Differences between two JSON values beyond the tolerance, as readable lines."""
-    if isinstance(expected, dict):
-        if not isinstance(actual, dict) or set(actual) != set(expected):
-            return [f"{path}: keys {sorted(actual) if isinstance(actual, dict) else actual} != {sorted(expected)}"]
-        return [
-            line
-            for key in expected
-            for line in compare(actual[key], expected[key], f"{path}.{key}" if path else key, rtol=rtol)
-        ]
-    if isinstance(expected, list):
-        if not isinstance(actual, list) or len(actual) != len(expected):
-            return [f"{path}: length {len(actual) if isinstance(actual, list) else actual} != {len(expected)}"]
-        numbers = [abs(v) for v in expected if isinstance(v, (int, float)) and not isinstance(v, bool)]
-        scale = max(numbers, default=0.0)
-        return [
-            line
-            for k, (a, e) in enumerate(zip(actual, expected, strict=True))
-            for line in compare(a, e, f"{path}[{k}]", scale, rtol)
-        ]
-    if isinstance(expected, bool) or expected is None or isinstance(expected, str):
-        return [] if actual == expected else [f"{path}: {actual!r} != {expected!r}"]
-    atol = max(ATOL_SHARE * scale, RESIDUAL_ATOL.get(path.rsplit(".", 1)[-1], 0.0))
-    close = math.isclose(actual, expected, rel_tol=rtol, abs_tol=atol)
-    return [] if close else [f"{path}: {actual!r} != {expected!r}"]
+    return compare_documents(actual, expected, rtol, ATOL_SHARE)
 
 
 def test_compare_sees_a_change():
