@@ -57,6 +57,14 @@ ADDED = (
     "bearing.cases.damping_4x4",
     "bearing.units.stiffness_4x4",
     "bearing.units.damping_4x4",
+    # which influence matrix is shown, and how the offset optimisation ran
+    "alignment.influence_matrix.kind",
+    "alignment.influence_matrix.label",
+    "alignment.influence_matrix.condition",
+    "alignment.optimised_offsets.rounds",
+    "alignment.optimised_offsets.settled",
+    "alignment.optimised_offsets.note",
+    "alignment.optimised_offsets.influence",
 )
 RTOL = 1e-7
 RTOL_CARRIER = 1e-6

@@ -98,6 +98,24 @@ def test_tables_json_and_report(solved):
         assert (out / "figures" / f"alignment_{name}.png").stat().st_size > 10_000
 
 
+def test_the_influence_matrix_of_a_film_line_is_its_tangent_and_says_so(solved):
+    """On film supports the JSON's influence matrix is the film-supported line's tangent (the
+    film's stiffness included; tests/shaft/test_film_tangent.py checks its numbers), labelled as
+    such, with each condition's beside its coupled result and the declared supports' matrix
+    beside it; the report's figure caption names which it shows."""
+    _, out = solved
+    alignment = json.loads((out / "results.json").read_text())["alignment"]
+    shown, point = alignment["influence_matrix"], alignment["point_supports_influence_matrix"]
+    assert shown["kind"] == "film_tangent" and shown["condition"] == alignment["conditions"][0]["name"]
+    assert "film stiffness included" in shown["label"] and point["kind"] == "point"
+    assert shown["matrix"] == alignment["film_supports"][0]["influence_matrix"]["matrix"]
+    # the aft film bearing's own coefficient: the film in series with the shaft, not the point model's
+    aft = shown["bearings"].index("aft stern tube")
+    assert abs(shown["matrix"][aft][aft] / point["matrix"][aft][aft] - 1.0) > 0.05
+    html = (out / "report.html").read_text()
+    assert "influence matrix, film supports: tangent at the coupled equilibrium" in html
+
+
 def test_terminal_comparison_shows_the_relative_slope_on_points_and_in_the_film(solved):
     """The terminal's "point supports vs film supports" keeps both relative slopes of the aft
     bearing (the issue's "aft-bearing relative slope"), not the film's alone."""

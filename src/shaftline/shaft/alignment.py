@@ -173,11 +173,29 @@ class InfluenceMatrix:
         for (by default all supports in contact).
     deflection : ndarray (n, b)
         ``deflection[k, j]`` = d deflection_y at node k / d offset_j, m/m, same contact set.
+    kind : str
+        ``"point"``: the line on its declared supports (points, springs, multi-point), symmetric
+        (Maxwell-Betti); ``"film_tangent"``: the line on its bearing films, the tangent at the
+        coupled equilibrium of :attr:`condition` with the films' stiffness
+        (:func:`~shaftline.shaft.film_tangent.tangent_influence`), not symmetric in general.
+    condition : str
+        The condition the film tangent was taken in (empty for ``"point"``).
     """
 
     names: list[str]
     matrix: np.ndarray
     deflection: np.ndarray
+    kind: str = "point"
+    condition: str = ""
+
+    @property
+    def label(self) -> str:
+        """Which matrix this is, in words (for tables, figures and the JSON)."""
+        if self.kind == "film_tangent":
+            return f"film supports: tangent at the coupled equilibrium ({self.condition}), film stiffness included"
+        if self.condition:
+            return f"point supports (the contact set of {self.condition})"
+        return "point supports (every support in contact)"
 
 
 class AlignmentModel:
@@ -465,8 +483,53 @@ class AlignmentModel:
             Displacements (deflection and rotation per node) per unit of each column: exact
             while the contact set holds, since the solution is then affine in the loads.
         """
+        return self.linear_response(contact, vertical, forces=forces)[0]
+
+    def linear_response(
+        self,
+        contact: ConditionResult,
+        vertical: bool,
+        forces: np.ndarray | None = None,
+        offsets: np.ndarray | None = None,
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Change of the displacements and of the support-point reactions per unit nodal force
+        and per unit offset of the support points, contact set held.
+
+        Parameters
+        ----------
+        contact : ConditionResult
+            A solution of this model; its closed contacts stay closed and its lifted points
+            lifted (the horizontal plane's supports are always closed).
+        vertical : bool
+            The plane: vertical (with lift-off and top contact) or horizontal.
+        forces : ndarray (2n, k), optional
+            Nodal force columns (force and moment per node, N and N m); zero if not given.
+        offsets : ndarray (m, k), optional
+            Offset columns of the support points (:attr:`supports`, m), changed together with
+            ``forces`` column by column; zero if not given.
+
+        Returns
+        -------
+        displacements : ndarray (2n, k)
+            Deflection and rotation per node per unit of each column (m, rad).
+        reactions : ndarray (m, k)
+            Reaction of each support point per unit of each column, N.
+
+        Notes
+        -----
+        Exact while the contact set holds, since the solution is then affine in the loads and
+        the offsets (the offsets enter the contact problem's stationarity rows, the loads also
+        its equilibrium rows).
+        """
         supports = self.supports
         m = supports.x.size
+        nodes = 2 * self.mesh.nodes
+        if forces is not None:
+            forces = np.asarray(forces, dtype=float).reshape(nodes, -1)
+        elif offsets is not None:
+            forces = np.zeros((nodes, np.asarray(offsets).reshape(m, -1).shape[1]))
+        else:
+            raise ValueError("linear_response: give forces, offsets or both")
         setup = self._contact_setup(vertical=vertical)
         if vertical:
             state = np.concatenate([b.point_contact for b in contact.bearings])
@@ -479,19 +542,21 @@ class AlignmentModel:
         k = columns.shape[1]
         equality = setup.equality[:, free]
         kkt = np.block([[setup.hessian[np.ix_(free, free)], equality.T], [equality, np.zeros((2, 2))]])
-        forces = np.asarray(forces, dtype=float).reshape(2 * self.mesh.nodes, -1)
         x = self.mesh.x
         pinned = self.beam.solve(forces)
         d_linear = columns.T @ pinned[2 * supports.node]
+        if offsets is not None:
+            d_linear = d_linear - columns.T @ np.asarray(offsets, dtype=float).reshape(m, -1)
         d_target = -np.vstack([forces[0::2].sum(axis=0), x @ forces[0::2] + forces[1::2].sum(axis=0)])
         # The KKT system of the contact QP: H lambda + E' mu = -linear, E lambda = target.
         solved = np.linalg.solve(kkt, np.vstack([-d_linear, d_target]))
+        reactions = columns @ solved[:k]
         total = forces.copy()
-        np.add.at(total, 2 * supports.node, columns @ solved[:k])
+        np.add.at(total, 2 * supports.node, reactions)
         u = self.beam.solve(total)
         u[0::2] += solved[k] + x[:, None] * solved[k + 1]
         u[1::2] += solved[k + 1]
-        return u
+        return u, reactions
 
     # -- influence coefficients ---------------------------------------------------------
     def influence_matrix(self, contact: ConditionResult | None = None) -> InfluenceMatrix:
@@ -539,7 +604,10 @@ class AlignmentModel:
         rigid = solved[k:] @ grouping
         deflection = self._unit_response[0::2] @ per_point @ grouping + rigid[0] + self.mesh.x[:, None] * rigid[1]
         return InfluenceMatrix(
-            names=[b.name for b in self.line.bearings], matrix=0.5 * (matrix + matrix.T), deflection=deflection
+            names=[b.name for b in self.line.bearings],
+            matrix=0.5 * (matrix + matrix.T),
+            deflection=deflection,
+            condition="" if contact is None else contact.name,
         )
 
 

@@ -22,11 +22,13 @@ from shaftline.shaft.presentation import (
     _film_rows,
     _finite,
     _narrowed,
+    influence_json,
 )
 
 if TYPE_CHECKING:
     from shaftline.shaft.case import AlignmentSection
     from shaftline.shaft.coupled import CoupledResult, FilmBearingResult
+    from shaftline.shaft.offsets import OffsetPlan
     from shaftline.shaft.rules import RuleCheck
     from shaftline.shaft.study import AlignmentResult, AlignmentStudy
 
@@ -104,6 +106,19 @@ def rule_check_rows(checks: list[RuleCheck]) -> list[list[str]]:
         )
     return rows
 
+
+
+def _plan_json(plan: OffsetPlan, checks: list[RuleCheck]) -> dict[str, Any]:
+    """The optimised offsets in results.json: offsets (m), objective, how the rounds went, checks."""
+    return {
+        "offsets": plan.offsets,
+        "objective": plan.objective,
+        "rounds": plan.iterations,
+        "settled": plan.settled,
+        "note": plan.note,
+        "influence": plan.influence,
+        "rule_checks": [_check_json(c) for c in checks],
+    }
 
 class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "AlignmentResult"]):
     key = "alignment"
@@ -190,10 +205,12 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 }
                 for r in result.conditions
             ],
-            "influence_matrix": {"bearings": result.influence.names, "matrix": result.influence.matrix.tolist()},
+            "influence_matrix": influence_json(result.influence),
             "rule_checks": [_check_json(c) for c in result.checks],
             "slope_boring_angle": result.slope_boring_angle(),
         }
+        if result.point_influence is not None:
+            out["point_supports_influence_matrix"] = influence_json(result.point_influence)
         if result.coupled is not None:
             out["units"].update(FILM_UNITS)
             out["film_supports"] = [_coupled_json(c) for c in result.coupled]
@@ -215,11 +232,7 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 },
             }
         if result.plan is not None:
-            out["optimised_offsets"] = {
-                "offsets": result.plan.offsets,
-                "objective": result.plan.objective,
-                "rule_checks": [_check_json(c) for c in result.plan_checks or []],
-            }
+            out["optimised_offsets"] = _plan_json(result.plan, result.plan_checks or [])
         if result.sag_gap is not None:
             sg = result.sag_gap
             out["sag_gap"] = {"flange_x": sg.flange_x, "sag": sg.sag, "gap": sg.gap}
@@ -296,7 +309,10 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 "The bearings marked hydrodynamic are supported by their film: the shaft's elastic line across the "
                 "bearing is the journal, and the film pressure acts back on the shaft as a distributed load. The "
                 "support point is the axial position of the film resultant from the bearing's mid-length, + forward. "
-                "Influence coefficients, offset optimisation, sag and gap and jack-up use the declared supports."
+                "The influence coefficients are the film-supported line's tangent at the first condition's "
+                "equilibrium (the films' stiffness included; each condition's is in results.json), and offset "
+                "optimisation and offsets from measured reactions are solved on the films; sag and gap and jack-up "
+                "use the declared supports."
             ),
         ]
         for k, coupled in enumerate(result.coupled or []):
@@ -382,6 +398,15 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                         f"the offset optimisation sits on its bound of ±{bound * 1e3:g} mm at "
                         + ", ".join(at_bound)
                         + ": a wider bound may give a better alignment.",
+                        criterion=True,
+                    )
+                )
+            if not result.plan.settled:
+                out.append(
+                    Finding(
+                        f"the offset optimisation did not settle in {result.plan.iterations} rounds: the offsets "
+                        "shown are the last round's, not an optimum"
+                        + (f"; {result.plan.note}." if result.plan.note else "."),
                         criterion=True,
                     )
                 )
@@ -520,7 +545,10 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             ),
             Figure("alignment_reactions.png", figures.reactions, (result.conditions,), caption="reactions"),
             Figure(
-                "alignment_influence.png", figures.influence_heatmap, (result.influence,), caption="influence matrix"
+                "alignment_influence.png",
+                figures.influence_heatmap,
+                (result.influence,),
+                caption=f"influence matrix, {result.influence.label}",
             ),
         ]
         if result.coupled is not None:
@@ -542,7 +570,8 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             plan_failed = [c for c in result.plan_checks or [] if not c.passed]
             blocks.append(
                 Paragraph(
-                    f"With these offsets {len(plan_failed)} rule checks fail; objective {result.plan.objective:.4g}.",
+                    f"With these offsets {len(plan_failed)} rule checks fail; objective {result.plan.objective:.4g}; "
+                    f"{result.plan.iterations} rounds on {result.plan.influence}.",
                     "warn" if plan_failed else "text",
                 )
             )

@@ -44,6 +44,7 @@ from shaftline.shaft.film_supports import (
     film_coefficients,
     hermite_shape,
 )
+from shaftline.shaft.film_tangent import tangent_influence
 from shaftline.shaft.model import Condition, ShaftLine
 
 __all__ = [
@@ -444,7 +445,7 @@ class CoupledAlignment:
             history.append(current.norm)
             if progress is not None:
                 progress(iterations, current.norm)
-        return self._result(
+        result = self._result(
             current,
             points,
             converged,
@@ -455,6 +456,12 @@ class CoupledAlignment:
             message,
             condition,
         )
+        if not converged:
+            return result
+        influence = tangent_influence(
+            self.model, current.inner, self._films, self._slices(), jacobian, stiffness, condition.name
+        )
+        return replace(result, influence=influence)
 
     def _line_search(
         self, current: _Iterate, step: np.ndarray, condition: Condition

@@ -9,6 +9,7 @@ makes a pyplot figure of its own (see :mod:`shaftline.report.plotting`).
 from __future__ import annotations
 
 import math
+import textwrap
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
@@ -93,10 +94,12 @@ def reactions(results: Sequence[ConditionResult], *, ax: Any) -> Any:
 
 @figure_function(size=(7.5, 6.5))
 def influence_heatmap(influence: InfluenceMatrix, *, ax: Any) -> Any:
-    """Reaction change per mm of offset of each bearing (all supports in contact)."""
+    """Reaction change per mm of offset of each bearing, titled with which matrix it is (the
+    declared supports', or the film-supported line's tangent)."""
     matrix = influence.matrix * 1e-3 * 1e-3  # kN per mm
     limit = np.abs(matrix).max()
     image = ax.imshow(matrix, cmap="RdBu_r", vmin=-limit, vmax=limit)
+    ax.set_title("\n".join(textwrap.wrap(influence.label, 60)), fontsize=9)
     ax.figure.colorbar(image, ax=ax, label="reaction change [kN] per mm offset")
     ticks = np.arange(len(influence.names))
     names = [plain(name) for name in influence.names]
@@ -104,9 +107,14 @@ def influence_heatmap(influence: InfluenceMatrix, *, ax: Any) -> Any:
     ax.set_yticks(ticks, names, fontsize=8)
     ax.set_xlabel("bearing raised")
     ax.set_ylabel("reaction of")
+    size = 9 if matrix.shape[0] <= 6 else 7 if matrix.shape[0] <= 10 else 5.5
     for i in range(matrix.shape[0]):
         for j in range(matrix.shape[1]):
-            ax.text(j, i, f"{matrix[i, j]:.0f}", ha="center", va="center", fontsize=6)
+            # Light text on the dark ends of the colour map, dark text on the light middle.
+            dark = abs(matrix[i, j]) > 0.6 * limit
+            value = matrix[i, j]
+            text = f"{value:.0f}" if abs(value) >= 100 else f"{value:.3g}"  # no exponents in a cell
+            ax.text(j, i, text, ha="center", va="center", fontsize=size, color="w" if dark else "k")
     return ax
 
 

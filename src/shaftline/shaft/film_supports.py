@@ -14,7 +14,7 @@ import numpy as np
 from shaftline.errors import InputError, require_positive
 from shaftline.film.problem import BearingProblem
 from shaftline.film.results import BearingState
-from shaftline.shaft.alignment import ConditionResult
+from shaftline.shaft.alignment import ConditionResult, InfluenceMatrix
 
 if TYPE_CHECKING:
     from shaftline.film.bearing import JournalBearing
@@ -173,6 +173,10 @@ class CoupledResult:
     dofs : ndarray (2, m)
         The shaft's deflections and rotations across the film bearings (vertical, horizontal):
         the start of a nearby solve (``solve(..., initial=result)``); empty after a fall-back.
+    influence : InfluenceMatrix or None
+        The line's influence coefficients at this equilibrium, the films' stiffness included
+        (:func:`~shaftline.shaft.film_tangent.tangent_influence`); None when it did not
+        converge or a film grounded (there the point-support matrix applies).
 
     ``converged`` is about the solution found: after the fall-back to contact it is that of
     the line with the grounded bearings in contact; :attr:`contact` says whether any film
@@ -189,6 +193,7 @@ class CoupledResult:
     force_residual: float
     message: str = ""
     dofs: np.ndarray = field(repr=False, default_factory=lambda: np.zeros((2, 0)))
+    influence: InfluenceMatrix | None = field(repr=False, default=None)
 
     @property
     def contact(self) -> bool:

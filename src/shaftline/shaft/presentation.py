@@ -1,4 +1,4 @@
-"""The presentation of the film supports of ``[alignment]``: their fields in results.json,
+"""The presentation of the film supports of ``[alignment]`` and of its influence matrices: their fields in results.json,
 the report's and the summary's film and point-versus-film tables, and the notes on what
 those tables have no columns for."""
 
@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 from shaftline.report.blocks import Paragraph, Table, fmt
 
 if TYPE_CHECKING:
+    from shaftline.shaft.alignment import InfluenceMatrix
     from shaftline.shaft.film_supports import CoupledResult
 
 
@@ -50,6 +51,18 @@ def _turbulence_json(state: Any) -> dict[str, Any]:
     return {"max_reynolds_number": state.turbulence.max_reynolds_number, "turbulent": state.turbulence.turbulent}
 
 
+def influence_json(influence: InfluenceMatrix) -> dict[str, Any]:
+    """An influence matrix with what it is: ``kind`` ("point" or "film_tangent"), its label and
+    the condition a film tangent was taken in; ``matrix[i][j]`` = d reaction_i / d offset_j, N/m."""
+    return {
+        "bearings": influence.names,
+        "matrix": influence.matrix.tolist(),
+        "kind": influence.kind,
+        "label": influence.label,
+        "condition": influence.condition,
+    }
+
+
 def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
     """One condition's film supports: convergence, each film, and the point-support comparison."""
     return {
@@ -60,6 +73,9 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
         "residual_history": coupled.residual_history,
         "force_residual": coupled.force_residual,
         "message": coupled.message,
+        # The line's tangent influence coefficients at this condition's equilibrium (null when
+        # it did not converge or a film grounded), as "influence_matrix" is written.
+        "influence_matrix": None if coupled.influence is None else influence_json(coupled.influence),
         "films": [
             {
                 "name": f.name,

@@ -24,6 +24,7 @@ from shaftline.shaft.model import Bearing, Condition, ShaftLine
 
 if TYPE_CHECKING:
     from shaftline.shaft.alignment import AlignmentModel, ConditionResult, InfluenceMatrix
+    from shaftline.shaft.coupled import CoupledAlignment
     from shaftline.shaft.film_supports import CoupledResult
     from shaftline.shaft.jackup import JackUpCurve, JackUpFit
     from shaftline.shaft.lift_off import LiftOffResult
@@ -121,6 +122,9 @@ class AlignmentResult:
         One per condition, in the order of the study (with film bearings: the coupled
         solution, whose film bearings report their film force).
     influence : InfluenceMatrix
+        The reactions' sensitivity to the offsets: on films the tangent at the first
+        condition's coupled equilibrium (``kind = "film_tangent"``), else the declared
+        supports' (``"point"``); :attr:`InfluenceMatrix.label` says which.
     checks : list of RuleCheck
     plan, plan_checks :
         Optimised offsets and the rule checks with them (when asked).
@@ -134,6 +138,9 @@ class AlignmentResult:
         comparison, convergence).
     lift_off : LiftOffResult or None
         The minimum speed and lift-off curve (when asked).
+    point_influence : InfluenceMatrix or None
+        With the film tangent shown as :attr:`influence`, the declared supports' matrix beside it
+        (the comparison "point supports vs film supports").
     """
 
     study: AlignmentStudy
@@ -149,6 +156,7 @@ class AlignmentResult:
     reverse: tuple[dict[str, float], float] | None = None
     coupled: list[CoupledResult] | None = None
     lift_off: LiftOffResult | None = None
+    point_influence: InfluenceMatrix | None = None
 
     def slope_boring_angle(self) -> dict[str, float]:
         """Per condition, the bore slope that would make the aft stern-tube bearing parallel
@@ -167,6 +175,30 @@ def _film_error(error: InputError, fields: tuple[str, ...]) -> InputError:
     return InputError(f"{fields[int(match.group(1))]}.{rest}", error.value, error.unit, error.allowed)
 
 
+def _solve_on_films(
+    study: AlignmentStudy, step: Callable[[str], None]
+) -> tuple[CoupledAlignment | None, list[CoupledResult] | None]:
+    """With film bearings, the coupled solver and every condition solved on the films."""
+    if not study.films:
+        return None, None
+    from shaftline.shaft.coupled import CoupledAlignment
+
+    try:
+        solver = CoupledAlignment(study.line, study.films, study.coupling)
+    except InputError as error:
+        raise _film_error(error, study.film_fields) from None
+    coupled = []
+    for condition in study.line.all_conditions():
+        name = condition.name
+        step(f"film-supported alignment, {name}")
+
+        def iteration(k: int, mismatch: float, name: str = name) -> None:
+            step(f"film-supported alignment, {name}: iteration {k}, mismatch {mismatch:.2g} of the clearance")
+
+        coupled.append(solver.solve(condition, iteration))
+    return solver, coupled
+
+
 def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | None = None) -> AlignmentResult:
     """All conditions, the influence matrix, rule checks and the procedures the study asks for."""
     from shaftline.errors import located
@@ -180,23 +212,8 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
     step("alignment conditions")
     model = AlignmentModel(study.line)
     results = model.solve()
-    coupled = None
-    if study.films:
-        from shaftline.shaft.coupled import CoupledAlignment
-
-        try:
-            solver = CoupledAlignment(study.line, study.films, study.coupling)
-        except InputError as error:
-            raise _film_error(error, study.film_fields) from None
-        coupled = []
-        for condition in study.line.all_conditions():
-            name = condition.name
-            step(f"film-supported alignment, {name}")
-
-            def iteration(k: int, mismatch: float, name: str = name) -> None:
-                step(f"film-supported alignment, {name}: iteration {k}, mismatch {mismatch:.2g} of the clearance")
-
-            coupled.append(solver.solve(condition, iteration))
+    solver, coupled = _solve_on_films(study, step)
+    if coupled is not None:
         results = [c.condition for c in coupled]
     lift_off = None
     if study.minimum_speed is not None and study.films:
@@ -219,7 +236,12 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
                 tolerance=request.tolerance,
                 progress=speed_step,
             )
-    influence = model.influence_matrix()
+    influence = point_influence = model.influence_matrix()
+    if coupled and coupled[0].influence is not None:
+        # On films the reactions' sensitivity includes the films' stiffness: the tangent at the
+        # first condition's coupled equilibrium is the matrix shown (each condition's is kept
+        # with its coupled result).
+        influence = coupled[0].influence
     rules = list(study.rules)
     checks = check_rules(model, results, rules)
     plan = plan_checks = sag = jack = fit = reverse = None
@@ -227,7 +249,9 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
         step("offset optimisation")
         o = study.optimise
         with located("optimise"):
-            plan = optimise_offsets(model, rules, list(o.adjustable) if o.adjustable else None, o.objective, o.bound)
+            plan = optimise_offsets(
+                model, rules, list(o.adjustable) if o.adjustable else None, o.objective, o.bound, films=solver
+            )
         plan_checks = check_rules(model, plan.results, rules)
     if study.sag_gap is not None:
         step("sag and gap")
@@ -245,7 +269,20 @@ def solve_alignment(study: AlignmentStudy, progress: Callable[[str], None] | Non
     if study.measured_reactions is not None:
         mr = study.measured_reactions
         with located("measured_reactions"):
-            reverse = offsets_from_reactions(model, mr.values, mr.condition, mr.reference)
+            reverse = offsets_from_reactions(model, mr.values, mr.condition, mr.reference, films=solver)
     return AlignmentResult(
-        study, model, results, influence, checks, plan, plan_checks, sag, jack, fit, reverse, coupled, lift_off
+        study,
+        model,
+        results,
+        influence,
+        checks,
+        plan,
+        plan_checks,
+        sag,
+        jack,
+        fit,
+        reverse,
+        coupled,
+        lift_off,
+        point_influence if influence is not point_influence else None,
     )
