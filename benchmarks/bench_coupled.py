@@ -136,7 +136,7 @@ def main() -> None:
     state = fast.state
     print(
         f"  coupled: hmin {film.state.min_film_thickness * 1e6:.1f} um, pmax {film.state.max_pressure / 1e6:.2f} MPa, "
-        f"support point {film.support_point * 1e3:+.1f} mm from L/2 (+ forward); fast path: hmin "
+        f"support point {film.support_point_y * 1e3:+.1f} mm from L/2 (+ forward, vertical); fast path: hmin "
         f"{state.min_film_thickness * 1e6:.1f} um, pmax {state.max_pressure / 1e6:.2f} MPa, "
         f"support point {fast.support_point * 1e3:+.1f} mm"
     )

@@ -102,14 +102,14 @@ def test_global_equilibrium_of_forces_and_moments_in_both_planes():
     assert abs(sum_z + applied_z) < 1e-7 * scale, (sum_z, applied_z)
     assert abs(moment_y + applied_moment_y) < 1e-7 * scale * 14.0, (moment_y, applied_moment_y)
     assert abs(moment_z + applied_moment_z) < 1e-7 * scale * 14.0, (moment_z, applied_moment_z)
-    # The support point is the film resultant's place from mid-length, + forward (the sign
-    # convention of FilmBearingResult): the first moments of the rows about mid-length in
-    # both planes, projected on the resultant's direction.
+    # Each plane's resultant: the force and the first moment of the rows about mid-length; the
+    # support point is its place from mid-length, + forward (the sign convention of
+    # FilmBearingResult), in each plane on its own.
     arm = film.z - 0.525
-    first_moment = (arm @ rows[0]) * film.force_y + (arm @ rows[1]) * film.force_z
-    along = first_moment / (film.force_y**2 + film.force_z**2)
-    assert film.support_point == pytest.approx(along, rel=1e-9)
-    assert film.support_point > 0.0  # nose-down end moment: the film load moves forward
+    assert film.moment_y == pytest.approx(arm @ rows[0], rel=1e-9)
+    assert film.moment_z == pytest.approx(arm @ rows[1], rel=1e-9, abs=1e-9 * abs(film.force_y))
+    assert film.support_point_y == pytest.approx(film.moment_y / film.force_y, rel=1e-9)
+    assert film.support_point_y > 0.0  # nose-down end moment: the film load moves forward
 
 
 # -- 2. each film reproduces its own force --------------------------------------------------
@@ -326,7 +326,7 @@ def test_a_symmetric_line_on_two_identical_films_is_symmetric():
     assert a.state.eccentricity_ratio == pytest.approx(b.state.eccentricity_ratio, abs=1e-5)
     assert a.state.min_film_thickness == pytest.approx(b.state.min_film_thickness, abs=1e-5 * 0.3e-3)
     assert a.relative_slope == pytest.approx(-b.relative_slope, abs=1e-5 * 0.3e-3 / 0.4)
-    assert a.support_point == pytest.approx(-b.support_point, abs=1e-6 * 0.4)
+    assert a.support_point_y == pytest.approx(-b.support_point_y, abs=1e-6 * 0.4)
     condition = result.condition
     assert np.allclose(condition.x, 8.0 - condition.x[::-1])
     assert np.abs(condition.deflection_y - condition.deflection_y[::-1]).max() < 1e-5 * 0.3e-3
@@ -350,7 +350,7 @@ def test_a_film_bearing_at_the_centre_of_a_symmetric_line_keeps_its_journal_leve
     film = result.film("m")
     assert abs(film.relative_slope) < 1e-5 * 0.3e-3 / 0.4
     assert abs((film.centre_z[-1] - film.centre_z[0]) / 0.4) < 1e-5 * 0.3e-3 / 0.4
-    assert abs(film.support_point) < 1e-6 * 0.4
+    assert abs(film.support_point_y) < 1e-6 * 0.4
     a, b = result.condition.bearing("a"), result.condition.bearing("b")
     assert a.reaction_y == pytest.approx(b.reaction_y, rel=1e-6)
     assert a.reaction_z == pytest.approx(b.reaction_z, abs=1e-6 * a.reaction_y)
@@ -372,7 +372,7 @@ def test_the_film_load_converges_with_the_film_grid():
         result = CoupledAlignment(ntua_line(), [FilmSupport("aft", ntua_film(axial, circumferential))]).solve()
         assert result.converged, result.message
         film = result.film("aft")
-        values.append((film.force_y, film.support_point, result.condition.bearing("fwd").reaction_y))
+        values.append((film.force_y, film.support_point_y, result.condition.bearing("fwd").reaction_y))
     for k, name in enumerate(("film force", "support point", "forward reaction")):
         coarse, middle, fine = (v[k] for v in values)
         order = observed_order(coarse, middle, fine)
@@ -399,7 +399,7 @@ def test_the_film_load_converges_with_the_shaft_elements_across_the_bearing():
         x = model.model.mesh.x
         inside = x[(x >= AFT_X - 0.525 - 1e-9) & (x <= AFT_X + 0.525 + 1e-9)]
         sizes.append(np.diff(inside).max())
-        values.append((film.force_y, film.support_point))
+        values.append((film.force_y, film.support_point_y))
         loads.append(film.line_load[0])
     assert sizes[0] / sizes[1] == pytest.approx(2.0, rel=0.05) and sizes[1] / sizes[2] == pytest.approx(2.0, rel=0.05)
     for k, name in enumerate(("film force", "support point")):
@@ -614,3 +614,33 @@ def test_a_film_near_its_floor_that_carries_its_share_does_not_ground():
     assert result.force_residual < 1e-9 and result.residual_history[-1] < 1e-9
     # The same film as the converged solution: the stall is at rounding.
     assert result.film("aft").force_y == pytest.approx(first.film("aft").force_y, rel=1e-7)
+
+
+# -- the film's resultant in each plane, and a couple ---------------------------------------
+def test_a_plane_whose_resultant_lies_outside_the_bearing_carries_a_couple():
+    """1 kN with 2 kN m about the mid-length of a 0.6 m bearing: the resultant would sit 2 m from
+    mid-length, so there is no support point and the film carries a couple; 1 kN with 0.2 kN m
+    sits 0.2 m forward, inside. A moment at rounding of the whole film force is no couple."""
+    from shaftline.shaft.film_supports import carries_couple, plane_support_point
+
+    assert carries_couple(1e3, 2e3, 0.6, 1e3) and math.isnan(plane_support_point(1e3, 2e3, 0.6, 1e3))
+    assert not carries_couple(1e3, 200.0, 0.6, 1e3) and plane_support_point(1e3, 200.0, 0.6, 1e3) == 0.2
+    assert not carries_couple(0.0, 1e-5, 0.6, 3e5) and math.isnan(plane_support_point(0.0, 1e-5, 0.6, 3e5))
+    assert carries_couple(0.0, 100.0, 0.6, 3e5)  # a pure couple in a plane that carries no force
+
+
+def test_the_ntua_film_at_four_times_its_speed_carries_a_horizontal_couple():
+    """Seed 004's line at 360 rpm (41 x 30 film): the misaligned journal twists in its film, whose
+    horizontal force is under 1 % of the vertical but whose horizontal moment puts that resultant
+    about 5 m from mid-length, far outside the 1.05 m bearing. The film carries a couple there:
+    no horizontal support point, the plane named; the vertical resultant stays inside (3.5 cm aft
+    of mid-length). The one projected position reported before mixed both planes."""
+    from shaftline.shaft.ntua import SPEED, ntua_shaft_line
+
+    line, film = ntua_shaft_line(0.3, grid=(41, 30), speed=4 * SPEED)
+    result = CoupledAlignment(line, [film]).solve()
+    assert result.converged and not result.contact
+    aft = result.films[0]
+    assert abs(aft.force_z) < 0.01 * aft.force_y and abs(aft.moment_z / aft.force_z) > 2.0
+    assert aft.couple_planes == ("horizontal",) and math.isnan(aft.support_point_z)
+    assert -0.525 < aft.support_point_y < 0.0

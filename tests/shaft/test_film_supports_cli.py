@@ -88,7 +88,7 @@ def test_tables_json_and_report(solved):
     # the film bearing's reaction is its film force, and the film is open (not at its floor)
     assert film["force_y"] == pytest.approx(bearings["aft stern tube"]["reaction_y"], rel=1e-12)
     assert not film["contact"] and film["min_film_thickness"] > 1e-5
-    assert alignment["units"]["support_point"].startswith("m, from the bearing's mid-length, + forward")
+    assert alignment["units"]["support_point_y"].startswith("m, the vertical resultant's position from the bearing's")
     assert alignment["units"]["min_film_theta_deg"] == "deg"
     assert len(film["centre_line"]["z"]) == 41 and len(film["line_load"]["y"]) == 41
     assert [b["name"] for b in coupled["point_supports"]] == list(bearings)
@@ -251,7 +251,7 @@ def test_ntua_shaft_line_example(tmp_path):
     line, support = ntua_shaft_line(0.3)
     reference = CoupledAlignment(line, [support]).solve().films[0]
     assert film["min_film_thickness"] == pytest.approx(reference.state.min_film_thickness, rel=5e-3)
-    assert film["support_point"] == pytest.approx(reference.support_point, rel=5e-3)
+    assert film["support_point_y"] == pytest.approx(reference.support_point_y, rel=5e-3)
     speed = alignment["minimum_speed"]
     assert 55.0 < speed["speed_rpm"] < 70.0 and speed["governing"] == "aft stern tube"
     assert speed["limit"] == pytest.approx(30e-6)

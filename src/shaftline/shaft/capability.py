@@ -308,7 +308,9 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
             Paragraph(
                 "The bearings marked hydrodynamic are supported by their film: the shaft's elastic line across the "
                 "bearing is the journal, and the film pressure acts back on the shaft as a distributed load. The "
-                "support point is the axial position of the film resultant from the bearing's mid-length, + forward. "
+                "support point is the axial position of the film's vertical resultant from the bearing's "
+                "mid-length, + forward; where a plane's resultant lies outside the bearing the film carries a "
+                "couple there and has no support point (the notes say so). "
                 "The influence coefficients are the film-supported line's tangent at the first condition's "
                 "equilibrium (the films' stiffness included; each condition's is in results.json), and offset "
                 "optimisation and offsets from measured reactions are solved on the films; sag and gap and jack-up "
@@ -435,9 +437,14 @@ class ShaftAlignment(Capability["AlignmentSection", "AlignmentStudy", "Alignment
                 else "lifted"
             )
             point = coupled.point_supports.bearing(film.name)
+            on_film = (
+                f"{film.support_point_y * 1e3:+.0f} mm on the film"
+                if math.isfinite(film.support_point_y)
+                else "none on the film (its vertical resultant lies outside the bearing: a couple)"
+            )
             parts.append(
-                f"{film.name}: support point {declared} with the declared supports, {film.support_point * 1e3:+.0f} mm "
-                f"on the film (from mid-length, + forward); relative slope {point.relative_slope * 1e3:.3f} mrad on "
+                f"{film.name}: support point {declared} with the declared supports, {on_film} (vertical plane, "
+                f"from mid-length, + forward); relative slope {point.relative_slope * 1e3:.3f} mrad on "
                 f"points, {film.relative_slope * 1e3:.3f} mrad in the film"
             )
         return Paragraph("; ".join(parts) + ".")

@@ -43,6 +43,7 @@ from shaftline.shaft.film_supports import (
     FilmSupport,
     film_coefficients,
     hermite_shape,
+    plane_support_point,
 )
 from shaftline.shaft.film_tangent import tangent_influence
 from shaftline.shaft.model import Condition, ShaftLine
@@ -726,7 +727,10 @@ class CoupledAlignment:
                     force_y=fy,
                     force_z=fz,
                     line_load=load.row_force / weights[None, :],
-                    support_point=state.load_centre_offset,
+                    moment_y=state.moment_y,
+                    moment_z=state.moment_z,
+                    support_point_y=plane_support_point(fy, state.moment_y, geometry.length, math.hypot(fy, fz)),
+                    support_point_z=plane_support_point(fz, state.moment_z, geometry.length, math.hypot(fy, fz)),
                     relative_slope=bore_relative,
                     contact=contact,
                     stiffness=stiffness,

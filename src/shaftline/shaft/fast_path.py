@@ -58,8 +58,10 @@ class FastPathResult:
         Chord slope of the shaft across the bearing relative to the bore axis, rad: the
         film's imposed tilt (psi_x times 2c/L).
     support_point : float
-        Axial position of the film resultant from mid-length, m, + forward (as
-        :attr:`~shaftline.shaft.coupled.FilmBearingResult.support_point`).
+        Axial position of the film resultant from mid-length, m, + forward: seed 004's load
+        centre, the iteration variable of its bisection (in the vertical plane where the film
+        is loaded vertically; :attr:`~shaftline.shaft.coupled.FilmBearingResult.support_point_y`
+        of the coupled line is the vertical plane's alone).
     support_x : float
         Where the alignment's point support was, m from the aft end of the line.
     local : LocalShaftLine

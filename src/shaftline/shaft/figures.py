@@ -157,13 +157,33 @@ def journal_in_bore(film: FilmBearingResult, *, ax: Any) -> Any:
         axes.plot(z, bore * 1e6, color="0.5", ls="--", lw=1, label="bore centre line")
         axes.plot(z, centre * 1e6, color="C0", lw=2, label="journal centre")
         axes.set_ylabel(f"{label} [µm]")
-    top.axvline(0.5 * z[-1] + film.support_point, color="C3", ls=":", label="film resultant (support point)")
+    for axes, point, plane in ((top, film.support_point_y, "vertical"), (bottom, film.support_point_z, "horizontal")):
+        if math.isfinite(point):
+            axes.axvline(0.5 * z[-1] + point, color="C3", ls=":", label="film resultant (support point)")
+        elif plane in film.couple_planes:
+            axes.text(
+                0.01,
+                0.95,
+                "film carries a couple: resultant outside the bearing",
+                transform=axes.transAxes,
+                va="top",
+                fontsize=8,
+                color="C3",
+            )
     # h_min to 3 significant digits (a film at its floor, 0.03 µm, read "0.0 µm"); a grounded
     # film's line is the last one reached, not an equilibrium: the title says so.
     grounded = " (at its floor: solved as contact)" if film.contact else ""
+    support = (
+        f"vertical support point {film.support_point_y * 1e3:+.0f} mm from mid-length"
+        if math.isfinite(film.support_point_y)
+        else "vertical resultant outside the bearing (a couple)"
+    )
+    if "horizontal" in film.couple_planes:
+        support += "; horizontal: a couple"
     top.set_title(
         f"{plain(film.name)}: journal in the bore{grounded}; h_min {film.state.min_film_thickness * 1e6:.3g} µm, "
-        f"support point {film.support_point * 1e3:+.0f} mm from mid-length"
+        + support,
+        fontsize=9,
     )
     top.legend(fontsize=7, loc="best")
     bottom.set_xlabel("z from the aft edge [m]")

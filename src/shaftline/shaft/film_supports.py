@@ -6,6 +6,7 @@ beam's Hermite shape functions at the film's stations. The solver is
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -20,12 +21,15 @@ if TYPE_CHECKING:
     from shaftline.film.bearing import JournalBearing
 
 __all__ = [
+    "COUPLE_ROUNDING",
     "CouplingOptions",
     "CoupledResult",
     "FilmBearingResult",
     "FilmSupport",
+    "carries_couple",
     "film_coefficients",
     "hermite_shape",
+    "plane_support_point",
 ]
 
 
@@ -102,10 +106,15 @@ class FilmBearingResult:
         Film force on the shaft, N.
     line_load : ndarray (2, nz)
         Film force per unit length along the bearing (vertical, horizontal), N/m.
-    support_point : float
-        Axial position of the film resultant from the mid-length, m, positive forward
-        (towards the bow); seed 004's "contact point" is ``L/2 + support_point`` from the
-        aft edge.
+    moment_y, moment_z : float
+        First moments of the vertical and horizontal film force about the bearing's mid-length,
+        ``sum((z - L/2) dF)``, N m: with ``force_y, force_z`` the film's resultant in each plane.
+    support_point_y, support_point_z : float
+        Axial position of the film's resultant in the vertical and horizontal plane from the
+        mid-length, ``M / F``, m, positive forward (towards the bow); seed 004's "contact
+        point" is ``L/2 + support_point_y`` from the aft edge. NaN where that position lies
+        outside the bearing (the film carries a couple in that plane: :attr:`couple_planes`)
+        or the plane carries no force.
     relative_slope : float
         Chord slope of the journal across the bearing relative to the chord of its machined
         bore (the bearing's axis plus any slope boring), rad: zero when a single slope follows
@@ -135,12 +144,47 @@ class FilmBearingResult:
     force_y: float
     force_z: float
     line_load: np.ndarray = field(repr=False)
-    support_point: float
+    moment_y: float
+    moment_z: float
+    support_point_y: float
+    support_point_z: float
     relative_slope: float
     contact: bool
     stiffness: np.ndarray = field(repr=False, default_factory=lambda: np.full((4, 4), np.nan))
     damping: np.ndarray = field(repr=False, default_factory=lambda: np.full((4, 4), np.nan))
     coefficients_note: str = ""
+
+    @property
+    def couple_planes(self) -> tuple[str, ...]:
+        """The planes (``"vertical"``, ``"horizontal"``) in which the film carries a couple: its
+        resultant there lies outside the bearing (:func:`carries_couple`)."""
+        length = float(self.z[-1] - self.z[0])
+        total = math.hypot(self.force_y, self.force_z)
+        planes = (("vertical", self.force_y, self.moment_y), ("horizontal", self.force_z, self.moment_z))
+        return tuple(name for name, force, moment in planes if carries_couple(force, moment, length, total))
+
+
+#: Moment below which a plane's film moment is rounding, as a share of the film's whole force
+#: times the bearing length: an aligned film's moments are 1e-10 of that (the regression
+#: snapshots), a couple worth a word 1e-3 or more.
+COUPLE_ROUNDING = 1e-6
+
+
+def carries_couple(force: float, moment: float, length: float, total: float) -> bool:
+    """Whether a film's load in one plane, ``force`` (N) and ``moment`` about the mid-length
+    (N m), needs a couple: its resultant ``moment / force`` lies outside the bearing of
+    ``length`` (m), ``|moment| > |force| length / 2``, and the moment is more than rounding of
+    the film's whole force ``total`` (N, :data:`COUPLE_ROUNDING`)."""
+    return abs(moment) > abs(force) * 0.5 * length and abs(moment) > COUPLE_ROUNDING * total * length
+
+
+def plane_support_point(force: float, moment: float, length: float, total: float) -> float:
+    """The axial position of a plane's film resultant from the mid-length, ``moment / force``, m;
+    NaN when it lies outside the bearing of ``length`` (m) or the plane carries no force (below
+    :data:`COUPLE_ROUNDING` of the film's whole force ``total``, N)."""
+    if abs(force) <= COUPLE_ROUNDING * total or carries_couple(force, moment, length, total):
+        return math.nan
+    return moment / force
 
 
 @dataclass(frozen=True, eq=False)

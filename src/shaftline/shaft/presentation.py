@@ -24,7 +24,12 @@ FILM_UNITS = {
     "max_pressure": "Pa",
     "max_pressure_theta_deg": "deg",
     "max_pressure_z": "m",
-    "support_point": "m, from the bearing's mid-length, + forward (towards the bow)",
+    "moment_y": "N m, first moment of the vertical film force about the bearing's mid-length",
+    "moment_z": "N m, first moment of the horizontal film force about the bearing's mid-length",
+    "support_point_y": "m, the vertical resultant's position from the bearing's mid-length, + forward (towards the "
+    "bow); null where it lies outside the bearing (the film carries a couple)",
+    "support_point_z": "m, the horizontal resultant's position, as support_point_y",
+    "couple_planes": "the planes in which the film carries a couple (its resultant outside the bearing)",
     "attitude_angle_deg": "deg",
     "power_loss": "W",
     "side_leakage": "m^3/s",
@@ -88,7 +93,11 @@ def _coupled_json(coupled: CoupledResult) -> dict[str, Any]:
                 "max_pressure": f.state.max_pressure,
                 "max_pressure_theta_deg": math.degrees(f.state.max_pressure_theta),
                 "max_pressure_z": f.state.max_pressure_z,
-                "support_point": f.support_point,
+                "moment_y": f.moment_y,
+                "moment_z": f.moment_z,
+                "support_point_y": _finite(f.support_point_y),
+                "support_point_z": _finite(f.support_point_z),
+                "couple_planes": list(f.couple_planes),
                 "eccentricity_ratio": f.state.eccentricity_ratio,
                 "attitude_angle_deg": math.degrees(f.state.attitude_angle),
                 "relative_slope": f.relative_slope,
@@ -138,7 +147,7 @@ def _film_rows(coupled: CoupledResult) -> list[list[str]]:
                 fmt(state.min_film_thickness, 1e6),
                 f"{math.degrees(state.min_film_theta):.0f} / {state.min_film_z:.3f}",
                 fmt(state.max_pressure, 1e-6),
-                fmt(f.support_point, 1e3),
+                fmt(f.support_point_y, 1e3) if math.isfinite(f.support_point_y) else "couple",
                 fmt(state.eccentricity_ratio, 1.0),
                 f"{math.degrees(state.attitude_angle):.1f}",
                 fmt(f.relative_slope, 1e3),
@@ -165,7 +174,8 @@ FILM_HEADERS = [
 
 
 def _film_notes(coupled: CoupledResult) -> Paragraph | None:
-    """The film results the table has no columns for, where a film has them: rough surfaces
+    """The film results the table has no columns for, where a film has them: a couple the film
+    carries (its resultant outside the bearing in a plane), rough surfaces
     (film ratio, asperity share), an elastic liner (its largest deformation), turbulence on or
     auto (largest local Reynolds number and whether the coefficients applied). A film that fell
     back to contact is said to be at its last journal line, not at an equilibrium, and its
@@ -184,6 +194,13 @@ def _film_notes(coupled: CoupledResult) -> Paragraph | None:
             )
         if f.coefficients_note:
             notes.append(f.coefficients_note)
+        for plane in f.couple_planes:
+            force, moment = (f.force_y, f.moment_y) if plane == "vertical" else (f.force_z, f.moment_z)
+            notes.append(
+                f"the film carries a couple in the {plane} plane ({moment * 1e-3:.3g} kN m about mid-length with "
+                f"{force * 1e-3:.3g} kN: its resultant lies {abs(moment / force) if force else math.inf:.3g} m from "
+                "mid-length, outside the bearing, so it has no support point there)"
+            )
         if state.rough is not None:
             notes.append(
                 f"λ = h_min/σ {state.rough.min_film_ratio:.3g}, asperities carry "
